@@ -1,0 +1,43 @@
+// lancer's command line: parses options, runs the command, and turns every error into one
+// message and an exit code (0 ok, 1 internal failure, 2 bad input or environment).
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "core/error.hpp"
+#include "core/version.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"lancer: an exact ray tracer on Vulkan compute"};
+    app.set_version_flag("--version", std::string("lancer ") + lancer::kVersion);
+    app.require_subcommand(0, 1);
+    bool list_devices = false;
+    app.add_flag("--list-devices", list_devices, "List the Vulkan devices and exit");
+
+    lancer::RenderOptions render_options;
+    CLI::App* render = lancer::add_render_command(app, render_options);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);  // --help, --version
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return 2;
+    }
+
+    try {
+        if (list_devices || (render->parsed() && render_options.list_devices)) return lancer::list_devices();
+        if (render->parsed()) return lancer::run_render(render_options);
+        std::fputs(app.help().c_str(), stdout);
+        return 2;
+    } catch (const lancer::UserError& e) {
+        std::fprintf(stderr, "%s\n", lancer::format_error(e).c_str());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "lancer: internal error: %s\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,36 @@
+#pragma once
+// lancer's error values. Everything a user can cause (a wrong scene, a bad option, an unwritable
+// output, a machine without a Vulkan device) is a UserError and exits with code 2; anything else
+// that escapes is an internal failure (exit code 1). The CLI turns both into one message.
+#include <stdexcept>
+#include <string>
+
+namespace lancer {
+
+// Where in a text file something is. line and column are 1-based; 0 means "unknown".
+struct SourceLocation {
+    std::string file;
+    int line = 0;
+    int column = 0;
+};
+
+class UserError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// A problem in an input file, reported as "file:line:col: error: message".
+class SceneError : public UserError {
+public:
+    SceneError(SourceLocation where, const std::string& message)
+        : UserError(message), where_(std::move(where)) {}
+    const SourceLocation& where() const { return where_; }
+
+private:
+    SourceLocation where_;
+};
+
+// The one rendering of an error for humans: "file:line:col: error: what" (or "lancer: error: what").
+std::string format_error(const std::exception& e);
+
+}  // namespace lancer

@@ -1,0 +1,67 @@
+#include "cpu/cpu_renderer.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "cpu/tracer.hpp"
+#include "scene/camera.hpp"
+
+namespace lancer {
+
+CpuRenderer::CpuRenderer(unsigned threads)
+    : threads_(threads ? threads : std::max(1u, std::thread::hardware_concurrency())) {}
+
+std::string CpuRenderer::description() const {
+    return "cpu: reference renderer, double precision, " + std::to_string(threads_) + " threads";
+}
+
+FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
+    const RenderSettings& rs = scene.render;
+    const cpu::Tracer tracer(scene);
+    const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
+    FloatImage image(rs.width, rs.height);
+
+    std::atomic<int> next_row{0};
+    std::atomic<int> rows_done{0};
+    std::atomic<bool> cancelled{false};
+    std::mutex progress_mutex;
+    const int n = rs.samples;
+
+    auto worker = [&] {
+        for (int y; (y = next_row.fetch_add(1)) < rs.height && !cancelled;) {
+            for (int x = 0; x < rs.width; ++x) {
+                dvec3 sum(0.0);
+                double rays = 0.0;
+                for (int j = 0; j < n; ++j) {
+                    for (int i = 0; i < n; ++i) {
+                        double sx = x + (i + 0.5) / n;
+                        double sy = y + (j + 0.5) / n;
+                        dvec3 dir = glm::normalize(camera_ray_direction(cam, sx, sy, rs.width, rs.height));
+                        sum += tracer.trace({cam.eye, dir}, rays);
+                    }
+                }
+                dvec3 c = sum / double(n * n);
+                image.at(x, y) = glm::vec4(float(c.r), float(c.g), float(c.b), float(rays));
+            }
+            int done = ++rows_done;
+            if (progress) {
+                std::lock_guard lock(progress_mutex);
+                if (!cancelled && !progress(double(done) / rs.height)) cancelled = true;
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads_; ++t) pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool) t.join();
+    if (cancelled) throw RenderCancelled();
+    return image;
+}
+
+}  // namespace lancer

@@ -1,0 +1,43 @@
+// Ray/axis-aligned box by the slab method. A ray from inside reports its exit point.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/common.hpp>
+
+#include "cpu/shapes/shapes.hpp"
+
+namespace lancer::cpu {
+
+std::optional<double> intersect(const Box& b, const Ray& ray, double t_min, double t_max) {
+    double t_enter = -std::numeric_limits<double>::infinity();
+    double t_exit = std::numeric_limits<double>::infinity();
+    for (int axis = 0; axis < 3; ++axis) {
+        if (ray.dir[axis] == 0.0) {
+            // Parallel to this slab: inside it for every t, or never.
+            if (ray.origin[axis] < b.min[axis] || ray.origin[axis] > b.max[axis]) return std::nullopt;
+            continue;
+        }
+        double t0 = (b.min[axis] - ray.origin[axis]) / ray.dir[axis];
+        double t1 = (b.max[axis] - ray.origin[axis]) / ray.dir[axis];
+        if (t0 > t1) std::swap(t0, t1);
+        t_enter = std::max(t_enter, t0);
+        t_exit = std::min(t_exit, t1);
+    }
+    if (t_enter > t_exit) return std::nullopt;
+    if (t_enter > t_min && t_enter < t_max) return t_enter;
+    if (t_exit > t_min && t_exit < t_max) return t_exit;
+    return std::nullopt;
+}
+
+dvec3 normal(const Box& b, const dvec3& p) {
+    dvec3 center = 0.5 * (b.min + b.max);
+    dvec3 half = 0.5 * (b.max - b.min);
+    dvec3 d = (p - center) / half;  // which face: the coordinate closest to +-1
+    dvec3 a = glm::abs(d);
+    if (a.x >= a.y && a.x >= a.z) return {d.x < 0 ? -1.0 : 1.0, 0.0, 0.0};
+    if (a.y >= a.z) return {0.0, d.y < 0 ? -1.0 : 1.0, 0.0};
+    return {0.0, 0.0, d.z < 0 ? -1.0 : 1.0};
+}
+
+}  // namespace lancer::cpu

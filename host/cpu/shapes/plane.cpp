@@ -1,0 +1,18 @@
+// Ray/infinite plane: (o + t d - p) . n = 0.
+#include <glm/geometric.hpp>
+
+#include "cpu/shapes/shapes.hpp"
+
+namespace lancer::cpu {
+
+std::optional<double> intersect(const Plane& p, const Ray& ray, double t_min, double t_max) {
+    double denom = glm::dot(p.normal, ray.dir);
+    if (denom == 0.0) return std::nullopt;  // parallel, including a ray lying in the plane
+    double t = glm::dot(p.point - ray.origin, p.normal) / denom;
+    if (t <= t_min || t >= t_max) return std::nullopt;
+    return t;
+}
+
+dvec3 normal(const Plane& p, const dvec3&) { return p.normal; }
+
+}  // namespace lancer::cpu

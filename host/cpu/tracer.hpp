@@ -1,0 +1,34 @@
+#pragma once
+// The CPU reference tracer: the model of shaders/trace.comp, written for clarity in double
+// precision, sharing the scene model but none of the shader's code.
+#include "cpu/ray.hpp"
+
+namespace lancer::cpu {
+
+struct Hit {
+    double t;
+    dvec3 normal;  // unit, not yet facing the ray
+    const Object* object;
+};
+
+class Tracer {
+public:
+    explicit Tracer(const Scene& scene) : scene_(scene) {}
+
+    // Colour seen along `ray`, following mirror reflections; adds every ray traced to `rays`.
+    dvec3 trace(Ray ray, double& rays) const;
+
+    bool closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) const;
+    bool occluded(const Ray& ray, double t_min, double t_max) const;
+
+    // Ambient + per-light diffuse and specular at p (n faces the viewer, view_dir is the ray's).
+    dvec3 shade_local(const Material& m, const dvec3& p, const dvec3& n, const dvec3& view_dir, double& rays) const;
+
+private:
+    const Scene& scene_;
+};
+
+// The pigment of a material at a point (solid colour or checker).
+dvec3 pigment_at(const Material& m, const dvec3& p);
+
+}  // namespace lancer::cpu

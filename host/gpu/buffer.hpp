@@ -1,0 +1,40 @@
+#pragma once
+// A VkBuffer with its own host-visible, coherent memory, persistently mapped. lavapipe has one
+// memory type that is device-local and host-visible, so no staging copies are needed there; on
+// discrete GPUs this is system memory the GPU reads over the bus, which suits lancer's small
+// scene buffers and one-band output buffer.
+#include <cstddef>
+#include <cstring>
+
+#include "gpu/context.hpp"
+
+namespace lancer::gpu {
+
+class Buffer {
+public:
+    Buffer() = default;
+    Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage);
+    ~Buffer();
+    Buffer(Buffer&& other) noexcept;
+    Buffer& operator=(Buffer&& other) noexcept;
+    Buffer(const Buffer&) = delete;
+    Buffer& operator=(const Buffer&) = delete;
+
+    VkBuffer handle() const { return buffer_; }
+    VkDeviceSize size() const { return size_; }
+    void* data() const { return mapped_; }
+    void write(const void* src, std::size_t bytes, std::size_t offset = 0) const {
+        std::memcpy(static_cast<char*>(mapped_) + offset, src, bytes);
+    }
+
+private:
+    void release() noexcept;
+
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkBuffer buffer_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize size_ = 0;
+    void* mapped_ = nullptr;
+};
+
+}  // namespace lancer::gpu

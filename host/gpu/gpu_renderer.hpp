@@ -1,0 +1,39 @@
+#pragma once
+// The Vulkan compute backend. Device, pipeline and buffers live as long as the renderer, so a
+// sequence of renders (animation frames) pays the start-up cost once.
+#include <memory>
+
+#include "gpu/buffer.hpp"
+#include "gpu/context.hpp"
+#include "gpu/pipeline.hpp"
+#include "render/renderer.hpp"
+
+namespace lancer {
+
+class GpuRenderer final : public Renderer {
+public:
+    explicit GpuRenderer(const gpu::ContextOptions& options);
+    ~GpuRenderer() override;
+
+    std::string description() const override;
+    FloatImage render(const Scene& scene, const ProgressFn& progress) override;
+
+    const gpu::Context& context() const { return *context_; }
+
+private:
+    void upload_scene(const Scene& scene);
+    void ensure_output(std::size_t bytes);
+    void update_descriptors();
+    void dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, double done, const ProgressFn& progress);
+
+    std::unique_ptr<gpu::Context> context_;
+    std::unique_ptr<gpu::TracePipeline> pipeline_;
+    gpu::Buffer frame_, primitives_, materials_, lights_, output_;
+    VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;
+    VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+    bool descriptors_dirty_ = true;
+};
+
+}  // namespace lancer

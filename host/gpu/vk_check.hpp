@@ -1,0 +1,31 @@
+#pragma once
+// Every Vulkan call goes through VK_CHECK: a failure becomes a VulkanError naming the VkResult,
+// the call and the source location.
+#include <stdexcept>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+namespace lancer::gpu {
+
+class VulkanError : public std::runtime_error {
+public:
+    VulkanError(VkResult result, const std::string& message) : std::runtime_error(message), result_(result) {}
+    VkResult result() const { return result_; }
+
+private:
+    VkResult result_;
+};
+
+const char* result_name(VkResult result);
+
+[[noreturn]] void throw_vulkan_error(VkResult result, const char* call, const char* file, int line);
+
+}  // namespace lancer::gpu
+
+#define VK_CHECK(call)                                                                     \
+    do {                                                                                   \
+        VkResult vk_check_result_ = (call);                                                \
+        if (vk_check_result_ != VK_SUCCESS)                                                \
+            ::lancer::gpu::throw_vulkan_error(vk_check_result_, #call, __FILE__, __LINE__); \
+    } while (0)

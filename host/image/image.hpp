@@ -1,0 +1,43 @@
+#pragma once
+// Images as the renderers produce them (linear float RGB plus a per-pixel ray count) and as
+// they are written (8-bit sRGB).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+namespace lancer {
+
+// rgb = linear colour, a = rays traced for the pixel (so rays/s needs no atomic counters).
+struct FloatImage {
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec4> pixels;  // row-major, row 0 at the top
+
+    FloatImage() = default;
+    FloatImage(int w, int h) : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, glm::vec4(0.0f)) {}
+    glm::vec4& at(int x, int y) { return pixels[static_cast<std::size_t>(y) * width + x]; }
+    const glm::vec4& at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
+    double total_rays() const;
+};
+
+struct Rgb8Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> bytes;  // RGB, row-major
+    const std::uint8_t* at(int x, int y) const { return &bytes[(static_cast<std::size_t>(y) * width + x) * 3]; }
+};
+
+// sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1], to 0..255.
+std::uint8_t encode_srgb8(float linear);
+float decode_srgb8(std::uint8_t encoded);
+
+Rgb8Image to_srgb8(const FloatImage& image);
+
+// Writes a PNG atomically: to a temporary file in the same directory, then rename(), so the
+// destination is either the old file or the complete new one. Throws UserError on I/O failure.
+void write_png(const std::string& path, const Rgb8Image& image);
+Rgb8Image read_png(const std::string& path);
+
+}  // namespace lancer

@@ -1,0 +1,79 @@
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/error.hpp"
+#include "image/image.hpp"
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+namespace lancer {
+namespace {
+
+std::string os_error(const std::string& what, const std::string& path) {
+    return what + " '" + path + "': " + std::strerror(errno);
+}
+
+// Writes all of `data` to fd, retrying short writes.
+bool write_all(int fd, const unsigned char* data, std::size_t size) {
+    while (size > 0) {
+        ssize_t n = ::write(fd, data, size);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return false;
+        }
+        data += n;
+        size -= static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+}  // namespace
+
+void write_png(const std::string& path, const Rgb8Image& image) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw UserError("cannot write '" + path + "': it is a directory");
+
+    int length = 0;
+    std::unique_ptr<unsigned char, decltype(&free)> png(
+        stbi_write_png_to_mem(image.bytes.data(), image.width * 3, image.width, image.height, 3, &length), &free);
+    if (!png) throw UserError("cannot encode PNG for '" + path + "'");
+
+    fs::path target(path);
+    fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    std::string temp = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
+    int fd = ::mkstemp(temp.data());
+    if (fd < 0) throw UserError(os_error("cannot write", path));
+    bool ok = write_all(fd, png.get(), static_cast<std::size_t>(length)) && ::fsync(fd) == 0;
+    int saved_errno = errno;
+    ok = (::close(fd) == 0) && ok;
+    if (!ok || ::chmod(temp.c_str(), 0644) != 0 || ::rename(temp.c_str(), path.c_str()) != 0) {
+        if (!ok) errno = saved_errno;
+        std::string message = os_error("cannot write", path);
+        ::unlink(temp.c_str());
+        throw UserError(message);
+    }
+}
+
+Rgb8Image read_png(const std::string& path) {
+    int w = 0, h = 0, channels = 0;
+    std::unique_ptr<unsigned char, decltype(&stbi_image_free)> data(stbi_load(path.c_str(), &w, &h, &channels, 3),
+                                                                     &stbi_image_free);
+    if (!data) throw UserError("cannot read PNG '" + path + "': " + stbi_failure_reason());
+    Rgb8Image image{w, h, {}};
+    image.bytes.assign(data.get(), data.get() + static_cast<std::size_t>(w) * h * 3);
+    return image;
+}
+
+}  // namespace lancer

@@ -1,0 +1,30 @@
+#pragma once
+// What a rendering backend is: scene in, linear float image out.
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "image/image.hpp"
+#include "scene/scene.hpp"
+
+namespace lancer {
+
+// Called with the finished fraction of the image (0..1). Returning false cancels the render,
+// which then throws RenderCancelled.
+using ProgressFn = std::function<bool(double fraction)>;
+
+class RenderCancelled : public std::runtime_error {
+public:
+    RenderCancelled() : std::runtime_error("render cancelled") {}
+};
+
+class Renderer {
+public:
+    virtual ~Renderer() = default;
+    // A human-readable description, e.g. "gpu: llvmpipe (LLVM 15.0.6, 256 bits)".
+    virtual std::string description() const = 0;
+    // Renders with scene.render's width, height, samples and max_depth.
+    virtual FloatImage render(const Scene& scene, const ProgressFn& progress) = 0;
+};
+
+}  // namespace lancer

@@ -1,0 +1,229 @@
+#include "scene/load_scene.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "scene/camera.hpp"
+#include "scene/limits.hpp"
+#include "scene/parse_shapes.hpp"
+#include "scene/toml_reader.hpp"
+
+namespace lancer {
+namespace {
+
+// Colours are linear RGB; values above 1 are allowed (bright lights), negative ones are not.
+dvec3 check_color(TableReader& t, std::string_view key, dvec3 c) {
+    if (c.r < 0.0 || c.g < 0.0 || c.b < 0.0) t.fail(key, std::string(key) + " components must not be negative");
+    return c;
+}
+
+double check_range(TableReader& t, std::string_view key, double v, double lo, double hi) {
+    if (v < lo || v > hi)
+        t.fail(key, std::string(key) + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], not " +
+                        std::to_string(v));
+    return v;
+}
+
+int check_int_range(TableReader& t, std::string_view key, int v, int lo, int hi) {
+    if (v < lo || v > hi)
+        t.fail(key, std::string(key) + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
+                        ", not " + std::to_string(v));
+    return v;
+}
+
+void read_render(TableReader& t, RenderSettings& r) {
+    r.width = check_int_range(t, "width", t.integer("width", r.width), 1, limits::kMaxImageSide);
+    r.height = check_int_range(t, "height", t.integer("height", r.height), 1, limits::kMaxImageSide);
+    if (static_cast<long long>(r.width) * r.height > limits::kMaxImagePixels)
+        t.fail("height", "width x height exceeds the limit of " + std::to_string(limits::kMaxImagePixels) + " pixels");
+    r.samples = check_int_range(t, "samples", t.integer("samples", r.samples), 1, limits::kMaxSamples);
+    r.max_depth = check_int_range(t, "max_depth", t.integer("max_depth", r.max_depth), 0, limits::kMaxDepth);
+    r.background = check_color(t, "background", t.vec3("background", r.background));
+    t.finish();
+}
+
+void read_camera(TableReader& t, CameraSpec& c) {
+    c.eye = t.required_vec3("eye");
+    c.look_at = t.required_vec3("look_at");
+    c.up = t.vec3("up", c.up);
+    c.fov_deg = t.number("fov", c.fov_deg);
+    if (!(c.fov_deg > 0.0 && c.fov_deg < 180.0)) t.fail("fov", "fov must be between 0 and 180 degrees (exclusive)");
+    t.finish();
+    try {
+        make_camera_basis(c, 1, 1);
+    } catch (const UserError& e) {
+        throw SceneError(t.location(t.has("up") ? "up" : "look_at"), e.what());
+    }
+}
+
+PointLight read_light(TableReader& t) {
+    PointLight l;
+    l.position = t.required_vec3("position");
+    l.color = check_color(t, "color", t.vec3("color", l.color));
+    t.finish();
+    return l;
+}
+
+Material read_material(TableReader& t, const std::string& name) {
+    Material m;
+    m.name = name;
+    m.color = check_color(t, "color", t.vec3("color", m.color));
+    if (const toml::table* checker = t.table("checker")) {
+        TableReader c(*checker, t.file(), "checker of material '" + name + "'");
+        Checker k;
+        const toml::array* colors = c.array("colors");
+        if (!colors) c.fail("colors", "checker needs colors = [[r,g,b], [r,g,b]]");
+        if (colors->size() != 2) c.fail("colors", "checker colors must hold exactly 2 colours");
+        k.color_a = node_vec3(*colors->get(0), t.file(), "colors[0]");
+        k.color_b = node_vec3(*colors->get(1), t.file(), "colors[1]");
+        check_color(c, "colors", k.color_a);
+        check_color(c, "colors", k.color_b);
+        k.size = c.number("size", k.size);
+        if (!(k.size > 0.0)) c.fail("size", "checker size must be positive");
+        c.finish();
+        m.checker = k;
+    }
+    m.ambient = check_range(t, "ambient", t.number("ambient", m.ambient), 0.0, 1e6);
+    m.diffuse = check_range(t, "diffuse", t.number("diffuse", m.diffuse), 0.0, 1e6);
+    m.specular = check_range(t, "specular", t.number("specular", m.specular), 0.0, 1e6);
+    m.shininess = t.number("shininess", m.shininess);
+    if (!(m.shininess > 0.0)) t.fail("shininess", "shininess must be positive");
+    m.reflection = check_range(t, "reflection", t.number("reflection", m.reflection), 0.0, 1.0);
+    t.finish();
+    return m;
+}
+
+Object read_object(TableReader& t, const std::map<std::string, std::uint32_t, std::less<>>& materials,
+                   std::uint32_t default_material) {
+    std::string type = t.required_string("type");
+    const auto& readers = shape_readers();
+    auto reader = readers.find(type);
+    if (reader == readers.end()) {
+        std::set<std::string, std::less<>> names;
+        for (const auto& [name, fn] : readers) names.insert(name);
+        std::string message = "unknown object type '" + type + "'";
+        std::string suggestion = closest_match(type, names);
+        if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
+        t.fail("type", message);
+    }
+    Object o;
+    o.where = t.location();
+    o.shape = reader->second(t);
+    o.material = default_material;
+    if (t.has("material")) {
+        std::string name = t.string("material", "");
+        auto found = materials.find(name);
+        if (found == materials.end()) {
+            std::set<std::string, std::less<>> names;
+            for (const auto& [n, i] : materials) names.insert(n);
+            std::string message = "unknown material '" + name + "'";
+            std::string suggestion = closest_match(name, names);
+            if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
+            t.fail("material", message);
+        }
+        o.material = found->second;
+    } else {
+        t.accept("material");
+    }
+    t.finish();
+    return o;
+}
+
+// Calls fn(table, index) for each element of an array of tables ([[light]], [[object]]).
+template <typename Fn>
+void for_each_table(const toml::array& array, const std::string& file, const std::string& what, Fn fn) {
+    std::size_t index = 0;
+    for (const toml::node& node : array) {
+        const toml::table* table = node.as_table();
+        if (!table) throw SceneError(location_of(node, file), what + " entries must be tables");
+        fn(*table, index++);
+    }
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const std::string& path) {
+    toml::table root;
+    try {
+        root = toml::parse(text, path);
+    } catch (const toml::parse_error& e) {
+        throw SceneError(location_of(e.source(), path), std::string(e.description()));
+    }
+
+    Scene scene;
+    scene.path = path;
+    TableReader top(root, path, "scene");
+
+    if (const toml::table* t = top.table("render")) {
+        TableReader r(*t, path, "[render]");
+        read_render(r, scene.render);
+    }
+    const toml::table* camera = top.table("camera");
+    if (!camera) throw SceneError({path, 1, 1}, "the scene has no [camera] table");
+    {
+        TableReader c(*camera, path, "[camera]");
+        read_camera(c, scene.camera);
+    }
+    if (const toml::table* t = top.table("ambient")) {
+        TableReader a(*t, path, "[ambient]");
+        scene.ambient = check_color(a, "color", a.vec3("color", scene.ambient));
+        a.finish();
+    }
+    if (const toml::array* lights = top.array("light")) {
+        if (lights->size() > static_cast<std::size_t>(limits::kMaxLights))
+            top.fail("light", "too many lights (the limit is " + std::to_string(limits::kMaxLights) + ")");
+        for_each_table(*lights, path, "[[light]]", [&](const toml::table& t, std::size_t) {
+            TableReader l(t, path, "[[light]]");
+            scene.lights.push_back(read_light(l));
+        });
+    }
+
+    std::map<std::string, std::uint32_t, std::less<>> material_index;
+    if (const toml::table* materials = top.table("material")) {
+        if (materials->size() > static_cast<std::size_t>(limits::kMaxMaterials))
+            top.fail("material", "too many materials (the limit is " + std::to_string(limits::kMaxMaterials) + ")");
+        for (auto&& [key, node] : *materials) {
+            const toml::table* t = node.as_table();
+            std::string name(key.str());
+            if (!t) throw SceneError(location_of(node, path), "material '" + name + "' must be a table ([material." + name + "])");
+            TableReader m(*t, path, "material '" + name + "'");
+            material_index[name] = static_cast<std::uint32_t>(scene.materials.size());
+            scene.materials.push_back(read_material(m, name));
+        }
+    }
+    // Objects without `material` use POV-Ray's defaults in white, unless the scene defines "default".
+    std::uint32_t default_material;
+    if (auto found = material_index.find("default"); found != material_index.end()) {
+        default_material = found->second;
+    } else {
+        default_material = static_cast<std::uint32_t>(scene.materials.size());
+        scene.materials.push_back(Material{"default"});
+    }
+
+    if (const toml::array* objects = top.array("object")) {
+        if (objects->size() > static_cast<std::size_t>(limits::kMaxObjects))
+            top.fail("object", "too many objects (the limit is " + std::to_string(limits::kMaxObjects) + ")");
+        for_each_table(*objects, path, "[[object]]", [&](const toml::table& t, std::size_t index) {
+            std::string what = "object " + std::to_string(index + 1);
+            if (auto type = t["type"].value<std::string>()) what += " ('" + *type + "')";
+            TableReader o(t, path, what);
+            scene.objects.push_back(read_object(o, material_index, default_material));
+        });
+    }
+    top.finish();
+    return scene;
+}
+
+Scene load_scene(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw UserError("cannot read scene file '" + path + "': " + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw UserError("cannot read scene file '" + path + "'");
+    return parse_scene(text.str(), path);
+}
+
+}  // namespace lancer

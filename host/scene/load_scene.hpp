@@ -1,0 +1,16 @@
+#pragma once
+#include <string>
+#include <string_view>
+
+#include "scene/scene.hpp"
+
+namespace lancer {
+
+// Reads and validates a TOML scene file. Every problem is a SceneError at file:line:col;
+// an unreadable file is a UserError.
+Scene load_scene(const std::string& path);
+
+// The same from text already in memory; `path` is used for messages only.
+Scene parse_scene(std::string_view text, const std::string& path);
+
+}  // namespace lancer

@@ -1,0 +1,59 @@
+#include "scene/parse_shapes.hpp"
+
+#include <glm/geometric.hpp>
+
+namespace lancer {
+namespace {
+
+Shape read_sphere(TableReader& t) {
+    Sphere s;
+    s.center = t.required_vec3("center");
+    s.radius = t.required_number("radius");
+    if (!(s.radius > 0.0)) t.fail("radius", "sphere radius must be positive, not " + std::to_string(s.radius));
+    return s;
+}
+
+Shape read_plane(TableReader& t) {
+    Plane p;
+    p.point = t.vec3("point", dvec3(0.0));
+    dvec3 n = t.required_vec3("normal");
+    if (!(glm::length(n) > 0.0)) t.fail("normal", "plane normal must not be the zero vector");
+    p.normal = glm::normalize(n);
+    return p;
+}
+
+Shape read_rectangle(TableReader& t) {
+    Rectangle r;
+    r.corner = t.required_vec3("corner");
+    r.edge_u = t.required_vec3("edge_u");
+    r.edge_v = t.required_vec3("edge_v");
+    double lu = glm::length(r.edge_u), lv = glm::length(r.edge_v);
+    if (!(lu > 0.0)) t.fail("edge_u", "rectangle edge_u must not be the zero vector");
+    if (!(lv > 0.0)) t.fail("edge_v", "rectangle edge_v must not be the zero vector");
+    if (glm::length(glm::cross(r.edge_u, r.edge_v)) <= 1e-9 * lu * lv)
+        t.fail("edge_v", "rectangle edges are parallel: the rectangle has no area");
+    return r;
+}
+
+Shape read_box(TableReader& t) {
+    Box b;
+    b.min = t.required_vec3("min");
+    b.max = t.required_vec3("max");
+    for (int i = 0; i < 3; ++i)
+        if (!(b.min[i] < b.max[i])) t.fail("max", "box max must be greater than min on every axis");
+    return b;
+}
+
+}  // namespace
+
+const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
+    static const std::map<std::string, ShapeReader, std::less<>> readers = {
+        {"sphere", read_sphere},
+        {"plane", read_plane},
+        {"rectangle", read_rectangle},
+        {"box", read_box},
+    };
+    return readers;
+}
+
+}  // namespace lancer

@@ -1,0 +1,18 @@
+#pragma once
+// One reader per [[object]] type: its keys, their defaults and their checks live here, in one
+// function per type.
+#include <functional>
+#include <map>
+#include <string>
+
+#include "scene/scene.hpp"
+#include "scene/toml_reader.hpp"
+
+namespace lancer {
+
+using ShapeReader = std::function<Shape(TableReader&)>;
+
+// Object type name -> reader, e.g. "sphere" -> read_sphere.
+const std::map<std::string, ShapeReader, std::less<>>& shape_readers();
+
+}  // namespace lancer

@@ -1,0 +1,97 @@
+#pragma once
+// The scene model: what a scene file describes, independent of how it is rendered.
+// Both renderers (cpu/, gpu/) read this; it knows about neither of them.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/error.hpp"
+
+namespace lancer {
+
+using glm::dvec3;
+
+struct RenderSettings {
+    int width = 640;
+    int height = 480;
+    int samples = 3;    // an N x N grid of rays per pixel
+    int max_depth = 5;  // reflection bounces after the camera ray
+    dvec3 background{0.0, 0.0, 0.0};
+};
+
+struct CameraSpec {
+    dvec3 eye{0.0, 0.0, -5.0};
+    dvec3 look_at{0.0, 0.0, 0.0};
+    dvec3 up{0.0, 1.0, 0.0};
+    double fov_deg = 60.0;  // vertical field of view
+};
+
+struct PointLight {
+    dvec3 position{0.0};
+    dvec3 color{1.0};
+};
+
+struct Checker {
+    dvec3 color_a{1.0};  // where floor(x/s)+floor(y/s)+floor(z/s) is even
+    dvec3 color_b{0.0};
+    double size = 1.0;
+};
+
+// Phong material. Defaults are POV-Ray's finish defaults, so ported scenes look the same.
+struct Material {
+    std::string name;
+    dvec3 color{1.0};
+    std::optional<Checker> checker;
+    double ambient = 0.1;
+    double diffuse = 0.6;
+    double specular = 0.0;   // POV-Ray: phong
+    double shininess = 40.0; // POV-Ray: phong_size
+    double reflection = 0.0;
+};
+
+struct Sphere {
+    dvec3 center{0.0};
+    double radius = 1.0;
+};
+
+struct Plane {
+    dvec3 point{0.0};
+    dvec3 normal{0.0, 1.0, 0.0};  // unit length
+};
+
+// A parallelogram: corner + a * edge_u + b * edge_v for a, b in [0, 1].
+struct Rectangle {
+    dvec3 corner{0.0};
+    dvec3 edge_u{1.0, 0.0, 0.0};
+    dvec3 edge_v{0.0, 0.0, 1.0};
+};
+
+// Axis-aligned box.
+struct Box {
+    dvec3 min{-1.0};
+    dvec3 max{1.0};
+};
+
+using Shape = std::variant<Sphere, Plane, Rectangle, Box>;
+
+struct Object {
+    Shape shape;
+    std::uint32_t material = 0;  // index into Scene::materials
+    SourceLocation where;        // the [[object]] table, for messages
+};
+
+struct Scene {
+    std::string path;
+    RenderSettings render;
+    CameraSpec camera;
+    dvec3 ambient{1.0};  // I_scene, scaled per material by Material::ambient
+    std::vector<PointLight> lights;
+    std::vector<Material> materials;
+    std::vector<Object> objects;
+};
+
+}  // namespace lancer

@@ -1,0 +1,183 @@
+#include "scene/toml_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace lancer {
+
+SourceLocation location_of(const toml::source_region& region, const std::string& file) {
+    return {file, static_cast<int>(region.begin.line), static_cast<int>(region.begin.column)};
+}
+
+SourceLocation location_of(const toml::node& node, const std::string& file) {
+    return location_of(node.source(), file);
+}
+
+namespace {
+
+const char* type_name(const toml::node& node) {
+    switch (node.type()) {
+        case toml::node_type::table: return "a table";
+        case toml::node_type::array: return "an array";
+        case toml::node_type::string: return "a string";
+        case toml::node_type::integer: return "an integer";
+        case toml::node_type::floating_point: return "a number";
+        case toml::node_type::boolean: return "a boolean";
+        default: return "a date/time";
+    }
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+}  // namespace
+
+std::string closest_match(std::string_view word, const std::set<std::string, std::less<>>& candidates) {
+    std::string best;
+    std::size_t best_distance = std::max<std::size_t>(1, word.size() / 3) + 1;
+    for (const auto& c : candidates) {
+        std::size_t d = edit_distance(word, c);
+        if (d < best_distance) {
+            best_distance = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+double node_number(const toml::node& node, const std::string& file, const std::string& what) {
+    double value;
+    if (auto i = node.as_integer()) {
+        value = static_cast<double>(i->get());
+    } else if (auto f = node.as_floating_point()) {
+        value = f->get();
+    } else {
+        throw SceneError(location_of(node, file), what + " must be a number, not " + type_name(node));
+    }
+    if (!std::isfinite(value)) throw SceneError(location_of(node, file), what + " must be finite, not " + std::to_string(value));
+    return value;
+}
+
+dvec3 node_vec3(const toml::node& node, const std::string& file, const std::string& what) {
+    const toml::array* array = node.as_array();
+    if (!array || array->size() != 3) {
+        std::string got = array ? "an array of " + std::to_string(array->size()) : std::string(type_name(node));
+        throw SceneError(location_of(node, file), what + " must be an array of 3 numbers, not " + got);
+    }
+    dvec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = node_number(*array->get(i), file, what + "[" + std::to_string(i) + "]");
+    return v;
+}
+
+TableReader::TableReader(const toml::table& table, const std::string& file, std::string what)
+    : table_(table), file_(file), what_(std::move(what)) {}
+
+bool TableReader::has(std::string_view key) const { return table_.contains(key); }
+
+const toml::node* TableReader::get(std::string_view key, bool required) {
+    known_.emplace(key);
+    const toml::node* node = table_.get(key);
+    if (!node && required) throw SceneError(location(), what_ + ": missing required key '" + std::string(key) + "'");
+    return node;
+}
+
+double TableReader::number(std::string_view key, double fallback) {
+    const toml::node* node = get(key, false);
+    return node ? node_number(*node, file_, std::string(key)) : fallback;
+}
+
+double TableReader::required_number(std::string_view key) {
+    return node_number(*get(key, true), file_, std::string(key));
+}
+
+int TableReader::integer(std::string_view key, int fallback) {
+    const toml::node* node = get(key, false);
+    if (!node) return fallback;
+    auto i = node->as_integer();
+    if (!i) throw SceneError(location_of(*node, file_), std::string(key) + " must be an integer, not " + type_name(*node));
+    std::int64_t v = i->get();
+    if (v < -2147483647 || v > 2147483647) throw SceneError(location_of(*node, file_), std::string(key) + " is out of range");
+    return static_cast<int>(v);
+}
+
+dvec3 TableReader::vec3(std::string_view key, dvec3 fallback) {
+    const toml::node* node = get(key, false);
+    return node ? node_vec3(*node, file_, std::string(key)) : fallback;
+}
+
+dvec3 TableReader::required_vec3(std::string_view key) {
+    return node_vec3(*get(key, true), file_, std::string(key));
+}
+
+std::string TableReader::string(std::string_view key, std::string fallback) {
+    const toml::node* node = get(key, false);
+    if (!node) return fallback;
+    auto s = node->as_string();
+    if (!s) throw SceneError(location_of(*node, file_), std::string(key) + " must be a string, not " + type_name(*node));
+    return s->get();
+}
+
+std::string TableReader::required_string(std::string_view key) {
+    get(key, true);
+    return string(key, "");
+}
+
+bool TableReader::boolean(std::string_view key, bool fallback) {
+    const toml::node* node = get(key, false);
+    if (!node) return fallback;
+    auto b = node->as_boolean();
+    if (!b) throw SceneError(location_of(*node, file_), std::string(key) + " must be true or false, not " + type_name(*node));
+    return b->get();
+}
+
+const toml::table* TableReader::table(std::string_view key) {
+    const toml::node* node = get(key, false);
+    if (!node) return nullptr;
+    if (!node->is_table()) throw SceneError(location_of(*node, file_), std::string(key) + " must be a table, not " + type_name(*node));
+    return node->as_table();
+}
+
+const toml::array* TableReader::array(std::string_view key) {
+    const toml::node* node = get(key, false);
+    if (!node) return nullptr;
+    if (!node->is_array()) throw SceneError(location_of(*node, file_), std::string(key) + " must be an array, not " + type_name(*node));
+    return node->as_array();
+}
+
+void TableReader::accept(std::string_view key) { known_.emplace(key); }
+
+void TableReader::finish() const {
+    for (auto&& [key, value] : table_) {
+        if (known_.count(key.str())) continue;
+        std::string message = what_ + ": unknown key '" + std::string(key.str()) + "'";
+        std::string suggestion = closest_match(key.str(), known_);
+        if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
+        throw SceneError(location_of(key.source(), file_), message);
+    }
+}
+
+SourceLocation TableReader::location() const { return location_of(table_, file_); }
+
+SourceLocation TableReader::location(std::string_view key) const {
+    if (const toml::node* node = table_.get(key)) return location_of(*node, file_);
+    return location();
+}
+
+void TableReader::fail(std::string_view key, const std::string& message) const {
+    throw SceneError(location(key), message);
+}
+
+}  // namespace lancer

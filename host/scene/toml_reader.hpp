@@ -1,0 +1,66 @@
+#pragma once
+// Typed, located access to one TOML table. Every getter checks the type and that numbers are
+// finite, and remembers the key as known; finish() then reports the first unknown key (with a
+// "did you mean" suggestion). Errors are SceneErrors at the offending value's line and column.
+#include <set>
+#include <string>
+#include <string_view>
+
+#include <toml++/toml.h>
+
+#include "core/error.hpp"
+#include "scene/scene.hpp"
+
+namespace lancer {
+
+class TableReader {
+public:
+    // `what` names the table in messages, e.g. "[camera]" or "object 'sphere'".
+    TableReader(const toml::table& table, const std::string& file, std::string what);
+
+    bool has(std::string_view key) const;
+
+    double number(std::string_view key, double fallback);
+    double required_number(std::string_view key);
+    int integer(std::string_view key, int fallback);
+    dvec3 vec3(std::string_view key, dvec3 fallback);
+    dvec3 required_vec3(std::string_view key);
+    std::string string(std::string_view key, std::string fallback);
+    std::string required_string(std::string_view key);
+    bool boolean(std::string_view key, bool fallback);
+    // Sub-tables and arrays are returned as nodes for the caller to read; nullptr when absent.
+    const toml::table* table(std::string_view key);
+    const toml::array* array(std::string_view key);
+
+    // Marks a key as known without reading it (for keys consumed elsewhere, such as "type").
+    void accept(std::string_view key);
+    // Reports the first key that no getter asked for.
+    void finish() const;
+
+    SourceLocation location() const;                       // of the table itself
+    SourceLocation location(std::string_view key) const;   // of the key's value (or the table)
+    [[noreturn]] void fail(std::string_view key, const std::string& message) const;
+
+    const std::string& file() const { return file_; }
+    const std::string& what() const { return what_; }
+
+private:
+    const toml::node* get(std::string_view key, bool required);
+
+    const toml::table& table_;
+    std::string file_;
+    std::string what_;
+    std::set<std::string, std::less<>> known_;
+};
+
+SourceLocation location_of(const toml::node& node, const std::string& file);
+SourceLocation location_of(const toml::source_region& region, const std::string& file);
+
+// Reads a node as a finite number (integer or float) or a 3-vector of them.
+double node_number(const toml::node& node, const std::string& file, const std::string& what);
+dvec3 node_vec3(const toml::node& node, const std::string& file, const std::string& what);
+
+// The candidate closest to `word` by edit distance, or "" when nothing is plausibly a typo.
+std::string closest_match(std::string_view word, const std::set<std::string, std::less<>>& candidates);
+
+}  // namespace lancer

@@ -1,0 +1,104 @@
+// The one definition of every GPU-visible struct, binding and enum.
+//
+// This header is compiled twice: by the C++ host (through host/gpu/layout.hpp) and by
+// glslang as part of the compute shader (GL_GOOGLE_include_directive). Members are vec4s and
+// 32-bit scalars only, so std430 (shader) and the C++ ABI agree without padding tricks; the
+// host static_asserts the sizes and tests/unit/layout_reflection_test.cpp compares every
+// offset with glslang's reflection of the compiled shader.
+#ifndef LANCER_LAYOUT_H
+#define LANCER_LAYOUT_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/vec4.hpp>
+namespace lancer::gpu {
+using vec4 = glm::vec4;
+using uint = std::uint32_t;
+#define LANCER_CONST constexpr uint
+#else
+#define LANCER_CONST const uint
+#endif
+
+// Descriptor bindings of set 0.
+LANCER_CONST BINDING_FRAME = 0;       // uniform FrameParams
+LANCER_CONST BINDING_PRIMITIVES = 1;  // buffer Primitive[]
+LANCER_CONST BINDING_MATERIALS = 2;   // buffer Material[]
+LANCER_CONST BINDING_LIGHTS = 3;      // buffer Light[]
+LANCER_CONST BINDING_OUTPUT = 4;      // buffer vec4[] (one band of the image)
+
+// Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
+LANCER_CONST WORKGROUP_X = 8;
+LANCER_CONST WORKGROUP_Y = 8;
+
+// Primitive::type values. Each has one GLSL file in shaders/shapes/ and one C++ file in
+// host/cpu/shapes/ with the same name.
+LANCER_CONST SHAPE_SPHERE = 0;     // p0 = (center, radius)
+LANCER_CONST SHAPE_PLANE = 1;      // p0 = (point, 0), p1 = (unit normal, 0)
+LANCER_CONST SHAPE_RECTANGLE = 2;  // p0 = (corner, 0), p1 = (edge_u, 0), p2 = (edge_v, 0)
+LANCER_CONST SHAPE_BOX = 3;        // p0 = (min, 0), p1 = (max, 0)
+
+// Material::pattern values.
+LANCER_CONST PATTERN_SOLID = 0;
+LANCER_CONST PATTERN_CHECKER = 1;
+
+struct Primitive {
+    uint type;
+    uint material;
+    uint reserved0;
+    uint reserved1;
+    vec4 p0;
+    vec4 p1;
+    vec4 p2;
+};
+
+struct Material {
+    vec4 color;    // rgb = pigment (checker: first colour), linear
+    vec4 color2;   // rgb = second checker colour
+    vec4 phong;    // x = ambient, y = diffuse, z = specular, w = shininess (n_s)
+    float reflection;
+    uint pattern;
+    float checker_size;
+    uint reserved;
+};
+
+struct Light {
+    vec4 position;  // xyz
+    vec4 color;     // rgb
+};
+
+// Per-render constants (a uniform buffer). The camera is given as the vectors from which the
+// shader forms ray directions: dir = forward + ndc_x * right + ndc_y * up, with ndc in [-1, 1].
+struct FrameParams {
+    vec4 eye;
+    vec4 forward;
+    vec4 right;       // already scaled by tan(fov/2) * aspect
+    vec4 up;          // already scaled by tan(fov/2)
+    vec4 background;  // rgb
+    vec4 ambient;     // rgb, the scene's ambient light
+    uint width;
+    uint height;
+    uint samples;     // N: an N x N grid of rays per pixel
+    uint max_depth;   // reflection bounces after the camera ray
+    uint primitive_count;
+    uint light_count;
+    uint reserved0;
+    uint reserved1;
+};
+
+// Push constants: which band of rows this dispatch renders.
+struct BandParams {
+    uint y0;
+    uint rows;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(Primitive) == 64);
+static_assert(sizeof(Material) == 64);
+static_assert(sizeof(Light) == 32);
+static_assert(sizeof(FrameParams) == 128);
+static_assert(sizeof(BandParams) == 8);
+}  // namespace lancer::gpu
+#endif
+
+#undef LANCER_CONST
+#endif  // LANCER_LAYOUT_H

@@ -1,0 +1,26 @@
+// Ray/axis-aligned box by slabs. Twin of host/cpu/shapes/box.cpp. p0 = min, p1 = max.
+// A ray starting inside hits the far side (t_exit), so reflections and shadows from inside work.
+bool box_intersect(Primitive b, Ray ray, float t_min, float t_max, out float t_hit) {
+    vec3 inv = 1.0 / ray.dir;  // +-inf for axis-parallel rays; the slab test stays correct
+    vec3 t0 = (b.p0.xyz - ray.origin) * inv;
+    vec3 t1 = (b.p1.xyz - ray.origin) * inv;
+    vec3 tn = min(t0, t1);
+    vec3 tf = max(t0, t1);
+    float t_enter = max(max(tn.x, tn.y), tn.z);
+    float t_exit = min(min(tf.x, tf.y), tf.z);
+    if (t_enter > t_exit) return false;
+    if (t_enter > t_min && t_enter < t_max) { t_hit = t_enter; return true; }
+    if (t_exit > t_min && t_exit < t_max) { t_hit = t_exit; return true; }
+    return false;
+}
+
+// The face whose plane the point is closest to, relative to the box size.
+vec3 box_normal(Primitive b, vec3 p) {
+    vec3 c = 0.5 * (b.p0.xyz + b.p1.xyz);
+    vec3 h = 0.5 * (b.p1.xyz - b.p0.xyz);
+    vec3 d = (p - c) / h;
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) return vec3(sign(d.x), 0.0, 0.0);
+    if (a.y >= a.z) return vec3(0.0, sign(d.y), 0.0);
+    return vec3(0.0, 0.0, sign(d.z));
+}

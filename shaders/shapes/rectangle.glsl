@@ -1,0 +1,24 @@
+// Ray/parallelogram corner + a*edge_u + b*edge_v, a, b in [0, 1].
+// Twin of host/cpu/shapes/rectangle.cpp. p0 = corner, p1 = edge_u, p2 = edge_v.
+bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out float t_hit) {
+    vec3 eu = r.p1.xyz;
+    vec3 ev = r.p2.xyz;
+    vec3 n = cross(eu, ev);
+    float denom = dot(n, ray.dir);
+    if (denom == 0.0) return false;
+    vec3 rel = r.p0.xyz - ray.origin;
+    float t = dot(rel, n) / denom;
+    if (t <= t_min || t >= t_max) return false;
+    // Parallelogram coordinates of the hit, from p - corner = a eu + b ev.
+    vec3 q = ray.dir * t - rel;
+    float nn = dot(n, n);
+    float a = dot(cross(q, ev), n) / nn;
+    float b = dot(cross(eu, q), n) / nn;
+    if (a < 0.0 || a > 1.0 || b < 0.0 || b > 1.0) return false;
+    t_hit = t;
+    return true;
+}
+
+vec3 rectangle_normal(Primitive r) {
+    return normalize(cross(r.p1.xyz, r.p2.xyz));
+}

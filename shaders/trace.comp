@@ -1,0 +1,63 @@
+#version 450
+// lancer's ray tracer: one invocation per pixel, an N x N grid of camera rays, and for each an
+// iterative bounce loop (no recursion) with Phong shading, shadow rays and mirror reflection.
+// The CPU reference (host/cpu/) implements the same model independently, in double precision.
+#extension GL_GOOGLE_include_directive : require
+
+#include "layout.h"
+
+layout(local_size_x = WORKGROUP_X, local_size_y = WORKGROUP_Y, local_size_z = 1) in;
+
+layout(push_constant) uniform BandBlock { BandParams band; };
+// rgb = linear colour, a = number of rays traced for this pixel (camera + shadow + reflection).
+layout(std430, set = 0, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 pixels[]; };
+
+#include "common.glsl"
+#include "scene.glsl"
+#include "shade.glsl"
+
+// Below this remaining weight a reflection cannot change the 8-bit result (< 1/4 of a level).
+const float MIN_WEIGHT = 1.0 / 1024.0;
+
+vec3 trace(Ray ray, inout float rays) {
+    vec3 color = vec3(0.0);
+    vec3 weight = vec3(1.0);
+    for (uint depth = 0u; depth <= frame.max_depth; ++depth) {
+        rays += 1.0;
+        Hit hit;
+        if (!closest_hit(ray, 0.0, hit)) {
+            color += weight * frame.background.rgb;
+            return color;
+        }
+        vec3 p = ray.origin + hit.t * ray.dir;
+        vec3 n = hit.normal;
+        if (dot(n, ray.dir) > 0.0) n = -n;  // two-sided surfaces
+        Material m = materials[primitives[hit.primitive].material];
+        vec3 local = shade_local(m, p, n, ray.dir, rays);
+        color += weight * (1.0 - m.reflection) * local;
+        weight *= m.reflection;
+        if (max(weight.r, max(weight.g, weight.b)) < MIN_WEIGHT) return color;
+        ray = Ray(p + ray_offset(p) * n, reflect(ray.dir, n));
+    }
+    // Past max_depth the reflected ray contributes black (POV-Ray's max_trace_level rule).
+    return color;
+}
+
+void main() {
+    uvec2 pixel = uvec2(gl_GlobalInvocationID.x, band.y0 + gl_GlobalInvocationID.y);
+    if (pixel.x >= frame.width || gl_GlobalInvocationID.y >= band.rows || pixel.y >= frame.height) return;
+
+    float n = float(frame.samples);
+    vec3 sum = vec3(0.0);
+    float rays = 0.0;
+    for (uint j = 0u; j < frame.samples; ++j) {
+        for (uint i = 0u; i < frame.samples; ++i) {
+            vec2 s = vec2(pixel) + (vec2(i, j) + 0.5) / n;
+            float ndc_x = 2.0 * s.x / float(frame.width) - 1.0;
+            float ndc_y = 1.0 - 2.0 * s.y / float(frame.height);
+            vec3 dir = normalize(frame.forward.xyz + ndc_x * frame.right.xyz + ndc_y * frame.up.xyz);
+            sum += trace(Ray(frame.eye.xyz, dir), rays);
+        }
+    }
+    pixels[gl_GlobalInvocationID.y * frame.width + pixel.x] = vec4(sum / (n * n), rays);
+}
