@@ -20,15 +20,15 @@ vec3 shade_local(Material m, vec3 p, vec3 n, vec3 view_dir, inout float rays) {
     vec3 pigment = material_pigment(m, p);
     vec3 color = m.phong.x * pigment * frame.ambient.rgb;
     vec3 mirrored = reflect(view_dir, n);
-    vec3 origin = p + ray_offset(p) * n;
+    vec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
     for (uint i = 0u; i < frame.light_count; ++i) {
-        vec3 to_light = lights[i].position.xyz - origin;
-        float dist = length(to_light);
-        vec3 l = to_light / dist;
+        vec3 l = normalize(lights[i].position.xyz - p);
         float n_dot_l = dot(n, l);
         if (n_dot_l <= 0.0) continue;  // light behind the surface: no shadow ray needed
         rays += 1.0;
-        if (occluded(Ray(origin, l), 0.0, dist)) continue;
+        vec3 to_light = lights[i].position.xyz - origin;
+        float dist = length(to_light);
+        if (occluded(Ray(origin, to_light / dist), 0.0, dist)) continue;
         color += m.phong.y * n_dot_l * pigment * lights[i].color.rgb;
         float r_dot_l = dot(mirrored, l);
         if (r_dot_l > 0.0 && m.phong.z > 0.0) color += m.phong.z * pow(r_dot_l, m.phong.w) * lights[i].color.rgb;

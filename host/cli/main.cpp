@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::Success& e) {
         return app.exit(e);  // --help, --version
     } catch (const CLI::ParseError& e) {
-        app.exit(e);
+        std::fprintf(stderr, "lancer: error: %s (see lancer --help)\n", e.what());
         return 2;
     }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -55,6 +56,12 @@ void apply_overrides(const RenderOptions& o, RenderSettings& r) {
         throw UserError(fmt::format("{}x{} exceeds the limit of {} pixels", r.width, r.height, limits::kMaxImagePixels));
 }
 
+long peak_rss_mib() {
+    rusage usage{};
+    ::getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024;  // ru_maxrss is in KiB on Linux
+}
+
 std::string default_output(const std::string& scene) {
     return std::filesystem::path(scene).stem().string() + ".png";
 }
@@ -96,9 +103,9 @@ int run_render(const RenderOptions& o) {
 
     const RenderSettings& r = scene.render;
     double rays = image.total_rays();
-    progress.finish(fmt::format("{}: {}x{}, {} rays/pixel, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays)", output, r.width,
-                                r.height, r.samples * r.samples, renderer->description(), seconds, rays / seconds / 1e6,
-                                rays / 1e6));
+    progress.finish(fmt::format("{}: {}x{}, {} rays/pixel, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB",
+                                output, r.width, r.height, r.samples * r.samples, renderer->description(), seconds,
+                                rays / seconds / 1e6, rays / 1e6, peak_rss_mib()));
     renderer.reset();  // tear down Vulkan before counting validation messages
     if (std::uint32_t n = gpu::validation_message_count()) {
         std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);

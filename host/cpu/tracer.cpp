@@ -55,15 +55,15 @@ dvec3 Tracer::shade_local(const Material& m, const dvec3& p, const dvec3& n, con
     dvec3 pigment = pigment_at(m, p);
     dvec3 color = m.ambient * pigment * scene_.ambient;
     dvec3 mirrored = mirror(view_dir, n);
-    dvec3 origin = p + ray_offset(p) * n;
+    dvec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
     for (const PointLight& light : scene_.lights) {
-        dvec3 to_light = light.position - origin;
-        double dist = glm::length(to_light);
-        dvec3 l = to_light / dist;
+        dvec3 l = glm::normalize(light.position - p);
         double n_dot_l = glm::dot(n, l);
         if (n_dot_l <= 0.0) continue;  // the light is behind the surface
         rays += 1.0;
-        if (occluded({origin, l}, 0.0, dist)) continue;
+        dvec3 to_light = light.position - origin;
+        double dist = glm::length(to_light);
+        if (occluded({origin, to_light / dist}, 0.0, dist)) continue;
         color += m.diffuse * n_dot_l * pigment * light.color;
         double r_dot_l = glm::dot(mirrored, l);
         if (r_dot_l > 0.0 && m.specular > 0.0) color += m.specular * std::pow(r_dot_l, m.shininess) * light.color;

@@ -119,7 +119,7 @@ std::uint32_t choose_device(const std::vector<VkPhysicalDevice>& devices, const 
         std::string names;
         for (std::uint32_t i = 0; i < devices.size(); ++i) {
             DeviceInfo info = describe(devices[i], i);
-            names += "\n  " + std::to_string(i) + ": " + info.name;
+            names += (names.empty() ? "" : "; ") + std::to_string(i) + ": " + info.name;
             bool match = numeric ? std::to_string(i) == wanted
                                  : lowercase(info.name).find(lowercase(wanted)) != std::string::npos;
             if (match) {
@@ -127,7 +127,7 @@ std::uint32_t choose_device(const std::vector<VkPhysicalDevice>& devices, const 
                 return i;
             }
         }
-        throw UserError("no Vulkan device matches '" + wanted + "'; available devices:" + names);
+        throw UserError("no Vulkan device matches '" + wanted + "' (available: " + names + ")");
     }
     std::optional<std::uint32_t> best;
     int best_score = -1;
@@ -147,6 +147,8 @@ std::uint32_t choose_device(const std::vector<VkPhysicalDevice>& devices, const 
 }  // namespace
 
 std::uint32_t validation_message_count() { return g_validation_messages.load(); }
+
+void forget_validation_messages(std::uint32_t count) { g_validation_messages.fetch_sub(count); }
 
 bool validation_requested_by_environment() {
     const char* v = std::getenv("LANCER_VALIDATION");

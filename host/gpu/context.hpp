@@ -25,6 +25,8 @@ struct ContextOptions {
 // Validation messages (warnings and errors) seen by any context of this process so far, teardown
 // included; each is also printed to stderr.
 std::uint32_t validation_message_count();
+// For tests that provoke a message on purpose to prove the layer is active.
+void forget_validation_messages(std::uint32_t count);
 
 // True when LANCER_VALIDATION=1 is set: how tests and CI turn the validation layer on.
 bool validation_requested_by_environment();

@@ -2,9 +2,12 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+
+#include <fmt/format.h>
 
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
@@ -22,8 +25,7 @@ dvec3 check_color(TableReader& t, std::string_view key, dvec3 c) {
 
 double check_range(TableReader& t, std::string_view key, double v, double lo, double hi) {
     if (v < lo || v > hi)
-        t.fail(key, std::string(key) + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], not " +
-                        std::to_string(v));
+        t.fail(key, fmt::format("{} must be in [{:g}, {:g}], not {:g}", key, lo, hi, v));
     return v;
 }
 
@@ -218,6 +220,8 @@ Scene parse_scene(std::string_view text, const std::string& path) {
 }
 
 Scene load_scene(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw UserError("cannot read scene file '" + path + "': it is a directory");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw UserError("cannot read scene file '" + path + "': " + std::strerror(errno));
     std::ostringstream text;

@@ -1,5 +1,6 @@
 #include "scene/parse_shapes.hpp"
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 
 namespace lancer {
@@ -9,7 +10,7 @@ Shape read_sphere(TableReader& t) {
     Sphere s;
     s.center = t.required_vec3("center");
     s.radius = t.required_number("radius");
-    if (!(s.radius > 0.0)) t.fail("radius", "sphere radius must be positive, not " + std::to_string(s.radius));
+    if (!(s.radius > 0.0)) t.fail("radius", fmt::format("sphere radius must be positive, not {:g}", s.radius));
     return s;
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include <fmt/format.h>
+
 namespace lancer {
 
 SourceLocation location_of(const toml::source_region& region, const std::string& file) {
@@ -28,19 +30,21 @@ const char* type_name(const toml::node& node) {
     }
 }
 
+// Optimal string alignment distance: insertions, deletions, substitutions and transpositions of
+// adjacent letters ("fvo" -> "fov") each cost 1.
 std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
     for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
         for (std::size_t j = 1; j <= b.size(); ++j) {
-            std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = above;
+            std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
         }
     }
-    return row[b.size()];
+    return d[a.size()][b.size()];
 }
 
 }  // namespace
@@ -67,7 +71,7 @@ double node_number(const toml::node& node, const std::string& file, const std::s
     } else {
         throw SceneError(location_of(node, file), what + " must be a number, not " + type_name(node));
     }
-    if (!std::isfinite(value)) throw SceneError(location_of(node, file), what + " must be finite, not " + std::to_string(value));
+    if (!std::isfinite(value)) throw SceneError(location_of(node, file), fmt::format("{} must be finite, not {}", what, value));
     return value;
 }
 

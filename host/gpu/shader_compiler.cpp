@@ -1,0 +1,128 @@
+#include "gpu/shader_compiler.hpp"
+
+#include <fstream>
+#include <memory>
+#include <mutex>
+#include <sstream>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+namespace lancer::gpu {
+namespace {
+
+void initialize_glslang() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        glslang::InitializeProcess();
+        std::atexit([] { glslang::FinalizeProcess(); });
+    });
+}
+
+// Resolves "#include "x"" relative to the including file's directory within the tree.
+class TreeIncluder final : public glslang::TShader::Includer {
+public:
+    explicit TreeIncluder(const ShaderTree& tree) : tree_(tree) {}
+
+    IncludeResult* includeLocal(const char* header, const char* includer, size_t) override {
+        std::string base(includer);
+        auto slash = base.rfind('/');
+        std::string dir = slash == std::string::npos ? "" : base.substr(0, slash + 1);
+        if (auto found = resolve(dir + header)) return found;
+        return resolve(header);
+    }
+    IncludeResult* includeSystem(const char* header, const char*, size_t) override { return resolve(header); }
+    void releaseInclude(IncludeResult* result) override {
+        if (result) {
+            delete static_cast<std::string*>(result->userData);
+            delete result;
+        }
+    }
+
+private:
+    IncludeResult* resolve(const std::string& name) {
+        auto text = tree_(name);
+        if (!text) return nullptr;
+        auto* owned = new std::string(std::move(*text));
+        return new IncludeResult(name, owned->data(), owned->size(), owned);
+    }
+    const ShaderTree& tree_;
+};
+
+std::string preamble(const std::vector<ShaderDefine>& defines) {
+    std::string text;
+    for (const auto& d : defines) text += "#define " + d.name + " " + d.value + "\n";
+    return text;
+}
+
+struct Compiled {
+    std::unique_ptr<glslang::TShader> shader;
+    std::unique_ptr<glslang::TProgram> program;
+};
+
+Compiled compile(const ShaderTree& tree, const std::string& entry, const std::vector<ShaderDefine>& defines) {
+    initialize_glslang();
+    auto source = tree(entry);
+    if (!source) throw ShaderCompileError("shader '" + entry + "' not found");
+
+    Compiled c;
+    c.shader = std::make_unique<glslang::TShader>(EShLangCompute);
+    const char* text = source->c_str();
+    const char* name = entry.c_str();
+    c.shader->setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
+    std::string pre = preamble(defines);
+    c.shader->setPreamble(pre.c_str());
+    c.shader->setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+    c.shader->setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+    c.shader->setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
+    TreeIncluder includer(tree);
+    auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+    if (!c.shader->parse(GetDefaultResources(), 450, false, messages, includer))
+        throw ShaderCompileError(std::string(c.shader->getInfoLog()) + c.shader->getInfoDebugLog());
+    c.program = std::make_unique<glslang::TProgram>();
+    c.program->addShader(c.shader.get());
+    if (!c.program->link(messages)) throw ShaderCompileError(std::string(c.program->getInfoLog()));
+    return c;
+}
+
+}  // namespace
+
+ShaderTree directory_tree(const std::string& root) {
+    return [root](const std::string& name) -> std::optional<std::string> {
+        std::ifstream in(root + "/" + name, std::ios::binary);
+        if (!in) return std::nullopt;
+        std::ostringstream text;
+        text << in.rdbuf();
+        return text.str();
+    };
+}
+
+std::vector<std::uint32_t> compile_compute(const ShaderTree& tree, const std::string& entry,
+                                           const std::vector<ShaderDefine>& defines) {
+    Compiled c = compile(tree, entry, defines);
+    std::vector<std::uint32_t> spirv;
+    spv::SpvBuildLogger logger;
+    glslang::SpvOptions options;
+    glslang::GlslangToSpv(*c.program->getIntermediate(EShLangCompute), spirv, &logger, &options);
+    std::string log = logger.getAllMessages();
+    if (spirv.empty()) throw ShaderCompileError("SPIR-V generation failed: " + log);
+    return spirv;
+}
+
+std::vector<ReflectedMember> reflect_block_members(const ShaderTree& tree, const std::string& entry) {
+    Compiled c = compile(tree, entry, {});
+    c.program->buildReflection(EShReflectionAllBlockVariables | EShReflectionSeparateBuffers);
+    std::vector<ReflectedMember> members;
+    for (int i = 0; i < c.program->getNumUniformVariables(); ++i) {
+        const auto& u = c.program->getUniform(i);
+        members.push_back({u.name, u.offset, 0});
+    }
+    for (int i = 0; i < c.program->getNumBufferVariables(); ++i) {
+        const auto& b = c.program->getBufferVariable(i);
+        members.push_back({b.name, b.offset, b.topLevelArrayStride});
+    }
+    return members;
+}
+
+}  // namespace lancer::gpu

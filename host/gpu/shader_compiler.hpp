@@ -1,0 +1,45 @@
+#pragma once
+// Run-time GLSL -> SPIR-V with the glslang library: the path the hot reloader and the
+// expression-surface compiler take. It resolves #include against a ShaderTree (a directory on
+// disk, or the copy of shaders/ embedded in the binary) and reports errors with the file and
+// line they occur in, included files too.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace lancer::gpu {
+
+// Where shader files come from: name relative to the shader root -> contents.
+using ShaderTree = std::function<std::optional<std::string>(const std::string& name)>;
+
+ShaderTree directory_tree(const std::string& root);
+
+struct ShaderDefine {
+    std::string name;
+    std::string value;
+};
+
+class ShaderCompileError : public UserError {
+public:
+    using UserError::UserError;
+};
+
+// Compiles `entry` (e.g. "trace.comp") as a Vulkan 1.2 compute shader. Throws ShaderCompileError
+// with glslang's messages ("file:line: error: ...") when it does not compile.
+std::vector<std::uint32_t> compile_compute(const ShaderTree& tree, const std::string& entry,
+                                           const std::vector<ShaderDefine>& defines = {});
+
+// One member of a uniform or storage block as glslang lays it out, for layout tests.
+struct ReflectedMember {
+    std::string name;  // e.g. "FrameBlock.frame.eye" or "PrimitiveBlock.primitives.p0"
+    int offset;
+    int top_level_stride;  // for members of a runtime-sized array of structs: the struct's stride
+};
+std::vector<ReflectedMember> reflect_block_members(const ShaderTree& tree, const std::string& entry);
+
+}  // namespace lancer::gpu

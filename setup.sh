@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# lancer's one entry point for a fresh Debian 12 machine (run as root, or with sudo available):
+#
+#   ./setup.sh render   install the packages, build, render scenes/seed.toml to seed.png
+#   ./setup.sh test     install the packages, build, run the whole test suite
+#   ./setup.sh build    install the packages and build only
+#
+# Packages are installed only when one is missing, so re-running is quick.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+mode="${1:-build}"
+case "$mode" in render|test|build) ;; *) echo "usage: $0 render|test|build" >&2; exit 2 ;; esac
+
+# Every build and test dependency, all from Debian 12 (see DEVELOPERS.md for what each is for).
+packages=(
+  cmake ninja-build g++ pkg-config
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
+  glslang-dev glslang-tools spirv-tools
+  libglm-dev libstb-dev liblapacke-dev libopenblas-dev
+  libtomlplusplus-dev libcli11-dev libfmt-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build --parallel
+
+case "$mode" in
+  render)
+    ./build/lancer render scenes/seed.toml -o seed.png
+    echo "wrote $(pwd)/seed.png" >&2
+    ;;
+  test)
+    ctest --test-dir build --output-on-failure --parallel "$(nproc)"
+    ;;
+esac

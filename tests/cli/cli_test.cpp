@@ -1,0 +1,106 @@
+// `lancer` as users run it: the exit code, the one-line message, and never a partial PNG.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "image/image.hpp"
+#include "support/test_support.hpp"
+
+namespace lancer {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string out_path(const std::string& name) {
+    std::string path = test::output_dir() + "/cli-" + name + ".png";
+    fs::remove(path);
+    return path;
+}
+
+std::string bad(const std::string& name) { return test::source_path("tests/data/bad/" + name + ".toml"); }
+
+const std::string kSmall = " --width 32 --height 18 --samples 1 ";
+
+TEST(Cli, RendersTheSeedSceneWithAFinalTimingLine) {
+    std::string out = out_path("seed");
+    auto r = test::run_lancer("render " + test::source_path("scenes/seed.toml") + kSmall + "-o " + out, "LANCER_VALIDATION=1");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    Rgb8Image img = read_png(out);
+    EXPECT_EQ(img.width, 32);
+    EXPECT_EQ(img.height, 18);
+    EXPECT_NE(r.err.find("Mrays/s"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+}
+
+TEST(Cli, CpuBackendAndOverridesWork) {
+    std::string out = out_path("cpu");
+    auto r = test::run_lancer("render " + test::source_path("scenes/phong.toml") +
+                              " --backend cpu --width 20 --height 10 --samples 2 --max-depth 1 -q -o " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, "");  // --quiet
+    EXPECT_EQ(read_png(out).width, 20);
+}
+
+TEST(Cli, HelpVersionAndDevices) {
+    auto help = test::run_lancer("render --help");
+    EXPECT_EQ(help.exit_code, 0);
+    for (const char* option : {"--width", "--height", "--samples", "--max-depth", "--backend", "--device", "--quiet"})
+        EXPECT_NE(help.out.find(option), std::string::npos) << option;
+    auto version = test::run_lancer("--version");
+    EXPECT_EQ(version.exit_code, 0);
+    EXPECT_NE(version.out.find("lancer "), std::string::npos);
+    auto devices = test::run_lancer("--list-devices");
+    EXPECT_EQ(devices.exit_code, 0);
+    EXPECT_NE(devices.out.find("0: "), std::string::npos) << devices.out;
+}
+
+struct BadCase {
+    std::string name;
+    std::string args;
+    std::string env;
+    std::string message;  // expected at the start of stderr (after the output path is substituted)
+};
+
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
+class CliRejects : public testing::TestWithParam<BadCase> {};
+
+TEST_P(CliRejects, WithExitCode2AndOneMessageAndNoOutput) {
+    const BadCase& c = GetParam();
+    std::string out = out_path("bad-" + c.name);
+    std::string args = c.args;
+    if (auto at = args.find("OUT"); at != std::string::npos) args.replace(at, 3, out);
+    auto r = test::run_lancer(args, c.env);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind(c.message, 0), 0u) << "stderr was: " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected: " << r.err;
+    EXPECT_FALSE(test::file_exists(out));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliRejects,
+    testing::Values(
+        BadCase{"unknown_key", "render " + bad("unknown_key") + " -o OUT", "", bad("unknown_key") + ":5:1: error: [camera]: unknown key 'fvo'"},
+        BadCase{"negative_radius", "render " + bad("negative_radius") + " -o OUT", "", bad("negative_radius") + ":8:10: error:"},
+        BadCase{"not_toml", "render " + bad("not_toml") + " -o OUT", "", bad("not_toml") + ":2:6: error:"},
+        BadCase{"missing_file", "render /nonexistent/scene.toml -o OUT", "", "lancer: error: cannot read scene file '/nonexistent/scene.toml'"},
+        BadCase{"scene_is_directory", "render " + test::source_path("scenes") + " -o OUT", "", "lancer: error: cannot read scene file '" + test::source_path("scenes") + "': it is a directory"},
+        BadCase{"output_dir_missing", "render " + test::source_path("scenes/seed.toml") + kSmall + "-o /nonexistent-dir/x.png", "",
+                "lancer: error: cannot write '/nonexistent-dir/x.png': directory '/nonexistent-dir' does not exist"},
+        BadCase{"output_is_directory", "render " + test::source_path("scenes/seed.toml") + kSmall + "-o /tmp", "",
+                "lancer: error: cannot write '/tmp': it is a directory"},
+        // /proc accepts no new files even from root: the failure comes at the final write.
+        BadCase{"output_unwritable", "render " + test::source_path("scenes/seed.toml") + kSmall + "--backend cpu -q -o /proc/lancer.png", "",
+                "lancer: error: cannot write '/proc/lancer.png'"},
+        BadCase{"too_large", "render " + test::source_path("scenes/seed.toml") + " --width 16384 --height 16384 -o OUT", "",
+                "lancer: error: 16384x16384 exceeds the limit of 67108864 pixels"},
+        BadCase{"bad_option", "render " + test::source_path("scenes/seed.toml") + " --samples 0 -o OUT", "", "lancer: error: --samples: Value 0 not in range"},
+        BadCase{"unknown_backend", "render " + test::source_path("scenes/seed.toml") + " --backend gpgpu -o OUT", "", "lancer: error: --backend: gpgpu not in"},
+        BadCase{"no_vulkan_device", "render " + test::source_path("scenes/seed.toml") + kSmall + "-o OUT",
+                "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json", "lancer: error: no Vulkan device found"},
+        BadCase{"unknown_device", "render " + test::source_path("scenes/seed.toml") + kSmall + "--device nosuchgpu -o OUT", "",
+                "lancer: error: no Vulkan device matches 'nosuchgpu'"}),
+    [](const auto& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace lancer

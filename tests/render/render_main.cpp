@@ -1,0 +1,24 @@
+// Test main for the render tests: after all tests, destroy the shared GPU renderer and fail if
+// the validation layer said anything at any point, teardown included.
+#include <gtest/gtest.h>
+
+#include "gpu/context.hpp"
+#include "support/test_support.hpp"
+
+namespace {
+
+class ValidationEnvironment : public testing::Environment {
+public:
+    void TearDown() override {
+        lancer::test::release_gpu_renderer();
+        EXPECT_EQ(lancer::gpu::validation_message_count(), 0u) << "Vulkan validation messages (see stderr)";
+    }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    testing::InitGoogleTest(&argc, argv);
+    testing::AddGlobalTestEnvironment(new ValidationEnvironment);
+    return RUN_ALL_TESTS();
+}

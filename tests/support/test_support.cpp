@@ -1,0 +1,65 @@
+#include "support/test_support.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <sys/wait.h>
+
+#include "scene/load_scene.hpp"
+
+namespace lancer::test {
+
+std::string source_path(const std::string& relative) { return std::string(LANCER_SOURCE_DIR) + "/" + relative; }
+
+std::string output_dir() {
+    std::filesystem::create_directories(LANCER_TEST_OUTPUT_DIR);
+    return LANCER_TEST_OUTPUT_DIR;
+}
+
+namespace {
+std::unique_ptr<GpuRenderer> g_renderer;
+}
+
+GpuRenderer& gpu_renderer() {
+    if (!g_renderer) g_renderer = std::make_unique<GpuRenderer>(gpu::ContextOptions{"", /*validation=*/true});
+    return *g_renderer;
+}
+
+void release_gpu_renderer() { g_renderer.reset(); }
+
+Scene scene_from_text(const std::string& toml) { return parse_scene(toml, "inline.toml"); }
+
+std::string save_comparison(const std::string& name, const Rgb8Image& a, const Rgb8Image& b) {
+    std::string dir = output_dir() + "/" + name;
+    std::filesystem::create_directories(dir);
+    write_png(dir + "/a.png", a);
+    write_png(dir + "/b.png", b);
+    write_png(dir + "/diff.png", difference_image(a, b));
+    return dir;
+}
+
+namespace {
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+}  // namespace
+
+CommandResult run_lancer(const std::string& args, const std::string& env) {
+    std::string base = output_dir() + "/cli-" + std::to_string(::getpid());
+    std::string command = env + " " + LANCER_EXE + " " + args + " >" + base + ".out 2>" + base + ".err </dev/null";
+    int status = std::system(command.c_str());
+    CommandResult r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(base + ".out"),
+                    slurp(base + ".err")};
+    std::filesystem::remove(base + ".out");
+    std::filesystem::remove(base + ".err");
+    return r;
+}
+
+bool file_exists(const std::string& path) { return std::filesystem::exists(path); }
+
+}  // namespace lancer::test

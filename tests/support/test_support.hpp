@@ -1,0 +1,38 @@
+#pragma once
+// Shared helpers for lancer's tests: paths, a validated GPU renderer shared by all tests of a
+// process, image comparison that leaves evidence behind on failure, and running the CLI.
+#include <string>
+#include <vector>
+
+#include "gpu/gpu_renderer.hpp"
+#include "image/diff.hpp"
+#include "scene/scene.hpp"
+
+namespace lancer::test {
+
+std::string source_path(const std::string& relative);  // under the repository root
+std::string output_dir();                               // build/test-output, created on demand
+
+// One GPU renderer per test process (pipeline JIT and device creation are paid once), created
+// with VK_LAYER_KHRONOS_validation enabled.
+GpuRenderer& gpu_renderer();
+// Destroys it (all Vulkan objects), so teardown messages of the validation layer are counted too.
+void release_gpu_renderer();
+
+// Loads a scene from text (for tests that build scenes inline).
+Scene scene_from_text(const std::string& toml);
+
+// Writes a.png, b.png and diff.png under output_dir()/name and returns the directory.
+std::string save_comparison(const std::string& name, const Rgb8Image& a, const Rgb8Image& b);
+
+struct CommandResult {
+    int exit_code;
+    std::string out;
+    std::string err;
+};
+// Runs `lancer <args>` through the shell with extra environment assignments (e.g. "VK_ICD_FILENAMES=x").
+CommandResult run_lancer(const std::string& args, const std::string& env = "");
+
+bool file_exists(const std::string& path);
+
+}  // namespace lancer::test
