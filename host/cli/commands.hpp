@@ -1,23 +1,20 @@
 #pragma once
-#include <optional>
-#include <string>
+// lancer's subcommands. Each registers its options on the parent app (bound to state the
+// returned action owns) and returns what to run when it was the one given.
+#include <functional>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 namespace lancer {
 
-struct RenderOptions {
-    std::string scene;
-    std::string output;
-    std::optional<int> width, height, samples, max_depth;
-    std::string backend = "gpu";
-    std::string device;
-    bool list_devices = false;
-    bool quiet = false;
+struct Subcommand {
+    CLI::App* app;
+    std::function<int()> run;
 };
 
-CLI::App* add_render_command(CLI::App& app, RenderOptions& options);
-int run_render(const RenderOptions& options);
+Subcommand add_render_command(CLI::App& parent);
+
 int list_devices();
 
 }  // namespace lancer

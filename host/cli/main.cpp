@@ -1,7 +1,8 @@
-// lancer's command line: parses options, runs the command, and turns every error into one
-// message and an exit code (0 ok, 1 internal failure, 2 bad input or environment).
+// lancer's command line: parses options, runs the chosen subcommand, and turns every error into
+// one message and an exit code (0 ok, 1 internal failure, 2 bad input or environment).
 #include <cstdio>
 #include <exception>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -16,8 +17,9 @@ int main(int argc, char** argv) {
     bool list_devices = false;
     app.add_flag("--list-devices", list_devices, "List the Vulkan devices and exit");
 
-    lancer::RenderOptions render_options;
-    CLI::App* render = lancer::add_render_command(app, render_options);
+    std::vector<lancer::Subcommand> commands = {
+        lancer::add_render_command(app),
+    };
 
     try {
         app.parse(argc, argv);
@@ -29,8 +31,9 @@ int main(int argc, char** argv) {
     }
 
     try {
-        if (list_devices || (render->parsed() && render_options.list_devices)) return lancer::list_devices();
-        if (render->parsed()) return lancer::run_render(render_options);
+        if (list_devices) return lancer::list_devices();
+        for (const auto& command : commands)
+            if (command.app->parsed()) return command.run();
         std::fputs(app.help().c_str(), stdout);
         return 2;
     } catch (const lancer::UserError& e) {

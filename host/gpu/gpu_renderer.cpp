@@ -32,7 +32,8 @@ bool upload(const gpu::Context& context, gpu::Buffer& buffer, const std::vector<
 
 GpuRenderer::GpuRenderer(const gpu::ContextOptions& options)
     : context_(std::make_unique<gpu::Context>(options)),
-      pipeline_(std::make_unique<gpu::TracePipeline>(*context_, gpu::embedded_trace_spirv())) {
+      layout_(std::make_unique<gpu::TraceLayout>(*context_)),
+      pipeline_(std::make_unique<gpu::ComputePipeline>(*context_, *layout_, gpu::embedded_trace_spirv())) {
     VkDevice device = context_->device();
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4}};
@@ -41,7 +42,7 @@ GpuRenderer::GpuRenderer(const gpu::ContextOptions& options)
     pool_info.poolSizeCount = 2;
     pool_info.pPoolSizes = sizes;
     VK_CHECK(vkCreateDescriptorPool(device, &pool_info, nullptr, &descriptor_pool_));
-    VkDescriptorSetLayout set_layout = pipeline_->set_layout();
+    VkDescriptorSetLayout set_layout = layout_->set_layout();
     VkDescriptorSetAllocateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     set_info.descriptorPool = descriptor_pool_;
     set_info.descriptorSetCount = 1;
@@ -73,6 +74,14 @@ GpuRenderer::~GpuRenderer() {
     primitives_ = {};
     frame_ = {};
     pipeline_.reset();
+    layout_.reset();
+}
+
+void GpuRenderer::use_shaders(const gpu::ShaderTree& tree) {
+    std::vector<std::uint32_t> spirv = gpu::compile_compute(tree, gpu::kTraceShader);
+    auto pipeline = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv);
+    VK_CHECK(vkDeviceWaitIdle(context_->device()));  // the old pipeline may still be in use
+    pipeline_ = std::move(pipeline);
 }
 
 std::string GpuRenderer::description() const {
@@ -126,11 +135,11 @@ void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint3
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(command_buffer_, &begin));
-    vkCmdBindPipeline(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->pipeline());
-    vkCmdBindDescriptorSets(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->layout(), 0, 1,
+    vkCmdBindPipeline(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->handle());
+    vkCmdBindDescriptorSets(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_->pipeline_layout(), 0, 1,
                             &descriptor_set_, 0, nullptr);
     gpu::BandParams band{y0, rows};
-    vkCmdPushConstants(command_buffer_, pipeline_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(band), &band);
+    vkCmdPushConstants(command_buffer_, layout_->pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(band), &band);
     vkCmdDispatch(command_buffer_, (width + gpu::WORKGROUP_X - 1) / gpu::WORKGROUP_X,
                   (rows + gpu::WORKGROUP_Y - 1) / gpu::WORKGROUP_Y, 1);
     // Make the shader's writes visible to the host's read of the mapped output.

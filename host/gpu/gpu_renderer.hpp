@@ -6,6 +6,7 @@
 #include "gpu/buffer.hpp"
 #include "gpu/context.hpp"
 #include "gpu/pipeline.hpp"
+#include "gpu/shader_compiler.hpp"
 #include "render/renderer.hpp"
 
 namespace lancer {
@@ -20,6 +21,11 @@ public:
 
     const gpu::Context& context() const { return *context_; }
 
+    // Rebuilds the tracer from GLSL sources at run time (same entry point, same defines as the
+    // embedded SPIR-V). Throws ShaderCompileError and keeps the current pipeline if they do not
+    // compile; on success the next render uses the new pipeline.
+    void use_shaders(const gpu::ShaderTree& tree);
+
 private:
     void upload_scene(const Scene& scene);
     void ensure_output(std::size_t bytes);
@@ -27,7 +33,8 @@ private:
     void dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, double done, const ProgressFn& progress);
 
     std::unique_ptr<gpu::Context> context_;
-    std::unique_ptr<gpu::TracePipeline> pipeline_;
+    std::unique_ptr<gpu::TraceLayout> layout_;
+    std::unique_ptr<gpu::ComputePipeline> pipeline_;
     gpu::Buffer frame_, primitives_, materials_, lights_, output_;
     VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;

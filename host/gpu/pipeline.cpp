@@ -1,30 +1,29 @@
 #include "gpu/pipeline.hpp"
 
 #include <array>
+#include <utility>
 
 #include "gpu/layout.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace lancer::gpu {
 
-TracePipeline::TracePipeline(const Context& context, const std::vector<std::uint32_t>& spirv)
-    : device_(context.device()) {
-    VkShaderModule module = VK_NULL_HANDLE;
+TraceLayout::TraceLayout(const Context& context) : device_(context.device()) {
+    const std::array<std::pair<uint, VkDescriptorType>, 5> kinds = {{
+        {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+        {BINDING_PRIMITIVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        {BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    }};
+    std::array<VkDescriptorSetLayoutBinding, kinds.size()> bindings{};
+    for (std::size_t i = 0; i < kinds.size(); ++i) {
+        bindings[i].binding = kinds[i].first;
+        bindings[i].descriptorType = kinds[i].second;
+        bindings[i].descriptorCount = 1;
+        bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+    }
     try {
-        std::array<VkDescriptorSetLayoutBinding, 5> bindings{};
-        const std::array<std::pair<uint, VkDescriptorType>, 5> kinds = {{
-            {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-            {BINDING_PRIMITIVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-            {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-            {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-            {BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        }};
-        for (std::size_t i = 0; i < kinds.size(); ++i) {
-            bindings[i].binding = kinds[i].first;
-            bindings[i].descriptorType = kinds[i].second;
-            bindings[i].descriptorCount = 1;
-            bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
-        }
         VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
         set_info.bindingCount = static_cast<std::uint32_t>(bindings.size());
         set_info.pBindings = bindings.data();
@@ -36,37 +35,44 @@ TracePipeline::TracePipeline(const Context& context, const std::vector<std::uint
         layout_info.pSetLayouts = &set_layout_;
         layout_info.pushConstantRangeCount = 1;
         layout_info.pPushConstantRanges = &push;
-        VK_CHECK(vkCreatePipelineLayout(device_, &layout_info, nullptr, &layout_));
-
-        VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-        module_info.codeSize = spirv.size() * sizeof(std::uint32_t);
-        module_info.pCode = spirv.data();
-        VK_CHECK(vkCreateShaderModule(device_, &module_info, nullptr, &module));
-
-        VkComputePipelineCreateInfo pipeline_info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-        pipeline_info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-        pipeline_info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-        pipeline_info.stage.module = module;
-        pipeline_info.stage.pName = "main";
-        pipeline_info.layout = layout_;
-        VK_CHECK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pipeline_info, nullptr, &pipeline_));
-        vkDestroyShaderModule(device_, module, nullptr);
+        VK_CHECK(vkCreatePipelineLayout(device_, &layout_info, nullptr, &pipeline_layout_));
     } catch (...) {
-        if (module) vkDestroyShaderModule(device_, module, nullptr);
         release();
         throw;
     }
 }
 
-TracePipeline::~TracePipeline() { release(); }
+TraceLayout::~TraceLayout() { release(); }
 
-void TracePipeline::release() noexcept {
-    if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
-    if (layout_) vkDestroyPipelineLayout(device_, layout_, nullptr);
+void TraceLayout::release() noexcept {
+    if (pipeline_layout_) vkDestroyPipelineLayout(device_, pipeline_layout_, nullptr);
     if (set_layout_) vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
-    pipeline_ = VK_NULL_HANDLE;
-    layout_ = VK_NULL_HANDLE;
+    pipeline_layout_ = VK_NULL_HANDLE;
     set_layout_ = VK_NULL_HANDLE;
+}
+
+ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layout,
+                                 const std::vector<std::uint32_t>& spirv)
+    : device_(context.device()) {
+    VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    module_info.codeSize = spirv.size() * sizeof(std::uint32_t);
+    module_info.pCode = spirv.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateShaderModule(device_, &module_info, nullptr, &module));
+
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module;
+    info.stage.pName = "main";
+    info.layout = layout.pipeline_layout();
+    VkResult result = vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
+    vkDestroyShaderModule(device_, module, nullptr);
+    VK_CHECK(result);
+}
+
+ComputePipeline::~ComputePipeline() {
+    if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
 }
 
 }  // namespace lancer::gpu

@@ -1,6 +1,7 @@
 #pragma once
-// The tracer's compute pipeline and the descriptor set layout it is built against (bindings
-// from shaders/layout.h). Rebuilding it from new SPIR-V (hot reload) leaves the layout alone.
+// The tracer's pipeline layout (bindings from shaders/layout.h, created once per device) and the
+// compute pipeline built against it from SPIR-V, which can be replaced (hot reload, expression
+// surfaces) without touching descriptor sets.
 #include <cstdint>
 #include <vector>
 
@@ -8,23 +9,35 @@
 
 namespace lancer::gpu {
 
-class TracePipeline {
+class TraceLayout {
 public:
-    TracePipeline(const Context& context, const std::vector<std::uint32_t>& spirv);
-    ~TracePipeline();
-    TracePipeline(const TracePipeline&) = delete;
-    TracePipeline& operator=(const TracePipeline&) = delete;
+    explicit TraceLayout(const Context& context);
+    ~TraceLayout();
+    TraceLayout(const TraceLayout&) = delete;
+    TraceLayout& operator=(const TraceLayout&) = delete;
 
-    VkPipeline pipeline() const { return pipeline_; }
-    VkPipelineLayout layout() const { return layout_; }
     VkDescriptorSetLayout set_layout() const { return set_layout_; }
+    VkPipelineLayout pipeline_layout() const { return pipeline_layout_; }
 
 private:
     void release() noexcept;
 
     VkDevice device_;
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
-    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
+};
+
+class ComputePipeline {
+public:
+    ComputePipeline(const Context& context, const TraceLayout& layout, const std::vector<std::uint32_t>& spirv);
+    ~ComputePipeline();
+    ComputePipeline(const ComputePipeline&) = delete;
+    ComputePipeline& operator=(const ComputePipeline&) = delete;
+
+    VkPipeline handle() const { return pipeline_; }
+
+private:
+    VkDevice device_;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 

@@ -23,7 +23,7 @@ const std::string kSmall = " --width 32 --height 18 --samples 1 ";
 
 TEST(Cli, RendersTheSeedSceneWithAFinalTimingLine) {
     std::string out = out_path("seed");
-    auto r = test::run_lancer("render " + test::source_path("scenes/seed.toml") + kSmall + "-o " + out, "LANCER_VALIDATION=1");
+    auto r = test::run_lancer("render " + test::source_path("scenes/seed.toml") + kSmall + "-o " + out);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     Rgb8Image img = read_png(out);
     EXPECT_EQ(img.width, 32);

@@ -51,7 +51,8 @@ std::string slurp(const std::string& path) {
 
 CommandResult run_lancer(const std::string& args, const std::string& env) {
     std::string base = output_dir() + "/cli-" + std::to_string(::getpid());
-    std::string command = env + " " + LANCER_EXE + " " + args + " >" + base + ".out 2>" + base + ".err </dev/null";
+    // Every GPU run is validated: any validation message turns exit code 0 into 1.
+    std::string command = "LANCER_VALIDATION=1 " + env + " " + LANCER_EXE + " " + args + " >" + base + ".out 2>" + base + ".err </dev/null";
     int status = std::system(command.c_str());
     CommandResult r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(base + ".out"),
                     slurp(base + ".err")};

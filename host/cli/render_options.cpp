@@ -1,0 +1,73 @@
+#include "cli/render_options.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "cpu/cpu_renderer.hpp"
+#include "gpu/context.hpp"
+#include "gpu/gpu_renderer.hpp"
+#include "scene/limits.hpp"
+#include "scene/load_scene.hpp"
+
+namespace lancer {
+
+void add_render_options(CLI::App& cmd, RenderOptions& o) {
+    cmd.add_option("scene", o.scene, "Scene file (TOML)")->required();
+    cmd.add_option("-o,--output", o.output, "Output PNG (default: the scene's name with .png, here)");
+    cmd.add_option("--width", o.width, "Image width in pixels (overrides [render] width)")
+        ->check(CLI::Range(1, limits::kMaxImageSide));
+    cmd.add_option("--height", o.height, "Image height in pixels (overrides [render] height)")
+        ->check(CLI::Range(1, limits::kMaxImageSide));
+    cmd.add_option("--samples", o.samples, "N: an N x N grid of rays per pixel (default 3 = 9 rays)")
+        ->check(CLI::Range(1, limits::kMaxSamples));
+    cmd.add_option("--max-depth", o.max_depth, "Reflection bounces (default 5)")->check(CLI::Range(0, limits::kMaxDepth));
+    cmd.add_option("--backend", o.backend, "gpu (Vulkan compute, default) or cpu (reference renderer)")
+        ->check(CLI::IsMember({"gpu", "cpu"}));
+    cmd.add_option("--device", o.device, "Vulkan device: index or part of its name (see --list-devices)");
+    cmd.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
+}
+
+Scene load_scene_with_overrides(const RenderOptions& o) {
+    Scene scene = load_scene(o.scene);
+    RenderSettings& r = scene.render;
+    if (o.width) r.width = *o.width;
+    if (o.height) r.height = *o.height;
+    if (o.samples) r.samples = *o.samples;
+    if (o.max_depth) r.max_depth = *o.max_depth;
+    if (static_cast<long long>(r.width) * r.height > limits::kMaxImagePixels)
+        throw UserError(fmt::format("{}x{} exceeds the limit of {} pixels", r.width, r.height, limits::kMaxImagePixels));
+    return scene;
+}
+
+std::string output_path(const RenderOptions& o) {
+    if (!o.output.empty()) return o.output;
+    return std::filesystem::path(o.scene).stem().string() + ".png";
+}
+
+void check_output_writable(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw UserError("cannot write '" + path + "': it is a directory");
+    fs::path dir = fs::path(path).parent_path();
+    if (dir.empty()) dir = ".";
+    if (!fs::is_directory(dir, ec))
+        throw UserError("cannot write '" + path + "': directory '" + dir.string() + "' does not exist");
+    if (::access(dir.c_str(), W_OK) != 0)
+        throw UserError("cannot write '" + path + "': directory '" + dir.string() + "' is not writable");
+}
+
+std::unique_ptr<Renderer> make_renderer(const RenderOptions& o) {
+    if (o.backend == "cpu") return std::make_unique<CpuRenderer>();
+    return std::make_unique<GpuRenderer>(gpu::ContextOptions{o.device, gpu::validation_requested_by_environment()});
+}
+
+long peak_rss_mib() {
+    rusage usage{};
+    ::getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024;  // KiB on Linux
+}
+
+}  // namespace lancer
