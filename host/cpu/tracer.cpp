@@ -30,22 +30,21 @@ bool Tracer::closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) c
     hit.object = nullptr;
     hit.t = t_max;
     for (const Object& object : scene_.objects) {
-        auto t = std::visit([&](const auto& shape) { return intersect(shape, ray, t_min, hit.t); }, object.shape);
-        if (t) {
-            hit.t = *t;
+        auto h = std::visit([&](const auto& shape) { return intersect(shape, ray, t_min, hit.t); }, object.shape);
+        if (h) {
+            hit.t = h->t;
+            hit.normal = h->normal;
+            hit.uv = h->uv;
             hit.object = &object;
         }
     }
-    if (!hit.object) return false;
-    dvec3 p = ray.origin + hit.t * ray.dir;
-    hit.normal = std::visit([&](const auto& shape) { return normal(shape, p); }, hit.object->shape);
-    return true;
+    return hit.object != nullptr;
 }
 
 bool Tracer::occluded(const Ray& ray, double t_min, double t_max) const {
     for (const Object& object : scene_.objects) {
-        auto t = std::visit([&](const auto& shape) { return intersect(shape, ray, t_min, t_max); }, object.shape);
-        if (t) return true;
+        auto h = std::visit([&](const auto& shape) { return intersect(shape, ray, t_min, t_max); }, object.shape);
+        if (h) return true;
     }
     return false;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // The CPU reference tracer: the model of shaders/trace.comp, written for clarity in double
 // precision, sharing the scene model but none of the shader's code.
+#include <glm/vec2.hpp>
+
 #include "cpu/ray.hpp"
 
 namespace lancer::cpu {
@@ -8,6 +10,7 @@ namespace lancer::cpu {
 struct Hit {
     double t;
     dvec3 normal;  // unit, not yet facing the ray
+    glm::dvec2 uv;
     const Object* object;
 };
 

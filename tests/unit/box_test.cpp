@@ -10,12 +10,12 @@ namespace {
 const Box kBox{{-1, 0, -1}, {1, 2, 1}};
 
 TEST(Box, HitsTheNearFaceWithItsNormal) {
-    auto t = intersect(kBox, {{0, 1, -5}, {0, 0, 1}}, 0.0, 1e30);
-    ASSERT_TRUE(t);
-    EXPECT_DOUBLE_EQ(*t, 4.0);
-    EXPECT_EQ(normal(kBox, {0, 1, -1}), dvec3(0, 0, -1));
-    EXPECT_EQ(normal(kBox, {0.2, 2, 0.3}), dvec3(0, 1, 0));
-    EXPECT_EQ(normal(kBox, {1, 0.5, 0.3}), dvec3(1, 0, 0));
+    auto h = intersect(kBox, {{0, 1, -5}, {0, 0, 1}}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_DOUBLE_EQ(h->t, 4.0);
+    EXPECT_EQ(h->normal, dvec3(0, 0, -1));
+    EXPECT_EQ(intersect(kBox, {{0.2, 5, 0.3}, {0, -1, 0}}, 0.0, 1e30)->normal, dvec3(0, 1, 0));
+    EXPECT_EQ(intersect(kBox, {{5, 0.5, 0.3}, {-1, 0, 0}}, 0.0, 1e30)->normal, dvec3(1, 0, 0));
 }
 
 TEST(Box, Misses) {
@@ -30,15 +30,16 @@ TEST(Box, GrazingAlongAFaceCountsAsAHit) {
 }
 
 TEST(Box, FromInsideHitsTheExitFace) {
-    auto t = intersect(kBox, {{0, 1, 0}, {1, 0, 0}}, 0.0, 1e30);
-    ASSERT_TRUE(t);
-    EXPECT_DOUBLE_EQ(*t, 1.0);
+    auto h = intersect(kBox, {{0, 1, 0}, {1, 0, 0}}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_DOUBLE_EQ(h->t, 1.0);
+    EXPECT_EQ(h->normal, dvec3(1, 0, 0));
 }
 
 TEST(Box, DiagonalThroughAnEdge) {
-    auto t = intersect(kBox, {{-3, 1, -3}, glm::normalize(dvec3(1, 0, 1))}, 0.0, 1e30);
-    ASSERT_TRUE(t);
-    EXPECT_NEAR(*t, 2.0 * std::sqrt(2.0), 1e-12);
+    auto h = intersect(kBox, {{-3, 1, -3}, glm::normalize(dvec3(1, 0, 1))}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 2.0 * std::sqrt(2.0), 1e-12);
 }
 
 }  // namespace

@@ -9,9 +9,11 @@ namespace {
 const Rectangle kRect{{0, 0, 0}, {2, 0, 0}, {0, 0, 1}};
 
 TEST(Rectangle, HitsInside) {
-    auto t = intersect(kRect, {{1, 3, 0.5}, {0, -1, 0}}, 0.0, 1e30);
-    ASSERT_TRUE(t);
-    EXPECT_DOUBLE_EQ(*t, 3.0);
+    auto h = intersect(kRect, {{1, 3, 0.5}, {0, -1, 0}}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_DOUBLE_EQ(h->t, 3.0);
+    EXPECT_DOUBLE_EQ(h->uv.x, 0.5);  // parallelogram coordinates
+    EXPECT_DOUBLE_EQ(h->uv.y, 0.5);
 }
 
 TEST(Rectangle, MissesOutsideItsEdges) {
@@ -35,7 +37,7 @@ TEST(Rectangle, ParallelogramUsesItsOwnEdges) {
 TEST(Rectangle, ParallelRayMisses) { EXPECT_FALSE(intersect(kRect, {{-1, 0, 0.5}, {1, 0, 0}}, 0.0, 1e30)); }
 
 TEST(Rectangle, NormalIsEdgeUCrossEdgeV) {
-    dvec3 n = normal(kRect, {1, 0, 0.5});
+    dvec3 n = intersect(kRect, {{1, 3, 0.5}, {0, -1, 0}}, 0.0, 1e30)->normal;
     EXPECT_NEAR(n.x, 0.0, 1e-15);
     EXPECT_NEAR(n.y, -1.0, 1e-15);  // (2,0,0) x (0,0,1) = (0,-2,0)
     EXPECT_NEAR(n.z, 0.0, 1e-15);

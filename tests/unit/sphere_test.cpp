@@ -11,10 +11,10 @@ namespace {
 const Sphere kUnit{{0.0, 0.0, 0.0}, 1.0};
 
 TEST(Sphere, HitsFromOutsideAtTheNearSide) {
-    auto t = intersect(kUnit, {{0, 0, -5}, {0, 0, 1}}, 0.0, 1e30);
-    ASSERT_TRUE(t);
-    EXPECT_DOUBLE_EQ(*t, 4.0);
-    EXPECT_EQ(normal(kUnit, {0, 0, -1}), dvec3(0, 0, -1));
+    auto h = intersect(kUnit, {{0, 0, -5}, {0, 0, 1}}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_DOUBLE_EQ(h->t, 4.0);
+    EXPECT_EQ(h->normal, dvec3(0, 0, -1));
 }
 
 TEST(Sphere, MissesWhenTheRayPassesBeside) {
@@ -23,29 +23,30 @@ TEST(Sphere, MissesWhenTheRayPassesBeside) {
 }
 
 TEST(Sphere, GrazingRayTouchesAtOnePoint) {
-    auto t = intersect(kUnit, {{0, 1, -5}, {0, 0, 1}}, 0.0, 1e30);
-    ASSERT_TRUE(t);
-    EXPECT_NEAR(*t, 5.0, 1e-12);
+    auto h = intersect(kUnit, {{0, 1, -5}, {0, 0, 1}}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 5.0, 1e-12);
 }
 
 TEST(Sphere, FromInsideHitsTheFarSide) {
-    auto t = intersect(kUnit, {{0, 0, 0.5}, {0, 0, 1}}, 0.0, 1e30);
-    ASSERT_TRUE(t);
-    EXPECT_DOUBLE_EQ(*t, 0.5);
+    auto h = intersect(kUnit, {{0, 0, 0.5}, {0, 0, 1}}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_DOUBLE_EQ(h->t, 0.5);
+    EXPECT_EQ(h->normal, dvec3(0, 0, 1));
 }
 
 TEST(Sphere, RespectsTheInterval) {
     EXPECT_FALSE(intersect(kUnit, {{0, 0, -5}, {0, 0, 1}}, 0.0, 3.9));
     auto far = intersect(kUnit, {{0, 0, -5}, {0, 0, 1}}, 4.5, 1e30);
     ASSERT_TRUE(far);
-    EXPECT_DOUBLE_EQ(*far, 6.0);
+    EXPECT_DOUBLE_EQ(far->t, 6.0);
 }
 
 TEST(Sphere, DistantSphereKeepsPrecision) {
     Sphere far{{0, 0, 1e6}, 1.0};
-    auto t = intersect(far, {{0, 0, 0}, {0, 0, 1}}, 0.0, 1e30);
-    ASSERT_TRUE(t);
-    EXPECT_NEAR(*t, 1e6 - 1.0, 1e-6);
+    auto h = intersect(far, {{0, 0, 0}, {0, 0, 1}}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 1e6 - 1.0, 1e-6);
 }
 
 // Property tests (pbrt's Reintersect): rays aimed at random surface points hit them at t = 1
@@ -60,11 +61,11 @@ TEST(Sphere, AimedRaysHitTheirTargetAndLeavingRaysEscape) {
         dvec3 origin = s.center + (s.radius + 1.0 + 5.0 * std::abs(u(rng))) * glm::normalize(dvec3(u(rng), u(rng), u(rng)));
         dvec3 d = target - origin;
         double len = glm::length(d);
-        auto t = intersect(s, {origin, d / len}, 0.0, 1e30);
-        ASSERT_TRUE(t) << i;
+        auto h = intersect(s, {origin, d / len}, 0.0, 1e30);
+        ASSERT_TRUE(h) << i;
         // The aimed point is the first hit unless the sphere's near side is in the way.
-        EXPECT_LE(*t, len * (1 + 1e-12)) << i;
-        dvec3 n = normal(s, target);
+        EXPECT_LE(h->t, len * (1 + 1e-12)) << i;
+        dvec3 n = dir_on_sphere;
         dvec3 out = glm::normalize(n + 0.9 * dvec3(u(rng), u(rng), u(rng)) * 0.5);
         if (glm::dot(out, n) <= 0.05) continue;
         Ray leaving{target + ray_offset(target) * n, out};

@@ -8,8 +8,22 @@
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
+namespace {
 
-std::optional<double> intersect(const Box& b, const Ray& ray, double t_min, double t_max) {
+// The face whose plane the point is nearest, relative to the box's size.
+dvec3 face_normal(const Box& b, const dvec3& p) {
+    dvec3 center = 0.5 * (b.min + b.max);
+    dvec3 half = 0.5 * (b.max - b.min);
+    dvec3 d = (p - center) / half;
+    dvec3 a = glm::abs(d);
+    if (a.x >= a.y && a.x >= a.z) return {d.x < 0 ? -1.0 : 1.0, 0.0, 0.0};
+    if (a.y >= a.z) return {0.0, d.y < 0 ? -1.0 : 1.0, 0.0};
+    return {0.0, 0.0, d.z < 0 ? -1.0 : 1.0};
+}
+
+}  // namespace
+
+std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, double t_max) {
     double t_enter = -std::numeric_limits<double>::infinity();
     double t_exit = std::numeric_limits<double>::infinity();
     for (int axis = 0; axis < 3; ++axis) {
@@ -25,19 +39,15 @@ std::optional<double> intersect(const Box& b, const Ray& ray, double t_min, doub
         t_exit = std::min(t_exit, t1);
     }
     if (t_enter > t_exit) return std::nullopt;
-    if (t_enter > t_min && t_enter < t_max) return t_enter;
-    if (t_exit > t_min && t_exit < t_max) return t_exit;
-    return std::nullopt;
-}
-
-dvec3 normal(const Box& b, const dvec3& p) {
-    dvec3 center = 0.5 * (b.min + b.max);
-    dvec3 half = 0.5 * (b.max - b.min);
-    dvec3 d = (p - center) / half;  // which face: the coordinate closest to +-1
-    dvec3 a = glm::abs(d);
-    if (a.x >= a.y && a.x >= a.z) return {d.x < 0 ? -1.0 : 1.0, 0.0, 0.0};
-    if (a.y >= a.z) return {0.0, d.y < 0 ? -1.0 : 1.0, 0.0};
-    return {0.0, 0.0, d.z < 0 ? -1.0 : 1.0};
+    double t;
+    if (t_enter > t_min && t_enter < t_max) {
+        t = t_enter;
+    } else if (t_exit > t_min && t_exit < t_max) {
+        t = t_exit;
+    } else {
+        return std::nullopt;
+    }
+    return SurfaceHit{t, face_normal(b, ray.origin + t * ray.dir)};
 }
 
 }  // namespace lancer::cpu

@@ -5,14 +5,12 @@
 
 namespace lancer::cpu {
 
-std::optional<double> intersect(const Plane& p, const Ray& ray, double t_min, double t_max) {
+std::optional<SurfaceHit> intersect(const Plane& p, const Ray& ray, double t_min, double t_max) {
     double denom = glm::dot(p.normal, ray.dir);
     if (denom == 0.0) return std::nullopt;  // parallel, including a ray lying in the plane
     double t = glm::dot(p.point - ray.origin, p.normal) / denom;
     if (t <= t_min || t >= t_max) return std::nullopt;
-    return t;
+    return SurfaceHit{t, p.normal};
 }
-
-dvec3 normal(const Plane& p, const dvec3&) { return p.normal; }
 
 }  // namespace lancer::cpu

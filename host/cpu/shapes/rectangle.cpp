@@ -1,11 +1,13 @@
 // Ray/parallelogram: hit the supporting plane, then solve p - corner = a edge_u + b edge_v.
+#include <cmath>
+
 #include <glm/geometric.hpp>
 
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
 
-std::optional<double> intersect(const Rectangle& r, const Ray& ray, double t_min, double t_max) {
+std::optional<SurfaceHit> intersect(const Rectangle& r, const Ray& ray, double t_min, double t_max) {
     dvec3 n = glm::cross(r.edge_u, r.edge_v);
     double denom = glm::dot(n, ray.dir);
     if (denom == 0.0) return std::nullopt;
@@ -17,9 +19,7 @@ std::optional<double> intersect(const Rectangle& r, const Ray& ray, double t_min
     double a = glm::dot(glm::cross(q, r.edge_v), n) / nn;
     double b = glm::dot(glm::cross(r.edge_u, q), n) / nn;
     if (a < 0.0 || a > 1.0 || b < 0.0 || b > 1.0) return std::nullopt;
-    return t;
+    return SurfaceHit{t, n / std::sqrt(nn), {a, b}};
 }
-
-dvec3 normal(const Rectangle& r, const dvec3&) { return glm::normalize(glm::cross(r.edge_u, r.edge_v)); }
 
 }  // namespace lancer::cpu

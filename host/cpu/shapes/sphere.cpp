@@ -7,7 +7,7 @@
 
 namespace lancer::cpu {
 
-std::optional<double> intersect(const Sphere& s, const Ray& ray, double t_min, double t_max) {
+std::optional<SurfaceHit> intersect(const Sphere& s, const Ray& ray, double t_min, double t_max) {
     dvec3 f = ray.origin - s.center;
     double b = glm::dot(f, ray.dir);
     // r^2 - |f - b d|^2 is the discriminant without the cancellation of b^2 - (|f|^2 - r^2).
@@ -20,11 +20,15 @@ std::optional<double> intersect(const Sphere& s, const Ray& ray, double t_min, d
     double t0 = q != 0.0 ? c / q : 0.0;
     double t1 = q;
     if (t0 > t1) std::swap(t0, t1);
-    if (t0 > t_min && t0 < t_max) return t0;
-    if (t1 > t_min && t1 < t_max) return t1;
-    return std::nullopt;
+    double t;
+    if (t0 > t_min && t0 < t_max) {
+        t = t0;
+    } else if (t1 > t_min && t1 < t_max) {
+        t = t1;
+    } else {
+        return std::nullopt;
+    }
+    return SurfaceHit{t, (ray.origin + t * ray.dir - s.center) / s.radius};
 }
-
-dvec3 normal(const Sphere& s, const dvec3& p) { return (p - s.center) / s.radius; }
 
 }  // namespace lancer::cpu
