@@ -12,6 +12,7 @@ struct Ray {
 struct Hit {
     float t;
     vec3 normal;  // unit, not yet flipped toward the ray
+    vec2 uv;      // the surface's own parameters, where it has them
     uint primitive;
 };
 

@@ -25,6 +25,7 @@ LANCER_CONST BINDING_PRIMITIVES = 1;  // buffer Primitive[]
 LANCER_CONST BINDING_MATERIALS = 2;   // buffer Material[]
 LANCER_CONST BINDING_LIGHTS = 3;      // buffer Light[]
 LANCER_CONST BINDING_OUTPUT = 4;      // buffer vec4[] (one band of the image)
+LANCER_CONST BINDING_NODES = 5;       // buffer BvhNode[]
 
 // Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
 LANCER_CONST WORKGROUP_X = 8;
@@ -44,11 +45,23 @@ LANCER_CONST PATTERN_CHECKER = 1;
 struct Primitive {
     uint type;
     uint material;
-    uint reserved0;
-    uint reserved1;
+    uint data;    // shape-specific index into a further buffer (patch shapes), else 0
+    uint object;  // index of the scene object it came from
     vec4 p0;
     vec4 p1;
     vec4 p2;
+};
+
+// A node of the bounding volume hierarchy over all bounded primitives (host/accel/bvh.hpp).
+// Inner nodes (count == 0) have their children at first and first + 1; leaves cover the
+// primitives [first, first + count). Boxes are rounded outward from double.
+struct BvhNode {
+    vec4 lo;  // xyz
+    vec4 hi;  // xyz
+    uint first;
+    uint count;
+    uint reserved0;
+    uint reserved1;
 };
 
 struct Material {
@@ -79,10 +92,10 @@ struct FrameParams {
     uint height;
     uint samples;     // N: an N x N grid of rays per pixel
     uint max_depth;   // reflection bounces after the camera ray
-    uint primitive_count;
+    uint primitive_count;  // all primitives: the BVH's, then the unbounded ones (planes)
     uint light_count;
-    uint reserved0;
-    uint reserved1;
+    uint node_count;       // 0 when nothing is bounded
+    uint unbounded_count;  // the last unbounded_count primitives are tested by every ray
 };
 
 // Push constants: which band of rows this dispatch renders.
@@ -95,6 +108,7 @@ struct BandParams {
 static_assert(sizeof(Primitive) == 64);
 static_assert(sizeof(Material) == 64);
 static_assert(sizeof(Light) == 32);
+static_assert(sizeof(BvhNode) == 48);
 static_assert(sizeof(FrameParams) == 128);
 static_assert(sizeof(BandParams) == 8);
 }  // namespace lancer::gpu

@@ -1,9 +1,12 @@
-// Scene buffers and the two queries every ray needs: nearest hit, and "is anything in between".
+// Scene buffers and the two queries every ray needs: the nearest hit, and "is anything in the
+// way" (shadow rays). Bounded primitives are found through the BVH; unbounded ones (planes)
+// are tested by every ray.
 #ifndef LANCER_SCENE_GLSL
 #define LANCER_SCENE_GLSL
 
 layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBlock { FrameParams frame; };
 layout(std430, set = 0, binding = BINDING_PRIMITIVES) readonly buffer PrimitiveBlock { Primitive primitives[]; };
+layout(std430, set = 0, binding = BINDING_NODES) readonly buffer NodeBlock { BvhNode nodes[]; };
 layout(std430, set = 0, binding = BINDING_MATERIALS) readonly buffer MaterialBlock { Material materials[]; };
 layout(std430, set = 0, binding = BINDING_LIGHTS) readonly buffer LightBlock { Light lights[]; };
 
@@ -12,8 +15,10 @@ layout(std430, set = 0, binding = BINDING_LIGHTS) readonly buffer LightBlock { L
 #include "shapes/rectangle.glsl"
 #include "shapes/box.glsl"
 
-bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out float t_hit) {
+// uv: the surface's own parameters at the hit, for shapes that have them.
+bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv) {
     Primitive p = primitives[index];
+    uv = vec2(0.0);
     switch (p.type) {
         case SHAPE_SPHERE: return sphere_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_PLANE: return plane_intersect(p, ray, t_min, t_max, t_hit);
@@ -23,7 +28,7 @@ bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out floa
     return false;
 }
 
-vec3 primitive_normal(uint index, vec3 p) {
+vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
     Primitive prim = primitives[index];
     switch (prim.type) {
         case SHAPE_SPHERE: return sphere_normal(prim, p);
@@ -34,27 +39,115 @@ vec3 primitive_normal(uint index, vec3 p) {
     return vec3(0.0, 0.0, 1.0);
 }
 
-bool closest_hit(Ray ray, float t_min, out Hit hit) {
-    hit.t = INFINITY;
-    hit.primitive = 0xffffffffu;
-    for (uint i = 0u; i < frame.primitive_count; ++i) {
-        float t;
-        if (primitive_intersect(i, ray, t_min, hit.t, t)) {
-            hit.t = t;
-            hit.primitive = i;
+// Distance at which the ray enters the box, or INFINITY if it misses it within [0, t_max].
+float box_entry(vec3 lo, vec3 hi, vec3 origin, vec3 inv_dir, float t_max) {
+    vec3 t0 = (lo - origin) * inv_dir;
+    vec3 t1 = (hi - origin) * inv_dir;
+    vec3 tn = min(t0, t1);
+    vec3 tf = max(t0, t1);
+    float enter = max(max(tn.x, tn.y), max(tn.z, 0.0));
+    float leave = min(min(tf.x, tf.y), min(tf.z, t_max));
+    return enter <= leave ? enter : INFINITY;
+}
+
+// 1/d with zero components replaced by a huge finite value of the same sign: keeps the slab
+// test free of 0 * inf = NaN for axis-parallel rays.
+vec3 safe_inverse(vec3 d) {
+    const float tiny = 1e-30;
+    vec3 s = vec3(d.x < 0.0 ? -1.0 : 1.0, d.y < 0.0 ? -1.0 : 1.0, d.z < 0.0 ? -1.0 : 1.0);
+    return s / max(abs(d), vec3(tiny));
+}
+
+const int BVH_STACK_SIZE = 64;  // the builder bounds the tree depth by 60 (host/accel/bvh.cpp)
+
+// Nearest hit in (t_min, t_max) over all primitives; with any_hit, the first hit found.
+bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out float best_t, out uint best_prim,
+                 out vec2 best_uv) {
+    best_t = t_max;
+    best_prim = 0xffffffffu;
+    best_uv = vec2(0.0);
+    float t;
+    vec2 uv;
+
+    uint bounded = frame.primitive_count - frame.unbounded_count;
+    for (uint i = bounded; i < frame.primitive_count; ++i) {
+        if (primitive_intersect(i, ray, t_min, best_t, t, uv)) {
+            best_t = t;
+            best_prim = i;
+            best_uv = uv;
+            if (any_hit) return true;
         }
     }
-    if (hit.primitive == 0xffffffffu) return false;
-    hit.normal = primitive_normal(hit.primitive, ray.origin + hit.t * ray.dir);
+    if (frame.node_count == 0u) return best_prim != 0xffffffffu;
+
+    vec3 inv_dir = safe_inverse(ray.dir);
+    uint stack[BVH_STACK_SIZE];
+    float stack_t[BVH_STACK_SIZE];
+    int sp = 0;
+    uint node = 0u;
+    if (box_entry(nodes[0].lo.xyz, nodes[0].hi.xyz, ray.origin, inv_dir, best_t) == INFINITY) {
+        return best_prim != 0xffffffffu;
+    }
+    for (;;) {
+        BvhNode n = nodes[node];
+        if (n.count > 0u) {
+            for (uint i = n.first; i < n.first + n.count; ++i) {
+                if (primitive_intersect(i, ray, t_min, best_t, t, uv)) {
+                    best_t = t;
+                    best_prim = i;
+                    best_uv = uv;
+                    if (any_hit) return true;
+                }
+            }
+        } else {
+            uint near_child = n.first;
+            uint far_child = n.first + 1u;
+            float t_near = box_entry(nodes[near_child].lo.xyz, nodes[near_child].hi.xyz, ray.origin, inv_dir, best_t);
+            float t_far = box_entry(nodes[far_child].lo.xyz, nodes[far_child].hi.xyz, ray.origin, inv_dir, best_t);
+            if (t_far < t_near) {
+                uint c = near_child; near_child = far_child; far_child = c;
+                float f = t_near; t_near = t_far; t_far = f;
+            }
+            if (t_near != INFINITY) {
+                if (t_far != INFINITY) {
+                    stack[sp] = far_child;
+                    stack_t[sp] = t_far;
+                    ++sp;
+                }
+                node = near_child;
+                continue;
+            }
+        }
+        // Pop the next subtree that may still hold something nearer than the best hit.
+        bool found = false;
+        while (sp > 0) {
+            --sp;
+            if (stack_t[sp] < best_t) {
+                node = stack[sp];
+                found = true;
+                break;
+            }
+        }
+        if (!found) break;
+    }
+    return best_prim != 0xffffffffu;
+}
+
+bool closest_hit(Ray ray, float t_min, out Hit hit) {
+    uint prim;
+    vec2 uv;
+    if (!trace_scene(ray, t_min, INFINITY, false, hit.t, prim, uv)) return false;
+    hit.primitive = prim;
+    hit.uv = uv;
+    hit.normal = primitive_normal(prim, ray.origin + hit.t * ray.dir, uv);
     return true;
 }
 
 bool occluded(Ray ray, float t_min, float t_max) {
-    for (uint i = 0u; i < frame.primitive_count; ++i) {
-        float t;
-        if (primitive_intersect(i, ray, t_min, t_max, t)) return true;
-    }
-    return false;
+    float t;
+    uint prim;
+    vec2 uv;
+    return trace_scene(ray, t_min, t_max, true, t, prim, uv);
 }
 
 #endif

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <type_traits>
 
 #include "gpu/embedded_shaders.hpp"
 #include "gpu/layout.hpp"
@@ -36,7 +37,7 @@ GpuRenderer::GpuRenderer(const gpu::ContextOptions& options)
       pipeline_(std::make_unique<gpu::ComputePipeline>(*context_, *layout_, gpu::embedded_trace_spirv())) {
     VkDevice device = context_->device();
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4}};
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = 2;
@@ -69,6 +70,7 @@ GpuRenderer::~GpuRenderer() {
     // Buffers and the pipeline go before the context (member order alone would destroy the context last
     // anyway; being explicit keeps it true if members move).
     output_ = {};
+    nodes_ = {};
     lights_ = {};
     materials_ = {};
     primitives_ = {};
@@ -93,9 +95,10 @@ void GpuRenderer::upload_scene(const Scene& scene) {
     gpu::PackedScene packed = gpu::pack_scene(scene);
     constexpr VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     descriptors_dirty_ |= upload(*context_, primitives_, packed.primitives, storage);
+    descriptors_dirty_ |= upload(*context_, nodes_, packed.nodes, storage);
     descriptors_dirty_ |= upload(*context_, materials_, packed.materials, storage);
     descriptors_dirty_ |= upload(*context_, lights_, packed.lights, storage);
-    gpu::FrameParams frame = gpu::pack_frame(scene);
+    gpu::FrameParams frame = gpu::pack_frame(scene, packed);
     frame_.write(&frame, sizeof(frame));
 }
 
@@ -107,14 +110,13 @@ void GpuRenderer::ensure_output(std::size_t bytes) {
 
 void GpuRenderer::update_descriptors() {
     if (!descriptors_dirty_) return;
-    const std::pair<std::uint32_t, const gpu::Buffer*> buffers[] = {{gpu::BINDING_FRAME, &frame_},
-                                                                    {gpu::BINDING_PRIMITIVES, &primitives_},
-                                                                    {gpu::BINDING_MATERIALS, &materials_},
-                                                                    {gpu::BINDING_LIGHTS, &lights_},
-                                                                    {gpu::BINDING_OUTPUT, &output_}};
-    VkDescriptorBufferInfo infos[5];
-    VkWriteDescriptorSet writes[5];
-    for (int i = 0; i < 5; ++i) {
+    const std::pair<std::uint32_t, const gpu::Buffer*> buffers[] = {
+        {gpu::BINDING_FRAME, &frame_},   {gpu::BINDING_PRIMITIVES, &primitives_}, {gpu::BINDING_MATERIALS, &materials_},
+        {gpu::BINDING_LIGHTS, &lights_}, {gpu::BINDING_OUTPUT, &output_},         {gpu::BINDING_NODES, &nodes_}};
+    constexpr int kBindings = static_cast<int>(std::extent_v<decltype(buffers)>);
+    VkDescriptorBufferInfo infos[kBindings];
+    VkWriteDescriptorSet writes[kBindings];
+    for (int i = 0; i < kBindings; ++i) {
         infos[i] = {buffers[i].second->handle(), 0, VK_WHOLE_SIZE};
         writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[i].dstSet = descriptor_set_;
@@ -124,7 +126,7 @@ void GpuRenderer::update_descriptors() {
                                                                           : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         writes[i].pBufferInfo = &infos[i];
     }
-    vkUpdateDescriptorSets(context_->device(), 5, writes, 0, nullptr);
+    vkUpdateDescriptorSets(context_->device(), kBindings, writes, 0, nullptr);
     descriptors_dirty_ = false;
 }
 

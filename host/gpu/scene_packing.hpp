@@ -1,5 +1,7 @@
 #pragma once
-// Scene model -> the GPU structs of shaders/layout.h. Pure data conversion, no Vulkan.
+// Scene model -> the GPU structs of shaders/layout.h: primitives ordered for the BVH (bounded
+// ones in leaf order, then the unbounded planes), the flattened BVH, materials and lights.
+// Pure data conversion, no Vulkan.
 #include <vector>
 
 #include "gpu/layout.hpp"
@@ -9,11 +11,17 @@ namespace lancer::gpu {
 
 struct PackedScene {
     std::vector<Primitive> primitives;
+    std::vector<BvhNode> nodes;
     std::vector<Material> materials;
     std::vector<Light> lights;
+    uint unbounded_count = 0;
 };
 
 PackedScene pack_scene(const Scene& scene);
-FrameParams pack_frame(const Scene& scene);
+FrameParams pack_frame(const Scene& scene, const PackedScene& packed);
+
+// float(x) rounded toward -inf / +inf, so float boxes contain their double originals.
+float round_down(double x);
+float round_up(double x);
 
 }  // namespace lancer::gpu

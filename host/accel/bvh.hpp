@@ -1,0 +1,32 @@
+#pragma once
+// A bounding volume hierarchy over boxes, built with binned SAH and stored flat: the children
+// of an inner node are adjacent (left, left + 1), and each leaf refers to a contiguous range of
+// `order`, so a renderer can reorder its primitives once and address leaves by range.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "accel/aabb.hpp"
+
+namespace lancer {
+
+struct BvhNode {
+    Aabb box;
+    std::uint32_t first = 0;  // inner: index of the left child (right = first + 1); leaf: first of `order`
+    std::uint32_t count = 0;  // 0 for inner nodes, else the number of primitives in the leaf
+    bool leaf() const { return count > 0; }
+};
+
+struct Bvh {
+    std::vector<BvhNode> nodes;        // nodes[0] is the root (absent when there are no boxes)
+    std::vector<std::uint32_t> order;  // primitive indices in leaf order
+};
+
+struct BvhOptions {
+    std::uint32_t max_leaf_size = 4;
+    int bins = 16;
+};
+
+Bvh build_bvh(std::span<const Aabb> boxes, const BvhOptions& options = {});
+
+}  // namespace lancer

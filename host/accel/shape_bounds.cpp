@@ -1,0 +1,22 @@
+#include "accel/shape_bounds.hpp"
+
+namespace lancer {
+namespace {
+
+struct BoundsOf {
+    std::optional<Aabb> operator()(const Sphere& s) const { return Aabb{s.center - s.radius, s.center + s.radius}; }
+    std::optional<Aabb> operator()(const Plane&) const { return std::nullopt; }
+    std::optional<Aabb> operator()(const Rectangle& r) const {
+        Aabb b;
+        for (double a : {0.0, 1.0})
+            for (double c : {0.0, 1.0}) b.extend(r.corner + a * r.edge_u + c * r.edge_v);
+        return b;
+    }
+    std::optional<Aabb> operator()(const Box& b) const { return Aabb{b.min, b.max}; }
+};
+
+}  // namespace
+
+std::optional<Aabb> shape_bounds(const Shape& shape) { return std::visit(BoundsOf{}, shape); }
+
+}  // namespace lancer
