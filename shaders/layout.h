@@ -26,6 +26,8 @@ LANCER_CONST BINDING_MATERIALS = 2;   // buffer Material[]
 LANCER_CONST BINDING_LIGHTS = 3;      // buffer Light[]
 LANCER_CONST BINDING_OUTPUT = 4;      // buffer vec4[] (one band of the image)
 LANCER_CONST BINDING_NODES = 5;       // buffer BvhNode[]
+LANCER_CONST BINDING_PATCHES = 6;     // buffer PatchLeaf[]
+LANCER_CONST BINDING_SURFACES = 7;    // buffer SurfaceInfo[]
 
 // Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
 LANCER_CONST WORKGROUP_X = 8;
@@ -37,6 +39,8 @@ LANCER_CONST SHAPE_SPHERE = 0;     // p0 = (center, radius)
 LANCER_CONST SHAPE_PLANE = 1;      // p0 = (point, 0), p1 = (unit normal, 0)
 LANCER_CONST SHAPE_RECTANGLE = 2;  // p0 = (corner, 0), p1 = (edge_u, 0), p2 = (edge_v, 0)
 LANCER_CONST SHAPE_BOX = 3;        // p0 = (min, 0), p1 = (max, 0)
+LANCER_CONST SHAPE_BEZIER = 4;     // data = index of its PatchLeaf
+LANCER_CONST SHAPE_PARAMETRIC = 5; // data = surface index (its generated function), p0 = (u0, u1, v0, v1) of the cell
 
 // Material::pattern values.
 LANCER_CONST PATTERN_SOLID = 0;
@@ -50,6 +54,24 @@ struct Primitive {
     vec4 p0;
     vec4 p1;
     vec4 p2;
+};
+
+// A bicubic (rational) Bezier sub-patch, ready for Bezier clipping. Control points are stored
+// relative to `origin` (the leaf's centre) so that float keeps its precision far from the
+// world origin.
+struct PatchLeaf {
+    vec4 points[16];  // xyz = control point - origin, w = weight (1 for polynomial patches); row-major, i along u
+    vec4 origin;      // xyz
+    vec4 domain;      // (u0, u1, v0, v1): where this leaf lies in its patch's parameter square
+};
+
+// Per parametric surface: the affine map from the user's (x, y, z) to world space, so moving an
+// object only rewrites this buffer, never the generated shader code.
+struct SurfaceInfo {
+    vec4 row0;  // world = (dot(row0.xyz, p) + row0.w, dot(row1.xyz, p) + row1.w, dot(row2.xyz, p) + row2.w)
+    vec4 row1;
+    vec4 row2;
+    vec4 domain;  // (u0, u1, v0, v1) of the whole surface
 };
 
 // A node of the bounding volume hierarchy over all bounded primitives (host/accel/bvh.hpp).
@@ -109,6 +131,8 @@ static_assert(sizeof(Primitive) == 64);
 static_assert(sizeof(Material) == 64);
 static_assert(sizeof(Light) == 32);
 static_assert(sizeof(BvhNode) == 48);
+static_assert(sizeof(PatchLeaf) == 288);
+static_assert(sizeof(SurfaceInfo) == 64);
 static_assert(sizeof(FrameParams) == 128);
 static_assert(sizeof(BandParams) == 8);
 }  // namespace lancer::gpu

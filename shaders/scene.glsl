@@ -14,6 +14,8 @@ layout(std430, set = 0, binding = BINDING_LIGHTS) readonly buffer LightBlock { L
 #include "shapes/plane.glsl"
 #include "shapes/rectangle.glsl"
 #include "shapes/box.glsl"
+#include "shapes/bezier.glsl"
+#include "shapes/parametric.glsl"
 
 // uv: the surface's own parameters at the hit, for shapes that have them.
 bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv) {
@@ -24,6 +26,10 @@ bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out floa
         case SHAPE_PLANE: return plane_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_RECTANGLE: return rectangle_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_BOX: return box_intersect(p, ray, t_min, t_max, t_hit);
+        case SHAPE_BEZIER: return bezier_intersect(p, ray, t_min, t_max, t_hit, uv);
+#if LANCER_PARAMETRIC_SURFACES
+        case SHAPE_PARAMETRIC: return parametric_intersect(p, ray, t_min, t_max, t_hit, uv);
+#endif
     }
     return false;
 }
@@ -35,6 +41,10 @@ vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
         case SHAPE_PLANE: return plane_normal(prim);
         case SHAPE_RECTANGLE: return rectangle_normal(prim);
         case SHAPE_BOX: return box_normal(prim, p);
+        case SHAPE_BEZIER: return bezier_normal(prim, uv);
+#if LANCER_PARAMETRIC_SURFACES
+        case SHAPE_PARAMETRIC: return parametric_normal(prim, uv);
+#endif
     }
     return vec3(0.0, 0.0, 1.0);
 }

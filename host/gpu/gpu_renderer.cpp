@@ -37,7 +37,7 @@ GpuRenderer::GpuRenderer(const gpu::ContextOptions& options)
       pipeline_(std::make_unique<gpu::ComputePipeline>(*context_, *layout_, gpu::embedded_trace_spirv())) {
     VkDevice device = context_->device();
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}};
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = 2;
@@ -71,6 +71,8 @@ GpuRenderer::~GpuRenderer() {
     // anyway; being explicit keeps it true if members move).
     output_ = {};
     nodes_ = {};
+    patches_ = {};
+    surfaces_ = {};
     lights_ = {};
     materials_ = {};
     primitives_ = {};
@@ -96,6 +98,8 @@ void GpuRenderer::upload_scene(const Scene& scene) {
     constexpr VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     descriptors_dirty_ |= upload(*context_, primitives_, packed.primitives, storage);
     descriptors_dirty_ |= upload(*context_, nodes_, packed.nodes, storage);
+    descriptors_dirty_ |= upload(*context_, patches_, packed.patches, storage);
+    descriptors_dirty_ |= upload(*context_, surfaces_, packed.surfaces, storage);
     descriptors_dirty_ |= upload(*context_, materials_, packed.materials, storage);
     descriptors_dirty_ |= upload(*context_, lights_, packed.lights, storage);
     gpu::FrameParams frame = gpu::pack_frame(scene, packed);
@@ -112,7 +116,8 @@ void GpuRenderer::update_descriptors() {
     if (!descriptors_dirty_) return;
     const std::pair<std::uint32_t, const gpu::Buffer*> buffers[] = {
         {gpu::BINDING_FRAME, &frame_},   {gpu::BINDING_PRIMITIVES, &primitives_}, {gpu::BINDING_MATERIALS, &materials_},
-        {gpu::BINDING_LIGHTS, &lights_}, {gpu::BINDING_OUTPUT, &output_},         {gpu::BINDING_NODES, &nodes_}};
+        {gpu::BINDING_LIGHTS, &lights_}, {gpu::BINDING_OUTPUT, &output_},         {gpu::BINDING_NODES, &nodes_},
+        {gpu::BINDING_PATCHES, &patches_}, {gpu::BINDING_SURFACES, &surfaces_}};
     constexpr int kBindings = static_cast<int>(std::extent_v<decltype(buffers)>);
     VkDescriptorBufferInfo infos[kBindings];
     VkWriteDescriptorSet writes[kBindings];

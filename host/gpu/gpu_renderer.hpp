@@ -35,7 +35,7 @@ private:
     std::unique_ptr<gpu::Context> context_;
     std::unique_ptr<gpu::TraceLayout> layout_;
     std::unique_ptr<gpu::ComputePipeline> pipeline_;
-    gpu::Buffer frame_, primitives_, nodes_, materials_, lights_, output_;
+    gpu::Buffer frame_, primitives_, nodes_, patches_, surfaces_, materials_, lights_, output_;
     VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;
     VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;

@@ -9,13 +9,15 @@
 namespace lancer::gpu {
 
 TraceLayout::TraceLayout(const Context& context) : device_(context.device()) {
-    const std::array<std::pair<uint, VkDescriptorType>, 6> kinds = {{
+    const std::array<std::pair<uint, VkDescriptorType>, 8> kinds = {{
         {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
         {BINDING_PRIMITIVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {BINDING_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        {BINDING_PATCHES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        {BINDING_SURFACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     }};
     std::array<VkDescriptorSetLayoutBinding, kinds.size()> bindings{};
     for (std::size_t i = 0; i < kinds.size(); ++i) {

@@ -12,6 +12,8 @@ namespace lancer::gpu {
 struct PackedScene {
     std::vector<Primitive> primitives;
     std::vector<BvhNode> nodes;
+    std::vector<PatchLeaf> patches;
+    std::vector<SurfaceInfo> surfaces;
     std::vector<Material> materials;
     std::vector<Light> lights;
     uint unbounded_count = 0;

@@ -1,0 +1,204 @@
+// Ray/bicubic (rational) Bezier patch by Bezier clipping (Nishita, Sederberg & Kakimoto 1990).
+// Twin of host/cpu/shapes/bezier.cpp, which solves the same problem exactly by resultants and
+// LAPACK; the two share nothing but the patch data.
+//
+// The ray is the intersection of two planes through it. In the 2-D coordinates those planes
+// give, the ray is the origin, and a point of the patch is on the ray iff its projection is
+// (0, 0). The projected patch is again a Bezier patch, so by the convex hull property each
+// clip step can cut away the parts of the parameter box whose control points cannot reach
+// the origin. Boxes that stop shrinking are split; a box narrower than BEZIER_EPS in both
+// directions is a hit.
+
+layout(std430, set = 0, binding = BINDING_PATCHES) readonly buffer PatchBlock { PatchLeaf patch_leaves[]; };
+
+const float BEZIER_EPS = 1e-5;     // converged box width, in the leaf's own parameters
+const int BEZIER_STACK = 16;       // pending boxes after splits
+const int BEZIER_MAX_STEPS = 96;   // clip steps per ray and leaf (measured: ~4-10 are typical)
+
+// The part [a, b] of the cubic with coefficients c0..c3, by two de Casteljau splits.
+void cubic_restrict(inout vec4 c0, inout vec4 c1, inout vec4 c2, inout vec4 c3, float a, float b) {
+    // Keep [0, b].
+    vec4 p01 = mix(c0, c1, b), p12 = mix(c1, c2, b), p23 = mix(c2, c3, b);
+    vec4 p012 = mix(p01, p12, b), p123 = mix(p12, p23, b);
+    c1 = p01;
+    c2 = p012;
+    c3 = mix(p012, p123, b);
+    // Of that, keep [a / b, 1].
+    float s = b > 0.0 ? a / b : 0.0;
+    p01 = mix(c0, c1, s);
+    p12 = mix(c1, c2, s);
+    p23 = mix(c2, c3, s);
+    p012 = mix(p01, p12, s);
+    p123 = mix(p12, p23, s);
+    c0 = mix(p012, p123, s);
+    c1 = p123;
+    c2 = p23;
+}
+
+// net[4i + j] restricted to the box (u0, u1, v0, v1).
+void net_restrict(inout vec4 net[16], vec4 box) {
+    for (int i = 0; i < 4; ++i) cubic_restrict(net[4 * i], net[4 * i + 1], net[4 * i + 2], net[4 * i + 3], box.z, box.w);
+    for (int j = 0; j < 4; ++j) cubic_restrict(net[j], net[4 + j], net[8 + j], net[12 + j], box.x, box.y);
+}
+
+// Where the convex hull of the points (k/3, lo[k]) and (k/3, hi[k]) meets the axis e = 0, as
+// an interval of [0, 1] (empty when x > y). The hull meets the axis in the span of all
+// crossings of segments between pairs of its points.
+vec2 hull_axis_interval(vec4 lo, vec4 hi) {
+    vec2 range = vec2(1.0, 0.0);
+    for (int k = 0; k < 8; ++k) {
+        float xk = float(k & 3) / 3.0;
+        float ek = k < 4 ? lo[k & 3] : hi[k & 3];
+        if (ek == 0.0) range = vec2(min(range.x, xk), max(range.y, xk));
+        for (int l = k + 1; l < 8; ++l) {
+            float el = l < 4 ? lo[l & 3] : hi[l & 3];
+            if ((ek < 0.0) == (el < 0.0)) continue;
+            float xl = float(l & 3) / 3.0;
+            float x = xk + (xl - xk) * (ek / (ek - el));
+            range = vec2(min(range.x, x), max(range.y, x));
+        }
+    }
+    return range;
+}
+
+// The sub-interval of [0, 1] in u (along_u) or v that can contain a root, from the signed
+// distances of the projected control points to the line through the origin along `line`.
+vec2 clip_interval(vec4 net[16], vec2 line, bool along_u) {
+    float len = length(line);
+    vec2 n = len > 1e-30 ? vec2(-line.y, line.x) / len : vec2(1.0, 0.0);  // collapsed edge: any line is valid
+    vec4 lo = vec4(INFINITY), hi = vec4(-INFINITY);
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            float e = dot(n, net[4 * i + j].xy);
+            int k = along_u ? i : j;
+            lo[k] = min(lo[k], e);
+            hi[k] = max(hi[k], e);
+        }
+    }
+    return hull_axis_interval(lo, hi);
+}
+
+bool bezier_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit) {
+    uint leaf = prim.data;
+    vec3 o = ray.origin - patch_leaves[leaf].origin.xyz;  // re-origin: small numbers near the patch
+    vec3 d = ray.dir;
+    // Two planes through the ray: n1, n2 perpendicular to d and to each other.
+    vec3 a = abs(d.x) <= abs(d.y) && abs(d.x) <= abs(d.z) ? vec3(1.0, 0.0, 0.0)
+           : (abs(d.y) <= abs(d.z) ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
+    vec3 n1 = normalize(cross(d, a));
+    vec3 n2 = cross(d, n1);
+    // Homogeneous net: (w * plane distances, w * ray distance, w). De Casteljau on homogeneous
+    // points is exact for rational patches, and since w > 0 the numerators' signs decide.
+    vec4 base[16];
+    for (int k = 0; k < 16; ++k) {
+        vec4 p = patch_leaves[leaf].points[k];
+        vec3 q = p.xyz - o;
+        base[k] = p.w * vec4(dot(n1, q), dot(n2, q), dot(d, q), 1.0);
+    }
+
+    vec4 stack[BEZIER_STACK];
+    int sp = 0;
+    vec4 box = vec4(0.0, 1.0, 0.0, 1.0);
+    float best = t_max;
+    bool found = false;
+    for (int step = 0; step < BEZIER_MAX_STEPS; ++step) {
+        vec4 net[16] = base;
+        net_restrict(net, box);
+        vec2 dlo = vec2(INFINITY), dhi = vec2(-INFINITY);
+        float tlo = INFINITY, thi = -INFINITY;
+        for (int k = 0; k < 16; ++k) {
+            dlo = min(dlo, net[k].xy);
+            dhi = max(dhi, net[k].xy);
+            float t = net[k].z / net[k].w;
+            tlo = min(tlo, t);
+            thi = max(thi, t);
+        }
+        bool done = any(greaterThan(dlo, vec2(0.0))) || any(lessThan(dhi, vec2(0.0))) || tlo >= best || thi <= t_min;
+        if (!done && box.y - box.x < BEZIER_EPS && box.w - box.z < BEZIER_EPS) {
+            // Converged: the corners of the restricted net lie on the surface.
+            float t = 0.25 * (net[0].z / net[0].w + net[3].z / net[3].w + net[12].z / net[12].w + net[15].z / net[15].w);
+            if (t > t_min && t < best) {
+                best = t;
+                uv_hit = vec2(0.5 * (box.x + box.y), 0.5 * (box.z + box.w));
+                found = true;
+            }
+            done = true;
+        }
+        if (!done) {
+            // u-clip against the line along the v-direction, v-clip against the u-direction.
+            vec2 v_dir = (net[3].xy - net[0].xy) + (net[15].xy - net[12].xy);
+            vec2 u_dir = (net[12].xy - net[0].xy) + (net[15].xy - net[3].xy);
+            vec2 cu = clip_interval(net, v_dir, true);
+            vec2 cv = clip_interval(net, u_dir, false);
+            if (cu.x > cu.y || cv.x > cv.y) {
+                done = true;
+            } else {
+                // A little slack so float rounding in the hull cannot cut off a root on its edge.
+                cu = clamp(cu + vec2(-1e-4, 1e-4), 0.0, 1.0);
+                cv = clamp(cv + vec2(-1e-4, 1e-4), 0.0, 1.0);
+                vec2 w = vec2(box.y - box.x, box.w - box.z);
+                vec4 clipped = vec4(box.x + w.x * cu.x, box.x + w.x * cu.y, box.z + w.y * cv.x, box.z + w.y * cv.y);
+                vec2 nw = vec2(clipped.y - clipped.x, clipped.w - clipped.z);
+                if (nw.x > 0.8 * w.x && nw.y > 0.8 * w.y) {
+                    // Clipping stalled (several roots, or a tangent): split the wider side.
+                    if (sp < BEZIER_STACK) {
+                        if (nw.x >= nw.y) {
+                            float m = 0.5 * (clipped.x + clipped.y);
+                            stack[sp++] = vec4(m, clipped.y, clipped.z, clipped.w);
+                            clipped.y = m;
+                        } else {
+                            float m = 0.5 * (clipped.z + clipped.w);
+                            stack[sp++] = vec4(clipped.x, clipped.y, m, clipped.w);
+                            clipped.w = m;
+                        }
+                    }
+                }
+                box = clipped;
+            }
+        }
+        if (done) {
+            if (sp == 0) break;
+            box = stack[--sp];
+        }
+    }
+    if (!found) return false;
+    t_hit = best;
+    return true;
+}
+
+// S, dS/du, dS/dv of the leaf at its own (u, v), relative to its origin (rational-correct).
+void bezier_leaf_eval(uint leaf, vec2 uv, out vec3 P, out vec3 Pu, out vec3 Pv) {
+    float u = uv.x, v = uv.y, iu = 1.0 - u, iv = 1.0 - v;
+    vec4 bu = vec4(iu * iu * iu, 3.0 * u * iu * iu, 3.0 * u * u * iu, u * u * u);
+    vec4 bv = vec4(iv * iv * iv, 3.0 * v * iv * iv, 3.0 * v * v * iv, v * v * v);
+    vec4 du = 3.0 * vec4(-iu * iu, iu * iu - 2.0 * u * iu, 2.0 * u * iu - u * u, u * u);
+    vec4 dv = 3.0 * vec4(-iv * iv, iv * iv - 2.0 * v * iv, 2.0 * v * iv - v * v, v * v);
+    vec4 h = vec4(0.0), hu = vec4(0.0), hv = vec4(0.0);
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+            vec4 p = patch_leaves[leaf].points[4 * i + j];
+            vec4 hp = vec4(p.xyz * p.w, p.w);
+            h += bu[i] * bv[j] * hp;
+            hu += du[i] * bv[j] * hp;
+            hv += bu[i] * dv[j] * hp;
+        }
+    }
+    P = h.xyz / h.w;
+    Pu = (hu.xyz - P * hu.w) / h.w;
+    Pv = (hv.xyz - P * hv.w) / h.w;
+}
+
+// The unit normal at a hit. Where the patch degenerates (an edge collapsed to a point, as at
+// the teapot's lid apex) Su x Sv vanishes; the limit normal is taken slightly inside the leaf.
+vec3 bezier_normal(Primitive prim, vec2 uv) {
+    vec3 P, Pu, Pv;
+    bezier_leaf_eval(prim.data, uv, P, Pu, Pv);
+    vec3 n = cross(Pu, Pv);
+    float scale = dot(Pu, Pu) + dot(Pv, Pv);
+    if (dot(n, n) <= 1e-12 * scale * scale) {
+        bezier_leaf_eval(prim.data, mix(uv, vec2(0.5), 1e-3), P, Pu, Pv);
+        n = cross(Pu, Pv);
+    }
+    float len = length(n);
+    return len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
+}
