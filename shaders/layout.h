@@ -29,6 +29,10 @@ LANCER_CONST BINDING_NODES = 5;       // buffer BvhNode[]
 LANCER_CONST BINDING_PATCHES = 6;     // buffer PatchLeaf[]
 LANCER_CONST BINDING_SURFACES = 7;    // buffer SurfaceInfo[]
 
+// Specialization constant ids (scene.glsl).
+LANCER_CONST SPEC_HAS_BEZIER = 0;
+LANCER_CONST SPEC_HAS_BVH = 1;
+
 // Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
 LANCER_CONST WORKGROUP_X = 8;
 LANCER_CONST WORKGROUP_Y = 8;

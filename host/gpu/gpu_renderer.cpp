@@ -34,7 +34,7 @@ bool upload(const gpu::Context& context, gpu::Buffer& buffer, const std::vector<
 GpuRenderer::GpuRenderer(const gpu::ContextOptions& options)
     : context_(std::make_unique<gpu::Context>(options)),
       layout_(std::make_unique<gpu::TraceLayout>(*context_)),
-      pipeline_(std::make_unique<gpu::ComputePipeline>(*context_, *layout_, gpu::embedded_trace_spirv())) {
+      spirv_(gpu::embedded_trace_spirv()) {
     VkDevice device = context_->device();
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7}};
@@ -77,15 +77,24 @@ GpuRenderer::~GpuRenderer() {
     materials_ = {};
     primitives_ = {};
     frame_ = {};
-    pipeline_.reset();
+    pipelines_.clear();
     layout_.reset();
 }
 
 void GpuRenderer::use_shaders(const gpu::ShaderTree& tree) {
     std::vector<std::uint32_t> spirv = gpu::compile_compute(tree, gpu::kTraceShader);
-    auto pipeline = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv);
-    VK_CHECK(vkDeviceWaitIdle(context_->device()));  // the old pipeline may still be in use
-    pipeline_ = std::move(pipeline);
+    // Prove the new code builds before dropping the old pipelines (the common variant is cheap).
+    auto probe = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv, gpu::PipelineVariant{});
+    VK_CHECK(vkDeviceWaitIdle(context_->device()));  // old pipelines may still be in use
+    pipelines_.clear();
+    pipelines_[gpu::PipelineVariant{}] = std::move(probe);
+    spirv_ = std::move(spirv);
+}
+
+void GpuRenderer::select_pipeline(const gpu::PipelineVariant& variant) {
+    auto& slot = pipelines_[variant];
+    if (!slot) slot = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv_, variant);
+    pipeline_ = slot.get();
 }
 
 std::string GpuRenderer::description() const {
@@ -93,7 +102,7 @@ std::string GpuRenderer::description() const {
     return "gpu: " + info.name + " (" + info.type + ", " + info.driver + ")";
 }
 
-void GpuRenderer::upload_scene(const Scene& scene) {
+gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
     gpu::PackedScene packed = gpu::pack_scene(scene);
     constexpr VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     descriptors_dirty_ |= upload(*context_, primitives_, packed.primitives, storage);
@@ -104,6 +113,7 @@ void GpuRenderer::upload_scene(const Scene& scene) {
     descriptors_dirty_ |= upload(*context_, lights_, packed.lights, storage);
     gpu::FrameParams frame = gpu::pack_frame(scene, packed);
     frame_.write(&frame, sizeof(frame));
+    return gpu::PipelineVariant{!packed.patches.empty(), !packed.nodes.empty()};
 }
 
 void GpuRenderer::ensure_output(std::size_t bytes) {
@@ -183,7 +193,7 @@ FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     std::size_t rows = std::clamp<std::size_t>(kBandPixels / width, gpu::WORKGROUP_Y, height);
     rows = std::min(rows, max_rows);
 
-    upload_scene(scene);
+    select_pipeline(upload_scene(scene));
     ensure_output(rows * row_bytes);
     update_descriptors();
 

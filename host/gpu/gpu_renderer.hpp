@@ -1,7 +1,9 @@
 #pragma once
 // The Vulkan compute backend. Device, pipeline and buffers live as long as the renderer, so a
 // sequence of renders (animation frames) pays the start-up cost once.
+#include <map>
 #include <memory>
+#include <vector>
 
 #include "gpu/buffer.hpp"
 #include "gpu/context.hpp"
@@ -27,14 +29,19 @@ public:
     void use_shaders(const gpu::ShaderTree& tree);
 
 private:
-    void upload_scene(const Scene& scene);
+    // Returns the pipeline variant the scene needs.
+    gpu::PipelineVariant upload_scene(const Scene& scene);
+    void select_pipeline(const gpu::PipelineVariant& variant);
     void ensure_output(std::size_t bytes);
     void update_descriptors();
     void dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, double done, const ProgressFn& progress);
 
     std::unique_ptr<gpu::Context> context_;
     std::unique_ptr<gpu::TraceLayout> layout_;
-    std::unique_ptr<gpu::ComputePipeline> pipeline_;
+    // The tracer's SPIR-V, and the pipelines built from it so far, one per variant used.
+    std::vector<std::uint32_t> spirv_;
+    std::map<gpu::PipelineVariant, std::unique_ptr<gpu::ComputePipeline>> pipelines_;
+    gpu::ComputePipeline* pipeline_ = nullptr;  // the one for the current render
     gpu::Buffer frame_, primitives_, nodes_, patches_, surfaces_, materials_, lights_, output_;
     VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;

@@ -55,8 +55,17 @@ void TraceLayout::release() noexcept {
 }
 
 ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layout,
-                                 const std::vector<std::uint32_t>& spirv)
+                                 const std::vector<std::uint32_t>& spirv, const PipelineVariant& variant)
     : device_(context.device()) {
+    const VkBool32 values[] = {variant.has_bezier ? VK_TRUE : VK_FALSE, variant.has_bvh ? VK_TRUE : VK_FALSE};
+    const VkSpecializationMapEntry entries[] = {{SPEC_HAS_BEZIER, 0, sizeof(VkBool32)},
+                                                {SPEC_HAS_BVH, sizeof(VkBool32), sizeof(VkBool32)}};
+    VkSpecializationInfo specialization{};
+    specialization.mapEntryCount = 2;
+    specialization.pMapEntries = entries;
+    specialization.dataSize = sizeof(values);
+    specialization.pData = values;
+
     VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     module_info.codeSize = spirv.size() * sizeof(std::uint32_t);
     module_info.pCode = spirv.data();
@@ -68,6 +77,7 @@ ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layo
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     info.stage.module = module;
     info.stage.pName = "main";
+    info.stage.pSpecializationInfo = &specialization;
     info.layout = layout.pipeline_layout();
     VkResult result = vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
     vkDestroyShaderModule(device_, module, nullptr);

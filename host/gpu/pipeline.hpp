@@ -27,9 +27,18 @@ private:
     VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
 };
 
+// Which optional shape families a pipeline is specialised for (the shader's specialization
+// constants; see shaders/scene.glsl). Code for families a scene lacks is compiled out.
+struct PipelineVariant {
+    bool has_bezier = false;
+    bool has_bvh = false;
+    auto operator<=>(const PipelineVariant&) const = default;
+};
+
 class ComputePipeline {
 public:
-    ComputePipeline(const Context& context, const TraceLayout& layout, const std::vector<std::uint32_t>& spirv);
+    ComputePipeline(const Context& context, const TraceLayout& layout, const std::vector<std::uint32_t>& spirv,
+                    const PipelineVariant& variant);
     ~ComputePipeline();
     ComputePipeline(const ComputePipeline&) = delete;
     ComputePipeline& operator=(const ComputePipeline&) = delete;
