@@ -161,6 +161,8 @@ const toml::array* TableReader::array(std::string_view key) {
     return node->as_array();
 }
 
+const toml::node* TableReader::node(std::string_view key) { return get(key, false); }
+
 void TableReader::accept(std::string_view key) { known_.emplace(key); }
 
 void TableReader::finish() const {

@@ -32,6 +32,9 @@ public:
     const toml::table* table(std::string_view key);
     const toml::array* array(std::string_view key);
 
+    // The raw node of a key of several possible types (nullptr when absent), marked as known.
+    const toml::node* node(std::string_view key);
+
     // Marks a key as known without reading it (for keys consumed elsewhere, such as "type").
     void accept(std::string_view key);
     // Reports the first key that no getter asked for.
