@@ -32,6 +32,7 @@ LANCER_CONST BINDING_SURFACES = 7;    // buffer SurfaceInfo[]
 // Specialization constant ids (scene.glsl).
 LANCER_CONST SPEC_HAS_BEZIER = 0;
 LANCER_CONST SPEC_HAS_BVH = 1;
+LANCER_CONST SPEC_OUTPUT_HITS = 2;  // debug/test variant: write first hits instead of colours
 
 // Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
 LANCER_CONST WORKGROUP_X = 8;
@@ -65,7 +66,7 @@ struct Primitive {
 // world origin.
 struct PatchLeaf {
     vec4 points[16];  // xyz = control point - origin, w = weight (1 for polynomial patches); row-major, i along u
-    vec4 origin;      // xyz
+    vec4 origin;      // xyz; w = index of the patch within its surface (for tests and texture lookups)
     vec4 domain;      // (u0, u1, v0, v1): where this leaf lies in its patch's parameter square
 };
 

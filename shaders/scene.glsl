@@ -30,7 +30,7 @@ bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out floa
     switch (p.type) {
         case SHAPE_SPHERE: return sphere_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_PLANE: return plane_intersect(p, ray, t_min, t_max, t_hit);
-        case SHAPE_RECTANGLE: return rectangle_intersect(p, ray, t_min, t_max, t_hit);
+        case SHAPE_RECTANGLE: return rectangle_intersect(p, ray, t_min, t_max, t_hit, uv);
         case SHAPE_BOX: return box_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_BEZIER: return SCENE_HAS_BEZIER && bezier_intersect(p, ray, t_min, t_max, t_hit, uv);
 #if LANCER_PARAMETRIC_SURFACES
@@ -157,6 +157,23 @@ bool closest_hit(Ray ray, float t_min, out Hit hit) {
     hit.uv = uv;
     hit.normal = primitive_normal(prim, ray.origin + hit.t * ray.dir, uv);
     return true;
+}
+
+// The hit's parameters on its whole surface (a Bezier leaf's are mapped to its patch's).
+vec2 surface_uv(Hit hit) {
+    Primitive prim = primitives[hit.primitive];
+    if (SCENE_HAS_BEZIER && prim.type == SHAPE_BEZIER) {
+        vec4 dom = patch_leaves[prim.data].domain;
+        return vec2(mix(dom.x, dom.y, hit.uv.x), mix(dom.z, dom.w, hit.uv.y));
+    }
+    return hit.uv;
+}
+
+// Which patch of a Bezier surface was hit (-1 for other shapes).
+float surface_part(Hit hit) {
+    Primitive prim = primitives[hit.primitive];
+    if (SCENE_HAS_BEZIER && prim.type == SHAPE_BEZIER) return patch_leaves[prim.data].origin.w;
+    return -1.0;
 }
 
 bool occluded(Ray ray, float t_min, float t_max) {

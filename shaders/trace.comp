@@ -43,21 +43,40 @@ vec3 trace(Ray ray, inout float rays) {
     return color;
 }
 
+// The ray through the continuous image position s (pixels from the top-left corner).
+Ray camera_ray(vec2 s) {
+    float ndc_x = 2.0 * s.x / float(frame.width) - 1.0;
+    float ndc_y = 1.0 - 2.0 * s.y / float(frame.height);
+    return Ray(frame.eye.xyz, normalize(frame.forward.xyz + ndc_x * frame.right.xyz + ndc_y * frame.up.xyz));
+}
+
+// Test variant: the first hit of the ray through the pixel's centre, as (t, u, v, part):
+// t < 0 for a miss; (u, v) the surface's own parameters; part the patch index for Bezier
+// surfaces, else -1.
+layout(constant_id = SPEC_OUTPUT_HITS) const bool OUTPUT_HITS = false;
+
+vec4 first_hit(vec2 s) {
+    Hit hit;
+    if (!closest_hit(camera_ray(s), 0.0, hit)) return vec4(-1.0, 0.0, 0.0, -1.0);
+    return vec4(hit.t, surface_uv(hit), surface_part(hit));
+}
+
 void main() {
     uvec2 pixel = uvec2(gl_GlobalInvocationID.x, band.y0 + gl_GlobalInvocationID.y);
     if (pixel.x >= frame.width || gl_GlobalInvocationID.y >= band.rows || pixel.y >= frame.height) return;
+    uint out_index = gl_GlobalInvocationID.y * frame.width + pixel.x;
+    if (OUTPUT_HITS) {
+        pixels[out_index] = first_hit(vec2(pixel) + 0.5);
+        return;
+    }
 
     float n = float(frame.samples);
     vec3 sum = vec3(0.0);
     float rays = 0.0;
     for (uint j = 0u; j < frame.samples; ++j) {
         for (uint i = 0u; i < frame.samples; ++i) {
-            vec2 s = vec2(pixel) + (vec2(i, j) + 0.5) / n;
-            float ndc_x = 2.0 * s.x / float(frame.width) - 1.0;
-            float ndc_y = 1.0 - 2.0 * s.y / float(frame.height);
-            vec3 dir = normalize(frame.forward.xyz + ndc_x * frame.right.xyz + ndc_y * frame.up.xyz);
-            sum += trace(Ray(frame.eye.xyz, dir), rays);
+            sum += trace(camera_ray(vec2(pixel) + (vec2(i, j) + 0.5) / n), rays);
         }
     }
-    pixels[gl_GlobalInvocationID.y * frame.width + pixel.x] = vec4(sum / (n * n), rays);
+    pixels[out_index] = vec4(sum / (n * n), rays);
 }

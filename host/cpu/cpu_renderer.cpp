@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -61,6 +62,25 @@ FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     worker();
     for (auto& t : pool) t.join();
     if (cancelled) throw RenderCancelled();
+    return image;
+}
+
+FloatImage CpuRenderer::render_hits(const Scene& scene) {
+    const RenderSettings& rs = scene.render;
+    const cpu::Tracer tracer(scene);
+    const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
+    FloatImage image(rs.width, rs.height);
+    for (int y = 0; y < rs.height; ++y) {
+        for (int x = 0; x < rs.width; ++x) {
+            dvec3 dir = glm::normalize(camera_ray_direction(cam, x + 0.5, y + 0.5, rs.width, rs.height));
+            cpu::Hit hit;
+            if (tracer.closest_hit({cam.eye, dir}, 0.0, std::numeric_limits<double>::infinity(), hit)) {
+                image.at(x, y) = glm::vec4(float(hit.t), float(hit.uv.x), float(hit.uv.y), float(hit.part));
+            } else {
+                image.at(x, y) = glm::vec4(-1.0f, 0.0f, 0.0f, -1.0f);
+            }
+        }
+    }
     return image;
 }
 

@@ -9,6 +9,7 @@ public:
     explicit CpuRenderer(unsigned threads = 0);  // 0: one per hardware thread
     std::string description() const override;
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
+    FloatImage render_hits(const Scene& scene) override;
 
 private:
     unsigned threads_;

@@ -35,6 +35,7 @@ bool Tracer::closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) c
             hit.t = h->t;
             hit.normal = h->normal;
             hit.uv = h->uv;
+            hit.part = h->part;
             hit.object = &object;
         }
     }

@@ -11,6 +11,7 @@ struct Hit {
     double t;
     dvec3 normal;  // unit, not yet facing the ray
     glm::dvec2 uv;
+    int part;  // patch index within a Bezier surface, else -1
     const Object* object;
 };
 

@@ -184,6 +184,12 @@ void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint3
 }
 
 FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
+    return render_with(scene, false, progress);
+}
+
+FloatImage GpuRenderer::render_hits(const Scene& scene) { return render_with(scene, true, {}); }
+
+FloatImage GpuRenderer::render_with(const Scene& scene, bool output_hits, const ProgressFn& progress) {
     const RenderSettings& rs = scene.render;
     const auto width = static_cast<std::uint32_t>(rs.width);
     const auto height = static_cast<std::uint32_t>(rs.height);
@@ -193,7 +199,9 @@ FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     std::size_t rows = std::clamp<std::size_t>(kBandPixels / width, gpu::WORKGROUP_Y, height);
     rows = std::min(rows, max_rows);
 
-    select_pipeline(upload_scene(scene));
+    gpu::PipelineVariant variant = upload_scene(scene);
+    variant.output_hits = output_hits;
+    select_pipeline(variant);
     ensure_output(rows * row_bytes);
     update_descriptors();
 

@@ -20,6 +20,7 @@ public:
 
     std::string description() const override;
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
+    FloatImage render_hits(const Scene& scene) override;
 
     const gpu::Context& context() const { return *context_; }
 
@@ -34,6 +35,7 @@ private:
     void select_pipeline(const gpu::PipelineVariant& variant);
     void ensure_output(std::size_t bytes);
     void update_descriptors();
+    FloatImage render_with(const Scene& scene, bool output_hits, const ProgressFn& progress);
     void dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, double done, const ProgressFn& progress);
 
     std::unique_ptr<gpu::Context> context_;

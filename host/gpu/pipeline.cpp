@@ -57,11 +57,12 @@ void TraceLayout::release() noexcept {
 ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layout,
                                  const std::vector<std::uint32_t>& spirv, const PipelineVariant& variant)
     : device_(context.device()) {
-    const VkBool32 values[] = {variant.has_bezier ? VK_TRUE : VK_FALSE, variant.has_bvh ? VK_TRUE : VK_FALSE};
+    const VkBool32 values[] = {variant.has_bezier, variant.has_bvh, variant.output_hits};
     const VkSpecializationMapEntry entries[] = {{SPEC_HAS_BEZIER, 0, sizeof(VkBool32)},
-                                                {SPEC_HAS_BVH, sizeof(VkBool32), sizeof(VkBool32)}};
+                                                {SPEC_HAS_BVH, sizeof(VkBool32), sizeof(VkBool32)},
+                                                {SPEC_OUTPUT_HITS, 2 * sizeof(VkBool32), sizeof(VkBool32)}};
     VkSpecializationInfo specialization{};
-    specialization.mapEntryCount = 2;
+    specialization.mapEntryCount = 3;
     specialization.pMapEntries = entries;
     specialization.dataSize = sizeof(values);
     specialization.pData = values;

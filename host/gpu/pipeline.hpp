@@ -32,6 +32,7 @@ private:
 struct PipelineVariant {
     bool has_bezier = false;
     bool has_bvh = false;
+    bool output_hits = false;
     auto operator<=>(const PipelineVariant&) const = default;
 };
 

@@ -25,6 +25,11 @@ public:
     virtual std::string description() const = 0;
     // Renders with scene.render's width, height, samples and max_depth.
     virtual FloatImage render(const Scene& scene, const ProgressFn& progress) = 0;
+
+    // For tests of exactness: per pixel, the first hit of the ray through the pixel's centre as
+    // (t, u, v, part): t < 0 for a miss, (u, v) the surface's own parameters where it has them,
+    // part the index of the patch hit in a Bezier surface (else -1).
+    virtual FloatImage render_hits(const Scene& scene) = 0;
 };
 
 }  // namespace lancer

@@ -1,6 +1,6 @@
 // Ray/parallelogram corner + a*edge_u + b*edge_v, a, b in [0, 1].
 // Twin of host/cpu/shapes/rectangle.cpp. p0 = corner, p1 = edge_u, p2 = edge_v.
-bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out float t_hit) {
+bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv) {
     vec3 eu = r.p1.xyz;
     vec3 ev = r.p2.xyz;
     vec3 n = cross(eu, ev);
@@ -16,6 +16,7 @@ bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out flo
     float b = dot(cross(eu, q), n) / nn;
     if (a < 0.0 || a > 1.0 || b < 0.0 || b > 1.0) return false;
     t_hit = t;
+    uv = vec2(a, b);
     return true;
 }
 

@@ -15,6 +15,7 @@ struct SurfaceHit {
     double t;
     dvec3 normal;
     glm::dvec2 uv{0.0};
+    int part = -1;  // which patch of a Bezier surface
 };
 
 std::optional<SurfaceHit> intersect(const Sphere& s, const Ray& ray, double t_min, double t_max);
