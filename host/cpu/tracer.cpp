@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
+#include "accel/shape_bounds.hpp"
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
@@ -26,10 +28,80 @@ dvec3 pigment_at(const Material& m, const dvec3& p) {
     return parity == 0 ? m.checker->color_a : m.checker->color_b;
 }
 
+Tracer::Tracer(const Scene& scene, Acceleration acceleration) : scene_(scene) {
+    std::vector<Aabb> boxes;
+    for (const Object& object : scene.objects) {
+        std::optional<Aabb> box;
+        if (acceleration == Acceleration::Bvh) box = shape_bounds(object.shape);
+        if (box) {
+            bounded_.push_back(&object);
+            boxes.push_back(*box);
+        } else {
+            unbounded_.push_back(&object);
+        }
+    }
+    Bvh bvh = build_bvh(boxes);
+    std::vector<const Object*> ordered;
+    for (std::uint32_t i : bvh.order) ordered.push_back(bounded_[i]);
+    bounded_ = std::move(ordered);
+    nodes_ = std::move(bvh.nodes);
+}
+
+namespace {
+
+// Entry distance of the ray into the box within [0, t_max], or nothing.
+std::optional<double> box_entry(const Aabb& b, const Ray& ray, const dvec3& inv_dir, double t_max) {
+    double enter = 0.0, leave = t_max;
+    for (int a = 0; a < 3; ++a) {
+        double t0 = (b.lo[a] - ray.origin[a]) * inv_dir[a];
+        double t1 = (b.hi[a] - ray.origin[a]) * inv_dir[a];
+        if (std::isnan(t0) || std::isnan(t1)) continue;  // origin on a slab plane of a parallel ray
+        if (t0 > t1) std::swap(t0, t1);
+        enter = std::max(enter, t0);
+        leave = std::min(leave, t1);
+    }
+    if (enter > leave) return std::nullopt;
+    return enter;
+}
+
+}  // namespace
+
+template <typename Visit, typename TMax>
+void Tracer::for_each_candidate(const Ray& ray, TMax t_max, Visit visit) const {
+    for (const Object* object : unbounded_)
+        if (!visit(*object)) return;
+    if (nodes_.empty()) return;
+    dvec3 inv_dir = 1.0 / ray.dir;
+    if (!box_entry(nodes_[0].box, ray, inv_dir, t_max())) return;
+    std::vector<std::pair<std::uint32_t, double>> stack;
+    stack.reserve(64);
+    stack.emplace_back(0u, 0.0);
+    while (!stack.empty()) {
+        auto [index, entry] = stack.back();
+        stack.pop_back();
+        if (entry > t_max()) continue;
+        const BvhNode& node = nodes_[index];
+        if (node.leaf()) {
+            for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
+                if (!visit(*bounded_[i])) return;
+            continue;
+        }
+        auto near_t = box_entry(nodes_[node.first].box, ray, inv_dir, t_max());
+        auto far_t = box_entry(nodes_[node.first + 1].box, ray, inv_dir, t_max());
+        std::uint32_t near_child = node.first, far_child = node.first + 1;
+        if (far_t && (!near_t || *far_t < *near_t)) {
+            std::swap(near_t, far_t);
+            std::swap(near_child, far_child);
+        }
+        if (far_t) stack.emplace_back(far_child, *far_t);
+        if (near_t) stack.emplace_back(near_child, *near_t);  // popped first
+    }
+}
+
 bool Tracer::closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) const {
     hit.object = nullptr;
     hit.t = t_max;
-    for (const Object& object : scene_.objects) {
+    for_each_candidate(ray, [&] { return hit.t; }, [&](const Object& object) {
         auto h = std::visit([&](const auto& shape) { return intersect(shape, ray, t_min, hit.t); }, object.shape);
         if (h) {
             hit.t = h->t;
@@ -38,16 +110,19 @@ bool Tracer::closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) c
             hit.part = h->part;
             hit.object = &object;
         }
-    }
+        return true;
+    });
     return hit.object != nullptr;
 }
 
 bool Tracer::occluded(const Ray& ray, double t_min, double t_max) const {
-    for (const Object& object : scene_.objects) {
+    bool blocked = false;
+    for_each_candidate(ray, [&] { return t_max; }, [&](const Object& object) {
         auto h = std::visit([&](const auto& shape) { return intersect(shape, ray, t_min, t_max); }, object.shape);
-        if (h) return true;
-    }
-    return false;
+        blocked = h.has_value();
+        return !blocked;
+    });
+    return blocked;
 }
 
 dvec3 Tracer::shade_local(const Material& m, const dvec3& p, const dvec3& n, const dvec3& view_dir,

@@ -3,7 +3,11 @@
 // precision, sharing the scene model but none of the shader's code.
 #include <glm/vec2.hpp>
 
+#include <vector>
+
+#include "accel/bvh.hpp"
 #include "cpu/ray.hpp"
+#include "render/renderer.hpp"
 
 namespace lancer::cpu {
 
@@ -17,7 +21,7 @@ struct Hit {
 
 class Tracer {
 public:
-    explicit Tracer(const Scene& scene) : scene_(scene) {}
+    explicit Tracer(const Scene& scene, Acceleration acceleration = Acceleration::Bvh);
 
     // Colour seen along `ray`, following mirror reflections; adds every ray traced to `rays`.
     dvec3 trace(Ray ray, double& rays) const;
@@ -29,7 +33,15 @@ public:
     dvec3 shade_local(const Material& m, const dvec3& p, const dvec3& n, const dvec3& view_dir, double& rays) const;
 
 private:
+    // Calls visit(object) for every object whose box the ray enters within [0, t_max()], nearest
+    // boxes first; visit returns false to stop. t_max is re-read as hits shrink the interval.
+    template <typename Visit, typename TMax>
+    void for_each_candidate(const Ray& ray, TMax t_max, Visit visit) const;
+
     const Scene& scene_;
+    std::vector<const Object*> unbounded_;  // tested by every ray (planes; everything without a BVH)
+    std::vector<const Object*> bounded_;    // in BVH leaf order
+    std::vector<BvhNode> nodes_;
 };
 
 // The pigment of a material at a point (solid colour or checker).

@@ -31,10 +31,11 @@ bool upload(const gpu::Context& context, gpu::Buffer& buffer, const std::vector<
 
 }  // namespace
 
-GpuRenderer::GpuRenderer(const gpu::ContextOptions& options)
+GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration acceleration)
     : context_(std::make_unique<gpu::Context>(options)),
       layout_(std::make_unique<gpu::TraceLayout>(*context_)),
-      spirv_(gpu::embedded_trace_spirv()) {
+      spirv_(gpu::embedded_trace_spirv()),
+      acceleration_(acceleration) {
     VkDevice device = context_->device();
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7}};
@@ -103,7 +104,7 @@ std::string GpuRenderer::description() const {
 }
 
 gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
-    gpu::PackedScene packed = gpu::pack_scene(scene);
+    gpu::PackedScene packed = gpu::pack_scene(scene, acceleration_);
     constexpr VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     descriptors_dirty_ |= upload(*context_, primitives_, packed.primitives, storage);
     descriptors_dirty_ |= upload(*context_, nodes_, packed.nodes, storage);

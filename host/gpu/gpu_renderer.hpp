@@ -15,7 +15,7 @@ namespace lancer {
 
 class GpuRenderer final : public Renderer {
 public:
-    explicit GpuRenderer(const gpu::ContextOptions& options);
+    explicit GpuRenderer(const gpu::ContextOptions& options, Acceleration acceleration = Acceleration::Bvh);
     ~GpuRenderer() override;
 
     std::string description() const override;
@@ -50,6 +50,7 @@ private:
     VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
     bool descriptors_dirty_ = true;
+    Acceleration acceleration_;
 };
 
 }  // namespace lancer

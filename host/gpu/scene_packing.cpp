@@ -51,7 +51,7 @@ float round_up(double x) {
     return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-PackedScene pack_scene(const Scene& scene) {
+PackedScene pack_scene(const Scene& scene, Acceleration acceleration) {
     PackedScene packed;
     std::vector<Primitive> bounded, unbounded;
     std::vector<Aabb> boxes;
@@ -59,7 +59,7 @@ PackedScene pack_scene(const Scene& scene) {
         const Object& o = scene.objects[i];
         Primitive p = std::visit(PrimitivePacker{o.material, static_cast<uint>(i)}, o.shape);
         std::optional<Aabb> box;
-        if (scene.objects.size() >= kMinPrimitivesForBvh) box = shape_bounds(o.shape);
+        if (acceleration == Acceleration::Bvh && scene.objects.size() >= kMinPrimitivesForBvh) box = shape_bounds(o.shape);
         if (box) {
             bounded.push_back(p);
             boxes.push_back(*box);

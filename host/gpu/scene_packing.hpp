@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gpu/layout.hpp"
+#include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
 namespace lancer::gpu {
@@ -19,7 +20,7 @@ struct PackedScene {
     uint unbounded_count = 0;
 };
 
-PackedScene pack_scene(const Scene& scene);
+PackedScene pack_scene(const Scene& scene, Acceleration acceleration = Acceleration::Bvh);
 FrameParams pack_frame(const Scene& scene, const PackedScene& packed);
 
 // float(x) rounded toward -inf / +inf, so float boxes contain their double originals.

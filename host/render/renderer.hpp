@@ -18,6 +18,10 @@ public:
     RenderCancelled() : std::runtime_error("render cancelled") {}
 };
 
+// How renderers find the objects a ray hits. Brute force tests every object and exists to check
+// the BVH: both must give identical images.
+enum class Acceleration { Bvh, BruteForce };
+
 class Renderer {
 public:
     virtual ~Renderer() = default;

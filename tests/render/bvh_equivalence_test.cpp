@@ -1,0 +1,51 @@
+// The BVH only changes which objects are tested, never the answer: on every scene, each backend
+// renders the same bytes with its BVH as with brute force.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "cpu/cpu_renderer.hpp"
+#include "scene/load_scene.hpp"
+#include "support/test_support.hpp"
+
+namespace lancer {
+namespace {
+
+class BvhEquivalence : public testing::TestWithParam<std::string> {};
+
+Scene small(const std::string& path) {
+    Scene scene = load_scene(path);
+    scene.render.height = std::max(1, scene.render.height * 96 / scene.render.width);
+    scene.render.width = 96;
+    return scene;
+}
+
+TEST_P(BvhEquivalence, CpuBvhMatchesBruteForce) {
+    Scene scene = small(GetParam());
+    Rgb8Image bvh = to_srgb8(CpuRenderer(0, Acceleration::Bvh).render(scene, {}));
+    Rgb8Image brute = to_srgb8(CpuRenderer(0, Acceleration::BruteForce).render(scene, {}));
+    EXPECT_EQ(bvh.bytes, brute.bytes);
+}
+
+TEST_P(BvhEquivalence, GpuBvhMatchesBruteForce) {
+    Scene scene = small(GetParam());
+    Rgb8Image bvh = to_srgb8(test::gpu_renderer().render(scene, {}));
+    static GpuRenderer brute_renderer(gpu::ContextOptions{"", true}, Acceleration::BruteForce);
+    Rgb8Image brute = to_srgb8(brute_renderer.render(scene, {}));
+    EXPECT_EQ(bvh.bytes, brute.bytes);
+}
+
+std::vector<std::string> scene_files() {
+    std::vector<std::string> paths;
+    for (const auto& e : std::filesystem::directory_iterator(test::source_path("scenes")))
+        if (e.path().extension() == ".toml") paths.push_back(e.path().string());
+    std::sort(paths.begin(), paths.end());
+    return paths;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, BvhEquivalence, testing::ValuesIn(scene_files()), [](const auto& info) {
+    return std::filesystem::path(info.param).stem().string();
+});
+
+}  // namespace
+}  // namespace lancer
