@@ -14,6 +14,7 @@ struct Subcommand {
 };
 
 Subcommand add_render_command(CLI::App& parent);
+Subcommand add_watch_command(CLI::App& parent);
 
 int list_devices();
 

@@ -34,6 +34,7 @@ bool upload(const gpu::Context& context, gpu::Buffer& buffer, const std::vector<
 GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration acceleration)
     : context_(std::make_unique<gpu::Context>(options)),
       layout_(std::make_unique<gpu::TraceLayout>(*context_)),
+      base_tree_(gpu::embedded_tree()),
       spirv_(gpu::embedded_trace_spirv()),
       acceleration_(acceleration) {
     VkDevice device = context_->device();
@@ -82,14 +83,43 @@ GpuRenderer::~GpuRenderer() {
     layout_.reset();
 }
 
-void GpuRenderer::use_shaders(const gpu::ShaderTree& tree) {
-    std::vector<std::uint32_t> spirv = gpu::compile_compute(tree, gpu::kTraceShader);
-    // Prove the new code builds before dropping the old pipelines (the common variant is cheap).
+namespace {
+
+// `tree` with surface_functions.glsl replaced by generated code (when there is any).
+gpu::ShaderTree with_surface_code(gpu::ShaderTree tree, const std::string& surface_code) {
+    if (surface_code.empty()) return tree;
+    return [tree = std::move(tree), surface_code](const std::string& name) -> std::optional<std::string> {
+        if (name == "surface_functions.glsl") return surface_code;
+        return tree(name);
+    };
+}
+
+}  // namespace
+
+void GpuRenderer::use_shaders(const gpu::ShaderTree& tree, const std::string& display_root) {
+    std::vector<std::uint32_t> spirv =
+        gpu::compile_compute(with_surface_code(tree, surface_code_), gpu::kTraceShader, {}, display_root);
+    // Prove the new code builds before dropping the old pipelines (the plain variant is cheap).
     auto probe = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv, gpu::PipelineVariant{});
     VK_CHECK(vkDeviceWaitIdle(context_->device()));  // old pipelines may still be in use
     pipelines_.clear();
     pipelines_[gpu::PipelineVariant{}] = std::move(probe);
     spirv_ = std::move(spirv);
+    base_tree_ = tree;
+    base_is_embedded_ = false;
+    display_root_ = display_root;
+}
+
+void GpuRenderer::ensure_program(const std::string& surface_code) {
+    if (surface_code == surface_code_) return;
+    std::vector<std::uint32_t> spirv =
+        surface_code.empty() && base_is_embedded_
+            ? gpu::embedded_trace_spirv()
+            : gpu::compile_compute(with_surface_code(base_tree_, surface_code), gpu::kTraceShader, {}, display_root_);
+    VK_CHECK(vkDeviceWaitIdle(context_->device()));
+    pipelines_.clear();
+    spirv_ = std::move(spirv);
+    surface_code_ = surface_code;
 }
 
 void GpuRenderer::select_pipeline(const gpu::PipelineVariant& variant) {
@@ -202,6 +232,7 @@ FloatImage GpuRenderer::render_with(const Scene& scene, bool output_hits, const 
 
     gpu::PipelineVariant variant = upload_scene(scene);
     variant.output_hits = output_hits;
+    ensure_program("");  // generated code for parametric surfaces comes here
     select_pipeline(variant);
     ensure_output(rows * row_bytes);
     update_descriptors();

@@ -25,13 +25,17 @@ public:
     const gpu::Context& context() const { return *context_; }
 
     // Rebuilds the tracer from GLSL sources at run time (same entry point, same defines as the
-    // embedded SPIR-V). Throws ShaderCompileError and keeps the current pipeline if they do not
-    // compile; on success the next render uses the new pipeline.
-    void use_shaders(const gpu::ShaderTree& tree);
+    // embedded SPIR-V): the hot-reload path. Throws ShaderCompileError and keeps the current
+    // pipelines if they do not compile; on success the next render uses the new code.
+    // `display_root` prefixes file names in compiler messages (the watched directory).
+    void use_shaders(const gpu::ShaderTree& tree, const std::string& display_root = "");
 
 private:
     // Returns the pipeline variant the scene needs.
     gpu::PipelineVariant upload_scene(const Scene& scene);
+    // Makes spirv_ the tracer built from base_tree_ with `surface_code` as surface_functions.glsl
+    // ("" = the file as it is in the tree), compiling only when that changed.
+    void ensure_program(const std::string& surface_code);
     void select_pipeline(const gpu::PipelineVariant& variant);
     void ensure_output(std::size_t bytes);
     void update_descriptors();
@@ -40,7 +44,12 @@ private:
 
     std::unique_ptr<gpu::Context> context_;
     std::unique_ptr<gpu::TraceLayout> layout_;
-    // The tracer's SPIR-V, and the pipelines built from it so far, one per variant used.
+    // Where the tracer's sources come from, the generated surface code compiled in, its SPIR-V,
+    // and the pipelines built from that so far, one per variant used.
+    gpu::ShaderTree base_tree_;
+    bool base_is_embedded_ = true;
+    std::string display_root_;
+    std::string surface_code_;
     std::vector<std::uint32_t> spirv_;
     std::map<gpu::PipelineVariant, std::unique_ptr<gpu::ComputePipeline>> pipelines_;
     gpu::ComputePipeline* pipeline_ = nullptr;  // the one for the current render

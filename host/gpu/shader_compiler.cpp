@@ -61,7 +61,38 @@ struct Compiled {
     std::unique_ptr<glslang::TProgram> program;
 };
 
-Compiled compile(const ShaderTree& tree, const std::string& entry, const std::vector<ShaderDefine>& defines) {
+// glslang says "ERROR: name:12: 'x' : undeclared identifier"; lancer says
+// "root/name:12: error: 'x' : undeclared identifier", the form editors and terminals link.
+std::string format_log(const std::string& log, const std::string& root) {
+    std::istringstream in(log);
+    std::string line, out;
+    while (std::getline(in, line)) {
+        if (line.empty() || line.find("compilation errors.  No code generated") != std::string::npos) continue;
+        for (const char* level : {"ERROR: ", "WARNING: "}) {
+            std::string tag(level);
+            if (line.rfind(tag, 0) != 0) continue;
+            std::string rest = line.substr(tag.size());
+            // rest = "name:line: message" when the error has a location.
+            auto colon = rest.find(':');
+            auto second = colon == std::string::npos ? std::string::npos : rest.find(':', colon + 1);
+            bool located = second != std::string::npos && second > colon + 1 &&
+                           rest.find_first_not_of("0123456789", colon + 1) == second;
+            std::string kind = tag == "ERROR: " ? "error" : "warning";
+            if (located) {
+                std::string prefix = root.empty() ? "" : root + "/";
+                line = prefix + rest.substr(0, second) + ": " + kind + ":" + rest.substr(second + 1);
+            } else {
+                line = kind + ": " + rest;
+            }
+            break;
+        }
+        out += (out.empty() ? "" : "\n") + line;
+    }
+    return out.empty() ? log : out;
+}
+
+Compiled compile(const ShaderTree& tree, const std::string& entry, const std::vector<ShaderDefine>& defines,
+                 const std::string& display_root) {
     initialize_glslang();
     auto source = tree(entry);
     if (!source) throw ShaderCompileError("shader '" + entry + "' not found");
@@ -79,10 +110,10 @@ Compiled compile(const ShaderTree& tree, const std::string& entry, const std::ve
     TreeIncluder includer(tree);
     auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
     if (!c.shader->parse(GetDefaultResources(), 450, false, messages, includer))
-        throw ShaderCompileError(std::string(c.shader->getInfoLog()) + c.shader->getInfoDebugLog());
+        throw ShaderCompileError(format_log(c.shader->getInfoLog(), display_root));
     c.program = std::make_unique<glslang::TProgram>();
     c.program->addShader(c.shader.get());
-    if (!c.program->link(messages)) throw ShaderCompileError(std::string(c.program->getInfoLog()));
+    if (!c.program->link(messages)) throw ShaderCompileError(format_log(c.program->getInfoLog(), display_root));
     return c;
 }
 
@@ -99,8 +130,8 @@ ShaderTree directory_tree(const std::string& root) {
 }
 
 std::vector<std::uint32_t> compile_compute(const ShaderTree& tree, const std::string& entry,
-                                           const std::vector<ShaderDefine>& defines) {
-    Compiled c = compile(tree, entry, defines);
+                                           const std::vector<ShaderDefine>& defines, const std::string& display_root) {
+    Compiled c = compile(tree, entry, defines, display_root);
     std::vector<std::uint32_t> spirv;
     spv::SpvBuildLogger logger;
     glslang::SpvOptions options;
@@ -111,7 +142,7 @@ std::vector<std::uint32_t> compile_compute(const ShaderTree& tree, const std::st
 }
 
 std::vector<ReflectedMember> reflect_block_members(const ShaderTree& tree, const std::string& entry) {
-    Compiled c = compile(tree, entry, {});
+    Compiled c = compile(tree, entry, {}, "");
     c.program->buildReflection(EShReflectionAllBlockVariables | EShReflectionSeparateBuffers);
     std::vector<ReflectedMember> members;
     for (int i = 0; i < c.program->getNumUniformVariables(); ++i) {

@@ -30,9 +30,11 @@ public:
 };
 
 // Compiles `entry` (e.g. "trace.comp") as a Vulkan 1.2 compute shader. Throws ShaderCompileError
-// with glslang's messages ("file:line: error: ...") when it does not compile.
+// when it does not compile, with glslang's messages as "ROOT/file:line: error: ..." lines, file
+// being the (possibly included) file the error is in and ROOT `display_root` when given.
 std::vector<std::uint32_t> compile_compute(const ShaderTree& tree, const std::string& entry,
-                                           const std::vector<ShaderDefine>& defines = {});
+                                           const std::vector<ShaderDefine>& defines = {},
+                                           const std::string& display_root = "");
 
 // One member of a uniform or storage block as glslang lays it out, for layout tests.
 struct ReflectedMember {

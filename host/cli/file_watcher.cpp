@@ -1,0 +1,109 @@
+#include "cli/file_watcher.hpp"
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+
+#include <poll.h>
+#include <sys/inotify.h>
+#include <sys/signalfd.h>
+#include <unistd.h>
+
+#include "core/error.hpp"
+
+namespace lancer {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::uint32_t kEvents = IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE | IN_DELETE | IN_MODIFY | IN_ATTRIB;
+
+bool ends_with_any(const std::string& name, const std::set<std::string>& suffixes) {
+    for (const auto& s : suffixes)
+        if (name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0) return true;
+    return false;
+}
+
+}  // namespace
+
+FileWatcher::FileWatcher() {
+    inotify_fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+    if (inotify_fd_ < 0) throw UserError(std::string("cannot watch files (inotify): ") + std::strerror(errno));
+    sigset_t mask;
+    sigemptyset(&mask);
+    sigaddset(&mask, SIGINT);
+    sigaddset(&mask, SIGTERM);
+    ::sigprocmask(SIG_BLOCK, &mask, nullptr);
+    signal_fd_ = ::signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
+}
+
+FileWatcher::~FileWatcher() {
+    if (inotify_fd_ >= 0) ::close(inotify_fd_);
+    if (signal_fd_ >= 0) ::close(signal_fd_);
+}
+
+void FileWatcher::add_dir(const fs::path& dir) {
+    for (const auto& [wd, path] : dirs_)
+        if (path == dir) return;
+    int wd = ::inotify_add_watch(inotify_fd_, dir.c_str(), kEvents);
+    if (wd < 0) throw UserError("cannot watch '" + dir.string() + "': " + std::strerror(errno));
+    dirs_[wd] = dir;
+}
+
+void FileWatcher::watch_tree(const fs::path& dir, const std::set<std::string>& suffixes) {
+    fs::path root = fs::absolute(dir).lexically_normal();
+    trees_[root] = suffixes;
+    add_dir(root);
+    for (const auto& entry : fs::recursive_directory_iterator(root))
+        if (entry.is_directory()) add_dir(entry.path());
+}
+
+void FileWatcher::watch_file(const fs::path& file) {
+    fs::path path = fs::absolute(file).lexically_normal();
+    files_.insert(path);
+    add_dir(path.parent_path());
+}
+
+void FileWatcher::clear_files() { files_.clear(); }
+
+bool FileWatcher::signal_pending() {
+    if (signalled_) return true;
+    signalfd_siginfo info;
+    if (::read(signal_fd_, &info, sizeof(info)) == static_cast<ssize_t>(sizeof(info))) signalled_ = true;
+    return signalled_;
+}
+
+FileWatcher::Result FileWatcher::wait(std::chrono::milliseconds quiet) {
+    Result result{Wake::Changed, {}};
+    alignas(inotify_event) char buffer[16 * 1024];
+    for (;;) {
+        if (signal_pending()) return {Wake::Signal, {}};
+        pollfd fds[2] = {{inotify_fd_, POLLIN, 0}, {signal_fd_, POLLIN, 0}};
+        // Until something changed, wait indefinitely; then only for the quiet period.
+        int timeout = result.changed.empty() ? -1 : static_cast<int>(quiet.count());
+        int ready = ::poll(fds, 2, timeout);
+        if (ready < 0 && errno == EINTR) continue;
+        if (ready == 0) return result;  // quiet long enough after a change
+        if (fds[1].revents & POLLIN) continue;  // handled by signal_pending() above
+        ssize_t n = ::read(inotify_fd_, buffer, sizeof(buffer));
+        for (ssize_t offset = 0; n > 0 && offset < n;) {
+            auto* event = reinterpret_cast<inotify_event*>(buffer + offset);
+            offset += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+            auto dir = dirs_.find(event->wd);
+            if (dir == dirs_.end() || event->len == 0) continue;
+            fs::path path = dir->second / event->name;
+            if ((event->mask & IN_ISDIR) && (event->mask & (IN_CREATE | IN_MOVED_TO))) {
+                for (const auto& [root, suffixes] : trees_)
+                    if (path.string().rfind(root.string(), 0) == 0) add_dir(path);
+                continue;
+            }
+            bool interesting = files_.count(path) > 0;
+            for (const auto& [root, suffixes] : trees_)
+                if (path.string().rfind(root.string() + "/", 0) == 0 && ends_with_any(path.filename().string(), suffixes))
+                    interesting = true;
+            if (interesting) result.changed.insert(path);
+        }
+    }
+}
+
+}  // namespace lancer

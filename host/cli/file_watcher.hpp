@@ -1,0 +1,50 @@
+#pragma once
+// Waits for files to change, the way editors change them: in several steps (truncate, write,
+// rename over, touch). Directories are watched rather than files, so a file replaced by rename
+// is still seen; bursts of events are merged into one change after a quiet period.
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+
+namespace lancer {
+
+class FileWatcher {
+public:
+    FileWatcher();
+    ~FileWatcher();
+    FileWatcher(const FileWatcher&) = delete;
+    FileWatcher& operator=(const FileWatcher&) = delete;
+
+    // Every file under `dir` (recursively) whose name ends with one of `suffixes`.
+    void watch_tree(const std::filesystem::path& dir, const std::set<std::string>& suffixes);
+    // One file (its directory is watched, events for other names ignored).
+    void watch_file(const std::filesystem::path& file);
+    // Forget the single files (the set a scene references changes when the scene does).
+    void clear_files();
+
+    enum class Wake { Changed, Signal };
+    struct Result {
+        Wake wake;
+        std::set<std::filesystem::path> changed;  // paths of changed watched files
+    };
+    // Blocks until a watched file changed and then no event came for `quiet`, or until
+    // SIGINT/SIGTERM (which this object blocks and turns into Wake::Signal).
+    Result wait(std::chrono::milliseconds quiet);
+
+    // True if SIGINT or SIGTERM arrived (non-blocking; for cancelling a render in progress).
+    bool signal_pending();
+
+private:
+    void add_dir(const std::filesystem::path& dir);
+
+    int inotify_fd_ = -1;
+    int signal_fd_ = -1;
+    bool signalled_ = false;
+    std::map<int, std::filesystem::path> dirs_;  // watch descriptor -> directory
+    std::map<std::filesystem::path, std::set<std::string>> trees_;  // root -> suffixes
+    std::set<std::filesystem::path> files_;
+};
+
+}  // namespace lancer
