@@ -54,8 +54,9 @@ std::size_t resolve_reference(TableReader& t, const toml::table& table, std::str
     if (allow_index && node->is_integer()) {
         std::int64_t index = node->as_integer()->get();
         if (index < 0 || static_cast<std::size_t>(index) >= count) {
-            std::string range = count == 0 ? fmt::format("the scene has no {}s", what)
-                                           : fmt::format("the scene has {} {}s, 0 to {}", count, what, count - 1);
+            std::string range = count == 0   ? fmt::format("the scene has no {}s", what)
+                                : count == 1 ? fmt::format("the scene has one {}, number 0", what)
+                                             : fmt::format("the scene has {} {}s, 0 to {}", count, what, count - 1);
             throw SceneError(at, fmt::format("{} {} does not exist: {}", what, index, range));
         }
         return static_cast<std::size_t>(index);
@@ -177,10 +178,11 @@ std::map<std::string, Track, std::less<>> read_keys(TableReader& t, const std::v
 // Each (light or object, property) may be driven by one animation only.
 class Claims {
 public:
-    void claim(TableReader& t, const std::string& target, const std::string& property) {
-        auto [it, fresh] = claims_.emplace(target + " " + property, t.location());
+    // `key` is the entry's reference to its light or object, where errors point.
+    void claim(TableReader& t, std::string_view key, const std::string& target, const std::string& property) {
+        auto [it, fresh] = claims_.emplace(target + " " + property, t.location(key));
         if (!fresh)
-            throw SceneError(t.location(), fmt::format("{}: the {} of {} is already animated at line {}", t.what(),
+            throw SceneError(t.location(key), fmt::format("{}: the {} of {} is already animated at line {}", t.what(),
                                                        property, target, it->second.line));
     }
 
@@ -241,7 +243,7 @@ void read_animation(TableReader& top, const toml::table& root, Scene& scene) {
     Claims claims;
     for_each_entry(t, "light_orbit", "[[animation.light_orbit]]", [&](TableReader& r, const toml::table& entry) {
         std::size_t light = resolve_reference(r, entry, "light", "light", scene.lights.size(), light_names, true);
-        claims.claim(r, light_label(scene, light), "position");
+        claims.claim(r, "light", light_label(scene, light), "position");
         a.light_orbits.push_back({light, read_orbit(r, dvec3(0.0), scene.lights[light].position, "the light", a.cyclic)});
     });
     for_each_entry(t, "light", "[[animation.light]]", [&](TableReader& r, const toml::table& entry) {
@@ -249,7 +251,7 @@ void read_animation(TableReader& top, const toml::table& root, Scene& scene) {
         auto tracks = read_keys(r, {"position", "color"}, "lights", a.cyclic);
         LightKeys keys{light, {}, {}};
         for (auto& [property, track] : tracks) {
-            claims.claim(r, light_label(scene, light), property);
+            claims.claim(r, "light", light_label(scene, light), property);
             (property == "position" ? keys.position : keys.color) = std::move(track);
         }
         r.finish();
@@ -258,7 +260,7 @@ void read_animation(TableReader& top, const toml::table& root, Scene& scene) {
     for_each_entry(t, "object", "[[animation.object]]", [&](TableReader& r, const toml::table& entry) {
         std::size_t object = resolve_reference(r, entry, "object", "object", scene.objects.size(), object_names, false);
         auto tracks = read_keys(r, {"translate"}, "objects", a.cyclic);
-        claims.claim(r, "object '" + scene.objects[object].name + "'", "translate");
+        claims.claim(r, "object", "object '" + scene.objects[object].name + "'", "translate");
         r.finish();
         a.object_keys.push_back({object, std::move(tracks.at("translate"))});
     });
