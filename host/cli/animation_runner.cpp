@@ -37,7 +37,7 @@ std::string suggest_pattern(const std::string& output, int frames) {
     namespace fs = std::filesystem;
     fs::path p(output);
     std::string ext = p.extension().string().empty() ? ".png" : p.extension().string();
-    fs::path name = p.stem().string() + fmt::format("_%0{}d", frame_number_width(frames)) + ext;
+    fs::path name = p.stem().string() + "_" + frame_field(frames) + ext;
     return (p.parent_path() / name).string();
 }
 

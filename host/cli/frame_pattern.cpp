@@ -90,11 +90,16 @@ int frame_number_width(int frames) {
     return width;
 }
 
+std::string frame_field(int frames) {
+    int width = frame_number_width(frames);
+    return width == 1 ? "%d" : fmt::format("%0{}d", width);
+}
+
 std::string default_frame_pattern(const std::string& scene_path, int frames) {
     std::string stem = std::filesystem::path(scene_path).stem().string();
     std::string escaped;
     for (char c : stem) escaped += c == '%' ? std::string("%%") : std::string(1, c);
-    return fmt::format("{}_%0{}d.png", escaped, frame_number_width(frames));
+    return escaped + "_" + frame_field(frames) + ".png";
 }
 
 FrameRange parse_frame_range(const std::string& text, int frames) {

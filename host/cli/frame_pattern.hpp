@@ -30,6 +30,9 @@ bool has_frame_field(const std::string& text);
 // Digits of the last frame number (119 -> 3), so that frame names sort in order.
 int frame_number_width(int frames);
 
+// "%03d" for 120 frames, "%d" for up to 10.
+std::string frame_field(int frames);
+
 // NAME_%0Nd.png for the scene file NAME.toml, in the current directory.
 std::string default_frame_pattern(const std::string& scene_path, int frames);
 

@@ -45,7 +45,7 @@ TEST(FramePattern, PadWidthIsTheDigitsOfTheLastFrame) {
     EXPECT_EQ(frame_number_width(1000), 3);
     EXPECT_EQ(frame_number_width(1001), 4);
     EXPECT_EQ(default_frame_pattern("scenes/orbit.toml", 120), "orbit_%03d.png");
-    EXPECT_EQ(default_frame_pattern("a%b.toml", 5), "a%%b_%01d.png");
+    EXPECT_EQ(default_frame_pattern("a%b.toml", 5), "a%%b_%d.png");
     EXPECT_EQ(FramePattern::parse(default_frame_pattern("a%b.toml", 5))->path(4), "a%b_4.png");
 }
 
