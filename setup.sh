@@ -20,6 +20,7 @@ packages=(
   libglm-dev libstb-dev liblapacke-dev libopenblas-dev
   libtomlplusplus-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  ffmpeg
 )
 
 missing=()

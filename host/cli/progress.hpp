@@ -1,6 +1,7 @@
 #pragma once
-// Progress on stderr: a live, rewritten line on a terminal; nothing but the summary otherwise
-// (logs and CI get one clean line per render instead of a wall of carriage returns).
+// Progress on stderr. On a terminal: one live, rewritten line. Elsewhere (logs, CI): a still
+// render prints only its summary, and an animation one plain line per finished frame, so logs
+// never fill with carriage returns.
 #include <chrono>
 #include <string>
 
@@ -21,6 +22,52 @@ private:
     bool dirty_ = false;
     int last_percent_ = -1;
     std::chrono::steady_clock::time_point start_;
+};
+
+// The live line of an animation, as a pure function so it can be tested:
+// "frame 3/10 orbit_012.png  45%  0:12 elapsed, ETA 1:05", shortened (the path first) to fit
+// `max_width` columns.
+struct FrameStatus {
+    int index = 1;          // 1-based, among the frames this run renders
+    int count = 1;          // frames this run renders
+    std::string path;       // of the frame being rendered
+    double fraction = 0.0;  // of the current frame
+    double elapsed = 0.0;   // seconds since the first frame started
+    double eta = -1.0;      // seconds left, negative when not yet known
+};
+std::string format_frame_status(const FrameStatus& status, int max_width);
+
+// "0:07", "12:34", "1:02:03".
+std::string format_clock(double seconds);
+
+// Seconds left when `done` of `total` frames are finished and `fraction` of the next, after
+// `elapsed` seconds: the mean time per frame so far times the frames left. -1 before anything
+// is finished, when no estimate can be made.
+double estimate_remaining(double elapsed, int done, double fraction, int total);
+
+class FrameProgress {
+public:
+    FrameProgress(bool quiet, int count);
+    void begin(int frame, const std::string& path);
+    void update(double fraction);
+    // The frame is written: elsewhere than on a terminal this prints its line.
+    void end(double seconds);
+    // A line of its own, e.g. the summary (clears the live line first).
+    void message(const std::string& line);
+
+private:
+    void draw(double fraction);
+
+    bool quiet_;
+    bool terminal_;
+    int count_;
+    int done_ = 0;
+    int frame_ = 0;
+    std::string path_;
+    bool started_ = false;
+    bool dirty_ = false;
+    int last_percent_ = -1;
+    std::chrono::steady_clock::time_point start_, last_draw_;
 };
 
 }  // namespace lancer

@@ -1,13 +1,12 @@
-// `lancer render`: scene file -> PNG.
-#include <chrono>
+// `lancer render`: scene file -> PNG, or an animated scene -> frames (and a video).
 #include <cstdio>
 #include <memory>
 
-#include <fmt/format.h>
-
+#include "cli/animation_runner.hpp"
 #include "cli/commands.hpp"
-#include "cli/progress.hpp"
+#include "cli/frame_pattern.hpp"
 #include "cli/render_options.hpp"
+#include "cli/still_render.hpp"
 #include "gpu/context.hpp"
 
 namespace lancer {
@@ -15,35 +14,17 @@ namespace {
 
 struct RenderCommand {
     RenderOptions options;
+    AnimationOptions animation;
     bool list_devices = false;
 
     int run() const {
         if (list_devices) return lancer::list_devices();
         Scene scene = load_scene_with_overrides(options);
+        if (scene.animation || animation.requested()) return run_animation(options, animation, scene);
         std::string output = output_path(options);
-        check_output_writable(output);
-        std::unique_ptr<Renderer> renderer = make_renderer(options);
-
-        ProgressLine progress(options.quiet);
-        auto start = std::chrono::steady_clock::now();
-        FloatImage image = renderer->render(scene, [&](double f) {
-            progress.update(output, f);
-            return true;
-        });
-        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        write_png(output, to_srgb8(image));
-
-        const RenderSettings& r = scene.render;
-        double rays = image.total_rays();
-        progress.finish(fmt::format("{}: {}x{}, {} rays/pixel, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB",
-                                    output, r.width, r.height, r.samples * r.samples, renderer->description(), seconds,
-                                    rays / seconds / 1e6, rays / 1e6, peak_rss_mib()));
-        renderer.reset();  // tear Vulkan down before counting validation messages
-        if (std::uint32_t n = gpu::validation_message_count()) {
-            std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);
-            return 1;
-        }
-        return 0;
+        if (has_frame_field(output))
+            throw UserError("-o " + output + ": a frame number pattern, but " + options.scene + " has no [animation] table");
+        return render_still(options, scene, output);
     }
 };
 
@@ -51,8 +32,9 @@ struct RenderCommand {
 
 Subcommand add_render_command(CLI::App& parent) {
     auto state = std::make_shared<RenderCommand>();
-    CLI::App* cmd = parent.add_subcommand("render", "Render a scene file to a PNG");
+    CLI::App* cmd = parent.add_subcommand("render", "Render a scene file to a PNG, or an animated scene to frames");
     add_render_options(*cmd, state->options);
+    add_animation_options(*cmd, state->animation);
     cmd->add_flag("--list-devices", state->list_devices, "List the Vulkan devices and exit");
     return {cmd, [state] { return state->run(); }};
 }

@@ -16,7 +16,9 @@ namespace lancer {
 
 void add_render_options(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("scene", o.scene, "Scene file (TOML)")->required();
-    cmd.add_option("-o,--output", o.output, "Output PNG (default: the scene's name with .png, here)");
+    cmd.add_option("-o,--output", o.output,
+                   "Output PNG, or for an animation a frame pattern such as NAME_%03d.png "
+                   "(default: the scene's name, here)");
     cmd.add_option("--width", o.width, "Image width in pixels (overrides [render] width)")
         ->check(CLI::Range(1, limits::kMaxImageSide));
     cmd.add_option("--height", o.height, "Image height in pixels (overrides [render] height)")

@@ -16,19 +16,6 @@ namespace {
 // for minutes, while keeping the per-submit cost (~0.2 ms on lavapipe) negligible.
 constexpr std::size_t kBandPixels = 128 * 1024;
 
-// Grows `buffer` to hold `bytes` (at least one element, since empty buffers are invalid).
-template <typename T>
-bool upload(const gpu::Context& context, gpu::Buffer& buffer, const std::vector<T>& items, VkBufferUsageFlags usage) {
-    VkDeviceSize bytes = std::max<VkDeviceSize>(sizeof(T), items.size() * sizeof(T));
-    bool reallocated = false;
-    if (buffer.size() < bytes) {
-        buffer = gpu::Buffer(context, bytes, usage);
-        reallocated = true;
-    }
-    if (!items.empty()) buffer.write(items.data(), items.size() * sizeof(T));
-    return reallocated;
-}
-
 }  // namespace
 
 GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration acceleration)
@@ -133,18 +120,40 @@ std::string GpuRenderer::description() const {
     return "gpu: " + info.name + " (" + info.type + ", " + info.driver + ")";
 }
 
+// Writes `items` into `buffer` (grown to hold at least one element, since empty buffers are
+// invalid) unless they are byte for byte what it already holds. The structs have no implicit
+// padding (layout.hpp asserts their sizes), so comparing bytes compares values.
+template <typename T>
+void GpuRenderer::upload(gpu::Buffer& buffer, std::vector<T>& shadow, std::vector<T>&& items) {
+    const std::size_t bytes = items.size() * sizeof(T);
+    if (buffer.size() < std::max<VkDeviceSize>(sizeof(T), bytes)) {
+        buffer = gpu::Buffer(*context_, std::max<VkDeviceSize>(sizeof(T), bytes), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        descriptors_dirty_ = true;
+        shadow.clear();
+        shadow.shrink_to_fit();
+    } else if (items.size() == shadow.size() && std::memcmp(items.data(), shadow.data(), bytes) == 0) {
+        last_upload_.bytes_skipped += bytes;
+        return;
+    }
+    if (bytes) buffer.write(items.data(), bytes);
+    last_upload_.bytes_written += bytes;
+    shadow = std::move(items);
+}
+
 gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
+    last_upload_ = {};
     gpu::PackedScene packed = gpu::pack_scene(scene, acceleration_);
-    constexpr VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    descriptors_dirty_ |= upload(*context_, primitives_, packed.primitives, storage);
-    descriptors_dirty_ |= upload(*context_, nodes_, packed.nodes, storage);
-    descriptors_dirty_ |= upload(*context_, patches_, packed.patches, storage);
-    descriptors_dirty_ |= upload(*context_, surfaces_, packed.surfaces, storage);
-    descriptors_dirty_ |= upload(*context_, materials_, packed.materials, storage);
-    descriptors_dirty_ |= upload(*context_, lights_, packed.lights, storage);
     gpu::FrameParams frame = gpu::pack_frame(scene, packed);
+    gpu::PipelineVariant variant{!packed.patches.empty(), !packed.nodes.empty()};
+    upload(primitives_, primitives_shadow_, std::move(packed.primitives));
+    upload(nodes_, nodes_shadow_, std::move(packed.nodes));
+    upload(patches_, patches_shadow_, std::move(packed.patches));
+    upload(surfaces_, surfaces_shadow_, std::move(packed.surfaces));
+    upload(materials_, materials_shadow_, std::move(packed.materials));
+    upload(lights_, lights_shadow_, std::move(packed.lights));
     frame_.write(&frame, sizeof(frame));
-    return gpu::PipelineVariant{!packed.patches.empty(), !packed.nodes.empty()};
+    last_upload_.bytes_written += sizeof(frame);
+    return variant;
 }
 
 void GpuRenderer::ensure_output(std::size_t bytes) {

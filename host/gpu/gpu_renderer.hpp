@@ -1,17 +1,27 @@
 #pragma once
 // The Vulkan compute backend. Device, pipeline and buffers live as long as the renderer, so a
 // sequence of renders (animation frames) pays the start-up cost once.
+#include <cstddef>
 #include <map>
 #include <memory>
 #include <vector>
 
 #include "gpu/buffer.hpp"
 #include "gpu/context.hpp"
+#include "gpu/layout.hpp"
 #include "gpu/pipeline.hpp"
 #include "gpu/shader_compiler.hpp"
 #include "render/renderer.hpp"
 
 namespace lancer {
+
+// What the last render() copied to the GPU. Scene buffers whose packed contents equal what the
+// GPU already holds are skipped, so an animation frame that only moves the camera writes the
+// frame uniform alone, and one that moves lights writes the light buffer too.
+struct UploadStats {
+    std::size_t bytes_written = 0;  // frame uniform included
+    std::size_t bytes_skipped = 0;  // scene buffers left as they were
+};
 
 class GpuRenderer final : public Renderer {
 public:
@@ -23,6 +33,7 @@ public:
     FloatImage render_hits(const Scene& scene) override;
 
     const gpu::Context& context() const { return *context_; }
+    const UploadStats& last_upload() const { return last_upload_; }
 
     // Rebuilds the tracer from GLSL sources at run time (same entry point, same defines as the
     // embedded SPIR-V): the hot-reload path. Throws ShaderCompileError and keeps the current
@@ -33,6 +44,8 @@ public:
 private:
     // Returns the pipeline variant the scene needs.
     gpu::PipelineVariant upload_scene(const Scene& scene);
+    template <typename T>
+    void upload(gpu::Buffer& buffer, std::vector<T>& shadow, std::vector<T>&& items);
     // Makes spirv_ the tracer built from base_tree_ with `surface_code` as surface_functions.glsl
     // ("" = the file as it is in the tree), compiling only when that changed.
     void ensure_program(const std::string& surface_code);
@@ -60,6 +73,15 @@ private:
     VkFence fence_ = VK_NULL_HANDLE;
     bool descriptors_dirty_ = true;
     Acceleration acceleration_;
+    // What each scene buffer holds, kept on the host to compare against (reading mapped GPU
+    // memory back can be very slow on discrete GPUs).
+    std::vector<gpu::Primitive> primitives_shadow_;
+    std::vector<gpu::BvhNode> nodes_shadow_;
+    std::vector<gpu::PatchLeaf> patches_shadow_;
+    std::vector<gpu::SurfaceInfo> surfaces_shadow_;
+    std::vector<gpu::Material> materials_shadow_;
+    std::vector<gpu::Light> lights_shadow_;
+    UploadStats last_upload_;
 };
 
 }  // namespace lancer

@@ -11,6 +11,7 @@
 
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
+#include "scene/parse_animation.hpp"
 #include "scene/parse_shapes.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -65,6 +66,7 @@ PointLight read_light(TableReader& t) {
     PointLight l;
     l.position = t.required_vec3("position");
     l.color = check_color(t, "color", t.vec3("color", l.color));
+    l.name = t.string("name", "");
     t.finish();
     return l;
 }
@@ -115,6 +117,7 @@ Object read_object(TableReader& t, const std::map<std::string, std::uint32_t, st
     o.where = t.location();
     o.shape = reader->second(t);
     o.material = default_material;
+    o.name = t.string("name", "");
     if (t.has("material")) {
         std::string name = t.string("material", "");
         auto found = materials.find(name);
@@ -215,6 +218,7 @@ Scene parse_scene(std::string_view text, const std::string& path) {
             scene.objects.push_back(read_object(o, material_index, default_material));
         });
     }
+    read_animation(top, root, scene);
     top.finish();
     return scene;
 }

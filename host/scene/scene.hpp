@@ -2,6 +2,7 @@
 // The scene model: what a scene file describes, independent of how it is rendered.
 // Both renderers (cpu/, gpu/) read this; it knows about neither of them.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -33,6 +34,7 @@ struct CameraSpec {
 struct PointLight {
     dvec3 position{0.0};
     dvec3 color{1.0};
+    std::string name;  // optional, for [animation] to refer to it
 };
 
 struct Checker {
@@ -82,7 +84,10 @@ struct Object {
     Shape shape;
     std::uint32_t material = 0;  // index into Scene::materials
     SourceLocation where;        // the [[object]] table, for messages
+    std::string name;            // optional, for [animation] to refer to it
 };
+
+struct Animation;  // scene/animation.hpp
 
 struct Scene {
     std::string path;
@@ -92,6 +97,9 @@ struct Scene {
     std::vector<PointLight> lights;
     std::vector<Material> materials;
     std::vector<Object> objects;
+    // Set when the file has an [animation] table; scene_at() (scene/animation.hpp) turns the
+    // scene into the static one of a moment. Renderers ignore it.
+    std::shared_ptr<const Animation> animation;
 };
 
 }  // namespace lancer

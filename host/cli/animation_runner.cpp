@@ -1,0 +1,147 @@
+#include "cli/animation_runner.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <numeric>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cli/frame_pattern.hpp"
+#include "cli/progress.hpp"
+#include "cli/still_render.hpp"
+#include "cli/video.hpp"
+#include "gpu/context.hpp"
+#include "image/png_size.hpp"
+#include "scene/animation.hpp"
+
+namespace lancer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// A frame counts as rendered when its file is a PNG of the requested size. Writes are atomic,
+// so a killed run never leaves a partial frame; a file of another size (the scene or --width
+// changed) is rendered again.
+bool frame_done(const std::string& path, const RenderSettings& r) {
+    auto size = read_png_size(path);
+    return size && size->width == r.width && size->height == r.height;
+}
+
+// "orbit.png" -> "orbit_%03d.png", for the message that asks for a pattern.
+std::string suggest_pattern(const std::string& output, int frames) {
+    namespace fs = std::filesystem;
+    fs::path p(output);
+    std::string ext = p.extension().string().empty() ? ".png" : p.extension().string();
+    fs::path name = p.stem().string() + "_" + frame_field(frames) + ext;
+    return (p.parent_path() / name).string();
+}
+
+void create_frame_directory(const std::string& dir) {
+    if (dir.empty()) return;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw UserError(fmt::format("cannot create the frame directory '{}': {}", dir, ec.message()));
+}
+
+}  // namespace
+
+void add_animation_options(CLI::App& cmd, AnimationOptions& o) {
+    cmd.add_option("--frames", o.frames, "Animated scenes: render frames A-B (or frame N) only, 0-based");
+    cmd.add_flag("--force", o.force, "Animated scenes: render frames again even when their files exist");
+    cmd.add_option("--video", o.video, "Animated scenes: also encode the frames into FILE (.mp4, .webm or .gif) with ffmpeg");
+}
+
+int run_animation(const RenderOptions& options, const AnimationOptions& opts, const Scene& scene) {
+    if (!scene.animation)
+        throw UserError(fmt::format("{} has no [animation] table, so --frames and --video do not apply", options.scene));
+    const Animation& animation = *scene.animation;
+    const RenderSettings& r = scene.render;
+    FrameRange range = opts.frames.empty() ? FrameRange{0, animation.frames - 1}
+                                           : parse_frame_range(opts.frames, animation.frames);
+
+    std::string pattern_text = options.output.empty() ? default_frame_pattern(options.scene, animation.frames) : options.output;
+    std::optional<FramePattern> pattern = FramePattern::parse(pattern_text);
+    if (!pattern) {
+        // A plain name: one still of one frame, e.g. a poster image.
+        if (range.single() && !opts.frames.empty() && opts.video.empty())
+            return render_still(options, scene_at(scene, frame_time(animation, range.first)), options.output);
+        throw UserError(fmt::format("-o {}: an animation needs a frame number in the name, such as {} "
+                                    "(or --frames N for a single frame)",
+                                    options.output, suggest_pattern(options.output, animation.frames)));
+    }
+    if (!opts.video.empty()) {
+        check_video_possible(opts.video);
+        check_output_writable(opts.video);
+    }
+
+    std::vector<int> todo, skipped;
+    for (int k = range.first; k <= range.last; ++k)
+        (opts.force || !frame_done(pattern->path(k), r) ? todo : skipped).push_back(k);
+
+    FrameProgress progress(options.quiet, static_cast<int>(todo.size()));
+    if (!skipped.empty())
+        progress.message(fmt::format("{}: skipping {} finished frame(s): {} (--force renders them again)", pattern->text(),
+                                     skipped.size(), format_frame_list(skipped)));
+
+    if (!todo.empty()) {
+        create_frame_directory(pattern->directory());
+        check_output_writable(pattern->path(todo.front()));
+
+        auto start = Clock::now();
+        std::unique_ptr<Renderer> renderer = make_renderer(options);
+        double startup = seconds_since(start);
+        std::vector<double> times;
+        double rays = 0.0;
+        for (int k : todo) {
+            std::string path = pattern->path(k);
+            Scene frame = scene_at(scene, frame_time(animation, k));
+            progress.begin(k, path);
+            auto frame_start = Clock::now();
+            FloatImage image = renderer->render(frame, [&](double f) {
+                progress.update(f);
+                return true;
+            });
+            write_png(path, to_srgb8(image));
+            times.push_back(seconds_since(frame_start));
+            rays += image.total_rays();
+            progress.end(times.back());
+        }
+        double total = std::accumulate(times.begin(), times.end(), 0.0);
+        double later = times.size() > 1 ? (total - times.front()) / double(times.size() - 1) : times.front();
+        progress.message(fmt::format(
+            "{}: rendered {} frame(s): {}, {}x{}, {} rays/pixel, {}: start-up {:.3f} s, first frame {:.3f} s, "
+            "then {:.3f} s/frame, {:.2f} Mrays/s, peak RSS {} MiB",
+            pattern->text(), todo.size(), format_frame_list(todo), r.width, r.height, r.samples * r.samples,
+            renderer->description(), startup, times.front(), later, rays / total / 1e6, peak_rss_mib()));
+        renderer.reset();  // tear Vulkan down before counting validation messages
+        if (std::uint32_t n = gpu::validation_message_count()) {
+            std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);
+            return 1;
+        }
+    } else {
+        progress.message(fmt::format("{}: nothing to render", pattern->text()));
+    }
+
+    if (!opts.video.empty()) {
+        std::vector<int> missing;
+        for (int k = 0; k < animation.frames; ++k)
+            if (!frame_done(pattern->path(k), r)) missing.push_back(k);
+        if (!missing.empty())
+            throw UserError(fmt::format("cannot make {}: frame(s) {} of {} are missing (render them, e.g. --frames {})",
+                                        opts.video, format_frame_list(missing), pattern->text(),
+                                        missing.size() == 1 ? fmt::format("{}", missing[0])
+                                                            : fmt::format("{}-{}", missing.front(), missing.back())));
+        make_video(pattern->text(), animation.frames, animation.fps, opts.video);
+        progress.message(fmt::format("{}: {} frames at {:g} fps ({:.2f} s){}", opts.video, animation.frames,
+                                     animation.fps, animation.frames / animation.fps,
+                                     animation.cyclic ? ", loops seamlessly" : ""));
+    }
+    return 0;
+}
+
+}  // namespace lancer

@@ -1,0 +1,40 @@
+#include "cli/still_render.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "cli/progress.hpp"
+#include "gpu/context.hpp"
+
+namespace lancer {
+
+int render_still(const RenderOptions& options, const Scene& scene, const std::string& output) {
+    check_output_writable(output);
+    std::unique_ptr<Renderer> renderer = make_renderer(options);
+
+    ProgressLine progress(options.quiet);
+    auto start = std::chrono::steady_clock::now();
+    FloatImage image = renderer->render(scene, [&](double f) {
+        progress.update(output, f);
+        return true;
+    });
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    write_png(output, to_srgb8(image));
+
+    const RenderSettings& r = scene.render;
+    double rays = image.total_rays();
+    progress.finish(fmt::format("{}: {}x{}, {} rays/pixel, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB",
+                                output, r.width, r.height, r.samples * r.samples, renderer->description(), seconds,
+                                rays / seconds / 1e6, rays / 1e6, peak_rss_mib()));
+    renderer.reset();  // tear Vulkan down before counting validation messages
+    if (std::uint32_t n = gpu::validation_message_count()) {
+        std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace lancer

@@ -1,0 +1,13 @@
+#pragma once
+// One static scene -> one PNG, with the progress line and the summary line.
+#include <string>
+
+#include "cli/render_options.hpp"
+
+namespace lancer {
+
+// Renders `scene` (already static: scene_at() for a frame of an animation) to `output`.
+// Returns the exit code: 1 when the Vulkan validation layer reported anything.
+int render_still(const RenderOptions& options, const Scene& scene, const std::string& output);
+
+}  // namespace lancer

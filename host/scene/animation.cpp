@@ -1,0 +1,58 @@
+#include "scene/animation.hpp"
+
+#include <cmath>
+
+#include <glm/common.hpp>
+
+namespace lancer {
+
+dvec3 Orbit::position_at(double time) const {
+    double angle = (start_angle_deg + 360.0 * turns * time) * (M_PI / 180.0);
+    return center + dvec3(std::cos(angle) * radius, height, std::sin(angle) * radius);
+}
+
+double frame_time(const Animation& animation, int frame) {
+    if (animation.cyclic) return double(frame) / double(animation.frames);
+    if (animation.frames < 2) return 0.0;
+    return double(frame) / double(animation.frames - 1);
+}
+
+void translate(Shape& shape, const dvec3& offset) {
+    struct Mover {
+        const dvec3& d;
+        void operator()(Sphere& s) const { s.center += d; }
+        void operator()(Plane& p) const { p.point += d; }
+        void operator()(Rectangle& r) const { r.corner += d; }
+        void operator()(Box& b) const {
+            b.min += d;
+            b.max += d;
+        }
+    };
+    std::visit(Mover{offset}, shape);
+}
+
+Scene scene_at(const Scene& scene, double time) {
+    Scene s = scene;
+    s.animation.reset();
+    if (!scene.animation) return s;
+    const Animation& a = *scene.animation;
+    // Time 1 of a cyclic animation is time 0 exactly, not a full turn that rounds to nearly it.
+    if (a.cyclic) time -= std::floor(time);
+
+    if (a.camera_orbit) {
+        // Only eye and look_at move; the basis (right, true up) is rebuilt from them and the
+        // world's up for each frame, which is what the original project failed to do.
+        s.camera.eye = a.camera_orbit->position_at(time);
+        s.camera.look_at = a.camera_orbit->center;
+    }
+    for (const LightOrbit& o : a.light_orbits) s.lights[o.light].position = o.orbit.position_at(time);
+    for (const LightKeys& k : a.light_keys) {
+        PointLight& light = s.lights[k.light];
+        if (k.position) light.position = sample(*k.position, time, a.cyclic);
+        if (k.color) light.color = glm::max(sample(*k.color, time, a.cyclic), dvec3(0.0));
+    }
+    for (const ObjectKeys& k : a.object_keys) translate(s.objects[k.object].shape, sample(k.translate, time, a.cyclic));
+    return s;
+}
+
+}  // namespace lancer
