@@ -16,6 +16,7 @@
 #include "gpu/context.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "gpu/shader_compiler.hpp"
+#include "scene/animation.hpp"
 
 namespace lancer {
 namespace {
@@ -37,6 +38,7 @@ std::string describe_changes(const std::set<fs::path>& changed) {
 struct WatchCommand {
     RenderOptions options;
     std::string shader_dir;
+    std::optional<int> frame;  // of an animated scene
 
     // The shader directory to watch: --shaders, else ./shaders when it exists (running from the
     // repository), else none (only the scene is watched; the embedded shaders are used).
@@ -66,7 +68,17 @@ struct WatchCommand {
         std::optional<Scene> scene;
         auto load = [&]() -> bool {
             try {
-                scene = load_scene_with_overrides(options);
+                Scene loaded = load_scene_with_overrides(options);
+                if (loaded.animation) {
+                    int n = loaded.animation->frames;
+                    int f = frame.value_or(0);
+                    if (f < 0 || f >= n)
+                        throw UserError(fmt::format("--frame {} is outside the animation's frames 0-{}", f, n - 1));
+                    loaded = scene_at(loaded, frame_time(*loaded.animation, f));
+                } else if (frame) {
+                    throw UserError("--frame: the scene has no [animation]");
+                }
+                scene = std::move(loaded);
                 return true;
             } catch (const UserError& e) {
                 std::fprintf(stderr, "%s\n", format_error(e).c_str());
@@ -142,6 +154,7 @@ Subcommand add_watch_command(CLI::App& parent) {
     add_render_options(*cmd, state->options);
     cmd->add_option("--shaders", state->shader_dir,
                     "Shader directory to compile and watch (default: ./shaders if present, else the built-in shaders)");
+    cmd->add_option("--frame", state->frame, "Frame of an animated scene to preview (default 0)");
     return {cmd, [state] { return state->run(); }};
 }
 

@@ -164,3 +164,36 @@ TEST_F(Watch, InterruptExitsCleanly) {
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+// --frame previews one moment of an animation: the same image `lancer render --frames N` makes.
+TEST(WatchFrame, PreviewsTheRequestedFrameOfAnAnimation) {
+    fs::path dir = fs::path(test::output_dir()) / ("watch-frame-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    write_file(dir / "anim.toml", scene_text("0.5") + R"(
+[animation]
+frames = 8
+[animation.camera_orbit]
+center = [0, 0, 0]
+radius = 6
+height = 1
+)");
+    test::ChildProcess child({"watch", "anim.toml", "-o", "watched.png", "--frame", "3"}, dir.string(),
+                             (dir / "log.txt").string());
+    ASSERT_TRUE(test::ChildProcess::wait_until([&] { return child.log().find("watch: ") != std::string::npos; }))
+        << child.log();
+    child.interrupt();
+    EXPECT_EQ(child.wait_exit(), 0) << child.log();
+    auto r = test::run_lancer("render " + (dir / "anim.toml").string() + " --frames 3 -q -o " + (dir / "rendered.png").string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(read_png((dir / "watched.png").string()).bytes, read_png((dir / "rendered.png").string()).bytes);
+    auto frame0 = test::run_lancer("render " + (dir / "anim.toml").string() + " --frames 0 -q -o " + (dir / "f0.png").string());
+    ASSERT_EQ(frame0.exit_code, 0) << frame0.err;
+    EXPECT_NE(read_png((dir / "watched.png").string()).bytes, read_png((dir / "f0.png").string()).bytes);
+}
+
+}  // namespace
+}  // namespace lancer
