@@ -4,10 +4,12 @@
 // nothing, with the unit geometric normal there (not yet turned toward the ray) and the
 // surface's own (u, v) where it has them.
 #include <optional>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
 #include "cpu/ray.hpp"
+#include "surface/bezier_patch.hpp"
 
 namespace lancer::cpu {
 
@@ -22,5 +24,15 @@ std::optional<SurfaceHit> intersect(const Sphere& s, const Ray& ray, double t_mi
 std::optional<SurfaceHit> intersect(const Plane& p, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Rectangle& r, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, double t_max);
+
+// Bicubic (rational) Bezier patches, exactly, by resultant + generalized eigenvalues (bezier.cpp).
+// The ray's direction need not be unit length: t is in units of it. intersect_all returns every
+// distinct hit in (t_min, t_max), nearest first; intersect the nearest, with uv = (u, v) and the
+// patch's robust unit normal there (surface::unit_normal).
+struct PatchHit {
+    double t, u, v;
+};
+std::vector<PatchHit> intersect_all(const surface::BezierPatch& p, const Ray& ray, double t_min, double t_max);
+std::optional<SurfaceHit> intersect(const surface::BezierPatch& p, const Ray& ray, double t_min, double t_max);
 
 }  // namespace lancer::cpu
