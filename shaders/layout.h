@@ -33,6 +33,7 @@ LANCER_CONST BINDING_SURFACES = 7;    // buffer SurfaceInfo[]
 LANCER_CONST SPEC_HAS_BEZIER = 0;
 LANCER_CONST SPEC_HAS_BVH = 1;
 LANCER_CONST SPEC_OUTPUT_HITS = 2;  // debug/test variant: write first hits instead of colours
+LANCER_CONST SPEC_CHECK_LOOP_LIMIT = 3;  // lavapipe: detect invocations its loop limit cut short (trace.comp)
 
 // Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
 LANCER_CONST WORKGROUP_X = 8;
@@ -123,12 +124,19 @@ struct FrameParams {
     uint light_count;
     uint node_count;       // 0 when nothing is bounded
     uint unbounded_count;  // the last unbounded_count primitives are tested by every ray
+    uint loop_probe;       // always 2: the trip count of trace.comp's loop_limit_reached() probe
+    uint reserved0;
+    uint reserved1;
+    uint reserved2;
 };
 
-// Push constants: which band of rows this dispatch renders.
+// Push constants: which band of rows this dispatch renders, and which of each pixel's N x N
+// samples (row-major in the grid). The first pass of a band writes, later passes add.
 struct BandParams {
     uint y0;
     uint rows;
+    uint sample_first;
+    uint sample_count;
 };
 
 #ifdef __cplusplus
@@ -138,8 +146,8 @@ static_assert(sizeof(Light) == 32);
 static_assert(sizeof(BvhNode) == 48);
 static_assert(sizeof(PatchLeaf) == 288);
 static_assert(sizeof(SurfaceInfo) == 64);
-static_assert(sizeof(FrameParams) == 128);
-static_assert(sizeof(BandParams) == 8);
+static_assert(sizeof(FrameParams) == 144);
+static_assert(sizeof(BandParams) == 16);
 }  // namespace lancer::gpu
 #endif
 

@@ -76,50 +76,67 @@ vec3 safe_inverse(vec3 d) {
 
 const int BVH_STACK_SIZE = 64;  // the builder bounds the tree depth by 60 (host/accel/bvh.cpp)
 
-// Nearest hit in (t_min, t_max) over all primitives; with any_hit, the first hit found.
-bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out float best_t, out uint best_prim,
-                 out vec2 best_uv) {
-    best_t = t_max;
-    best_prim = 0xffffffffu;
-    best_uv = vec2(0.0);
+const uint NO_PRIMITIVE = 0xffffffffu;
+
+// Two hits this close (relative) are one point found twice: neighbouring patch leaves share
+// their edges. The primitive with the smaller stable key wins, so the answer does not depend on
+// the order primitives are tested in (BVH or brute force give identical images).
+const float TIE = 1e-5;
+
+// Object index and shape data: the same whichever order the primitives are stored in.
+uvec2 stable_key(uint i) { return uvec2(primitives[i].object, primitives[i].data); }
+
+struct Nearest {
+    float t;  // nearest hit so far, or t_max
+    uint prim;
+    vec2 uv;
+};
+
+// How far a test must look: up to t_max, or a little past the best hit to see its ties.
+float reach(Nearest best) { return best.prim == NO_PRIMITIVE ? best.t : best.t * (1.0 + TIE); }
+
+// Tests primitive i and keeps it if it is nearer (or an equally near, smaller-keyed twin).
+bool consider(uint i, Ray ray, float t_min, inout Nearest best) {
     float t;
     vec2 uv;
+    if (!primitive_intersect(i, ray, t_min, reach(best), t, uv)) return false;
+    if (best.prim != NO_PRIMITIVE && t >= best.t * (1.0 - TIE)) {
+        uvec2 a = stable_key(i), b = stable_key(best.prim);
+        if (!(a.x < b.x || (a.x == b.x && a.y < b.y))) return false;
+    }
+    best = Nearest(min(t, best.t), i, uv);
+    return true;
+}
 
+// Nearest hit in (t_min, t_max) over all primitives; with any_hit, the first hit found.
+bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out Nearest best) {
+    best = Nearest(t_max, NO_PRIMITIVE, vec2(0.0));
     uint bounded = frame.primitive_count - frame.unbounded_count;
     for (uint i = bounded; i < frame.primitive_count; ++i) {
-        if (primitive_intersect(i, ray, t_min, best_t, t, uv)) {
-            best_t = t;
-            best_prim = i;
-            best_uv = uv;
-            if (any_hit) return true;
-        }
+        if (consider(i, ray, t_min, best) && any_hit) return true;
     }
-    if (!SCENE_HAS_BVH || frame.node_count == 0u) return best_prim != 0xffffffffu;
+    if (!SCENE_HAS_BVH || frame.node_count == 0u) return best.prim != NO_PRIMITIVE;
 
     vec3 inv_dir = safe_inverse(ray.dir);
     uint stack[BVH_STACK_SIZE];
     float stack_t[BVH_STACK_SIZE];
     int sp = 0;
     uint node = 0u;
-    if (box_entry(nodes[0].lo.xyz, nodes[0].hi.xyz, ray.origin, inv_dir, best_t) == INFINITY) {
-        return best_prim != 0xffffffffu;
+    if (box_entry(nodes[0].lo.xyz, nodes[0].hi.xyz, ray.origin, inv_dir, reach(best)) == INFINITY) {
+        return best.prim != NO_PRIMITIVE;
     }
     for (;;) {
         BvhNode n = nodes[node];
         if (n.count > 0u) {
             for (uint i = n.first; i < n.first + n.count; ++i) {
-                if (primitive_intersect(i, ray, t_min, best_t, t, uv)) {
-                    best_t = t;
-                    best_prim = i;
-                    best_uv = uv;
-                    if (any_hit) return true;
-                }
+                if (consider(i, ray, t_min, best) && any_hit) return true;
             }
         } else {
             uint near_child = n.first;
             uint far_child = n.first + 1u;
-            float t_near = box_entry(nodes[near_child].lo.xyz, nodes[near_child].hi.xyz, ray.origin, inv_dir, best_t);
-            float t_far = box_entry(nodes[far_child].lo.xyz, nodes[far_child].hi.xyz, ray.origin, inv_dir, best_t);
+            float limit = reach(best);
+            float t_near = box_entry(nodes[near_child].lo.xyz, nodes[near_child].hi.xyz, ray.origin, inv_dir, limit);
+            float t_far = box_entry(nodes[far_child].lo.xyz, nodes[far_child].hi.xyz, ray.origin, inv_dir, limit);
             if (t_far < t_near) {
                 uint c = near_child; near_child = far_child; far_child = c;
                 float f = t_near; t_near = t_far; t_far = f;
@@ -134,11 +151,11 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out float best
                 continue;
             }
         }
-        // Pop the next subtree that may still hold something nearer than the best hit.
+        // Pop the next subtree that may still hold something as near as the best hit.
         bool found = false;
         while (sp > 0) {
             --sp;
-            if (stack_t[sp] < best_t) {
+            if (stack_t[sp] <= reach(best)) {
                 node = stack[sp];
                 found = true;
                 break;
@@ -146,16 +163,16 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out float best
         }
         if (!found) break;
     }
-    return best_prim != 0xffffffffu;
+    return best.prim != NO_PRIMITIVE;
 }
 
 bool closest_hit(Ray ray, float t_min, out Hit hit) {
-    uint prim;
-    vec2 uv;
-    if (!trace_scene(ray, t_min, INFINITY, false, hit.t, prim, uv)) return false;
-    hit.primitive = prim;
-    hit.uv = uv;
-    hit.normal = primitive_normal(prim, ray.origin + hit.t * ray.dir, uv);
+    Nearest best;
+    if (!trace_scene(ray, t_min, INFINITY, false, best)) return false;
+    hit.t = best.t;
+    hit.primitive = best.prim;
+    hit.uv = best.uv;
+    hit.normal = primitive_normal(best.prim, ray.origin + best.t * ray.dir, best.uv);
     return true;
 }
 
@@ -177,10 +194,8 @@ float surface_part(Hit hit) {
 }
 
 bool occluded(Ray ray, float t_min, float t_max) {
-    float t;
-    uint prim;
-    vec2 uv;
-    return trace_scene(ray, t_min, t_max, true, t, prim, uv);
+    Nearest unused;
+    return trace_scene(ray, t_min, t_max, true, unused);
 }
 
 #endif

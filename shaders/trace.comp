@@ -3,14 +3,16 @@
 // iterative bounce loop (no recursion) with Phong shading, shadow rays and mirror reflection.
 // The CPU reference (host/cpu/) implements the same model independently, in double precision.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 
 #include "layout.h"
 
 layout(local_size_x = WORKGROUP_X, local_size_y = WORKGROUP_Y, local_size_z = 1) in;
 
 layout(push_constant) uniform BandBlock { BandParams band; };
-// rgb = linear colour, a = number of rays traced for this pixel (camera + shadow + reflection).
-layout(std430, set = 0, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 pixels[]; };
+// rgb = the sum of the pixel's samples so far (linear), a = rays traced for it (camera, shadow,
+// reflection), or -1 when an invocation was cut short by the driver (see loop_limit_reached).
+layout(std430, set = 0, binding = BINDING_OUTPUT) buffer OutputBlock { vec4 pixels[]; };
 
 #include "common.glsl"
 #include "scene.glsl"
@@ -61,6 +63,20 @@ vec4 first_hit(vec2 s) {
     return vec4(hit.t, surface_uv(hit), surface_part(hit));
 }
 
+// lavapipe (llvmpipe) ends every loop of an invocation once all its loops together have run
+// 65535 iterations (its LP_MAX_TGSI_LOOP_ITERATIONS; the 8 lanes of a SIMD group share the
+// count): the answers are then silently wrong. After that, any loop stops after its first
+// iteration, so a loop of two iterations that runs only one shows the invocation was cut
+// short. Its trip count comes from a uniform, so it cannot be unrolled away. A marked pixel
+// makes the host render its band again with one sample per invocation (gpu_renderer.cpp).
+layout(constant_id = SPEC_CHECK_LOOP_LIMIT) const bool CHECK_LOOP_LIMIT = false;
+
+bool loop_limit_reached() {
+    uint runs = 0u;
+    for (uint i = 0u; i < frame.loop_probe; ++i) ++runs;
+    return runs < frame.loop_probe;
+}
+
 void main() {
     uvec2 pixel = uvec2(gl_GlobalInvocationID.x, band.y0 + gl_GlobalInvocationID.y);
     if (pixel.x >= frame.width || gl_GlobalInvocationID.y >= band.rows || pixel.y >= frame.height) return;
@@ -70,13 +86,14 @@ void main() {
         return;
     }
 
-    float n = float(frame.samples);
+    uint n = frame.samples;
     vec3 sum = vec3(0.0);
     float rays = 0.0;
-    for (uint j = 0u; j < frame.samples; ++j) {
-        for (uint i = 0u; i < frame.samples; ++i) {
-            sum += trace(camera_ray(vec2(pixel) + (vec2(i, j) + 0.5) / n), rays);
-        }
+    for (uint s = band.sample_first; s < band.sample_first + band.sample_count; ++s) {
+        vec2 offset = (vec2(s % n, s / n) + 0.5) / float(n);
+        sum += trace(camera_ray(vec2(pixel) + offset), rays);
     }
-    pixels[out_index] = vec4(sum / (n * n), rays);
+    vec4 previous = band.sample_first == 0u ? vec4(0.0) : pixels[out_index];
+    bool cut_short = CHECK_LOOP_LIMIT && loop_limit_reached();
+    pixels[out_index] = previous.a < 0.0 || cut_short ? vec4(0.0, 0.0, 0.0, -1.0) : previous + vec4(sum, rays);
 }

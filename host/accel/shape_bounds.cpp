@@ -13,6 +13,15 @@ struct BoundsOf {
         return b;
     }
     std::optional<Aabb> operator()(const Box& b) const { return Aabb{b.min, b.max}; }
+    std::optional<Aabb> operator()(const BezierSurface& s) const {
+        Aabb b;
+        for (const auto& patch : s.patches) {
+            surface::PatchBounds pb = surface::bounds(patch);
+            b.extend(pb.min);
+            b.extend(pb.max);
+        }
+        return b;
+    }
 };
 
 }  // namespace

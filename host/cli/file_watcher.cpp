@@ -1,12 +1,10 @@
 #include "cli/file_watcher.hpp"
 
 #include <cerrno>
-#include <csignal>
 #include <cstring>
 
 #include <poll.h>
 #include <sys/inotify.h>
-#include <sys/signalfd.h>
 #include <unistd.h>
 
 #include "core/error.hpp"
@@ -29,17 +27,10 @@ bool ends_with_any(const std::string& name, const std::set<std::string>& suffixe
 FileWatcher::FileWatcher() {
     inotify_fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
     if (inotify_fd_ < 0) throw UserError(std::string("cannot watch files (inotify): ") + std::strerror(errno));
-    sigset_t mask;
-    sigemptyset(&mask);
-    sigaddset(&mask, SIGINT);
-    sigaddset(&mask, SIGTERM);
-    ::sigprocmask(SIG_BLOCK, &mask, nullptr);
-    signal_fd_ = ::signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
 }
 
 FileWatcher::~FileWatcher() {
     if (inotify_fd_ >= 0) ::close(inotify_fd_);
-    if (signal_fd_ >= 0) ::close(signal_fd_);
 }
 
 void FileWatcher::add_dir(const fs::path& dir) {
@@ -66,19 +57,12 @@ void FileWatcher::watch_file(const fs::path& file) {
 
 void FileWatcher::clear_files() { files_.clear(); }
 
-bool FileWatcher::signal_pending() {
-    if (signalled_) return true;
-    signalfd_siginfo info;
-    if (::read(signal_fd_, &info, sizeof(info)) == static_cast<ssize_t>(sizeof(info))) signalled_ = true;
-    return signalled_;
-}
-
 FileWatcher::Result FileWatcher::wait(std::chrono::milliseconds quiet) {
     Result result{Wake::Changed, {}};
     alignas(inotify_event) char buffer[16 * 1024];
     for (;;) {
         if (signal_pending()) return {Wake::Signal, {}};
-        pollfd fds[2] = {{inotify_fd_, POLLIN, 0}, {signal_fd_, POLLIN, 0}};
+        pollfd fds[2] = {{inotify_fd_, POLLIN, 0}, {interrupts_.fd(), POLLIN, 0}};
         // Until something changed, wait indefinitely; then only for the quiet period.
         int timeout = result.changed.empty() ? -1 : static_cast<int>(quiet.count());
         int ready = ::poll(fds, 2, timeout);

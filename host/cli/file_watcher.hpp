@@ -8,6 +8,8 @@
 #include <set>
 #include <string>
 
+#include "cli/interrupt.hpp"
+
 namespace lancer {
 
 class FileWatcher {
@@ -30,18 +32,17 @@ public:
         std::set<std::filesystem::path> changed;  // paths of changed watched files
     };
     // Blocks until a watched file changed and then no event came for `quiet`, or until
-    // SIGINT/SIGTERM (which this object blocks and turns into Wake::Signal).
+    // SIGINT/SIGTERM (Wake::Signal).
     Result wait(std::chrono::milliseconds quiet);
 
     // True if SIGINT or SIGTERM arrived (non-blocking; for cancelling a render in progress).
-    bool signal_pending();
+    bool signal_pending() const { return interrupts_.requested(); }
 
 private:
     void add_dir(const std::filesystem::path& dir);
 
     int inotify_fd_ = -1;
-    int signal_fd_ = -1;
-    bool signalled_ = false;
+    Interrupts interrupts_;
     std::map<int, std::filesystem::path> dirs_;  // watch descriptor -> directory
     std::map<std::filesystem::path, std::set<std::string>> trees_;  // root -> suffixes
     std::set<std::filesystem::path> files_;

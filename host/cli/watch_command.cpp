@@ -55,9 +55,7 @@ struct WatchCommand {
         std::string output = output_path(options);
         check_output_writable(output);
         std::string shaders = resolve_shader_dir();
-        // First, so SIGINT/SIGTERM are blocked before the driver starts its threads (they inherit
-        // the mask); otherwise Ctrl-C could kill the process in one of them, uncleanly.
-        FileWatcher watcher;
+        FileWatcher watcher;  // also turns Ctrl-C into a clean exit
         auto renderer = make_renderer(options);
         auto* gpu = dynamic_cast<GpuRenderer*>(renderer.get());
         if (!shaders.empty() && !gpu) throw UserError("--shaders needs the gpu backend");

@@ -103,7 +103,7 @@ DeviceInfo describe(VkPhysicalDevice device, std::uint32_t index) {
     vkGetPhysicalDeviceProperties2(device, &props);
     std::string driver_text = driver.driverName;
     if (driver.driverInfo[0]) driver_text += std::string(" ") + driver.driverInfo;
-    return {index, props.properties.deviceName, type_name(props.properties.deviceType), driver_text};
+    return {index, props.properties.deviceName, type_name(props.properties.deviceType), driver_text, driver.driverID};
 }
 
 std::string lowercase(std::string s) {

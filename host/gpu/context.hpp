@@ -15,6 +15,7 @@ struct DeviceInfo {
     std::string name;
     std::string type;  // "discrete GPU", "integrated GPU", "virtual GPU", "CPU", "other"
     std::string driver;
+    VkDriverId driver_id = static_cast<VkDriverId>(0);
 };
 
 struct ContextOptions {

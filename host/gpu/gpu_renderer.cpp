@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstring>
+
+#include <fmt/format.h>
 #include <type_traits>
 
 #include "gpu/embedded_shaders.hpp"
@@ -145,6 +147,7 @@ gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
     gpu::PackedScene packed = gpu::pack_scene(scene, acceleration_);
     gpu::FrameParams frame = gpu::pack_frame(scene, packed);
     gpu::PipelineVariant variant{!packed.patches.empty(), !packed.nodes.empty()};
+    variant.check_loop_limit = context_->info().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
     upload(primitives_, primitives_shadow_, std::move(packed.primitives));
     upload(nodes_, nodes_shadow_, std::move(packed.nodes));
     upload(patches_, patches_shadow_, std::move(packed.patches));
@@ -185,8 +188,8 @@ void GpuRenderer::update_descriptors() {
     descriptors_dirty_ = false;
 }
 
-void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, double done,
-                                const ProgressFn& progress) {
+void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, std::uint32_t samples,
+                                std::uint32_t per_pass, double done, const ProgressFn& progress) {
     VkDevice device = context_->device();
     VK_CHECK(vkResetCommandBuffer(command_buffer_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -195,10 +198,21 @@ void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint3
     vkCmdBindPipeline(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->handle());
     vkCmdBindDescriptorSets(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_->pipeline_layout(), 0, 1,
                             &descriptor_set_, 0, nullptr);
-    gpu::BandParams band{y0, rows};
-    vkCmdPushConstants(command_buffer_, layout_->pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(band), &band);
-    vkCmdDispatch(command_buffer_, (width + gpu::WORKGROUP_X - 1) / gpu::WORKGROUP_X,
-                  (rows + gpu::WORKGROUP_Y - 1) / gpu::WORKGROUP_Y, 1);
+    for (std::uint32_t first = 0; first < samples; first += per_pass) {
+        if (first > 0) {
+            // The next pass adds to what this one wrote.
+            VkMemoryBarrier accumulate{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+            accumulate.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+            accumulate.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+            vkCmdPipelineBarrier(command_buffer_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &accumulate, 0, nullptr, 0, nullptr);
+        }
+        gpu::BandParams band{y0, rows, first, std::min(per_pass, samples - first)};
+        vkCmdPushConstants(command_buffer_, layout_->pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(band),
+                           &band);
+        vkCmdDispatch(command_buffer_, (width + gpu::WORKGROUP_X - 1) / gpu::WORKGROUP_X,
+                      (rows + gpu::WORKGROUP_Y - 1) / gpu::WORKGROUP_Y, 1);
+    }
     // Make the shader's writes visible to the host's read of the mapped output.
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -246,11 +260,34 @@ FloatImage GpuRenderer::render_with(const Scene& scene, bool output_hits, const 
     ensure_output(rows * row_bytes);
     update_descriptors();
 
+    const auto samples = output_hits ? 1u : static_cast<std::uint32_t>(rs.samples * rs.samples);
     FloatImage image(rs.width, rs.height);
     for (std::uint32_t y0 = 0; y0 < height; y0 += static_cast<std::uint32_t>(rows)) {
         auto band_rows = static_cast<std::uint32_t>(std::min<std::size_t>(rows, height - y0));
-        dispatch_band(y0, band_rows, width, double(y0) / height, progress);
-        std::memcpy(&image.pixels[std::size_t(y0) * width], output_.data(), band_rows * row_bytes);
+        const auto* band = static_cast<const gpu::vec4*>(output_.data());
+        const std::size_t band_pixels = std::size_t(band_rows) * width;
+        auto over_budget = [&] {
+            return variant.check_loop_limit && !output_hits &&
+                   std::any_of(band, band + band_pixels, [](const gpu::vec4& p) { return p.a < 0.0f; });
+        };
+        // All of a pixel's samples in one invocation is fastest (lavapipe: ~1.5x one per
+        // invocation); where the driver's loop limit cut that short, one sample per pass.
+        dispatch_band(y0, band_rows, width, samples, samples, double(y0) / height, progress);
+        if (samples > 1 && over_budget()) {
+            ++bands_rerendered_;
+            dispatch_band(y0, band_rows, width, samples, 1, double(y0) / height, progress);
+        }
+        if (over_budget())
+            throw UserError(fmt::format(
+                "a sample of this scene needs more loop iterations than the {} driver allows in one shader "
+                "invocation (65535); render with --backend cpu, or lower max_depth or the number of lights",
+                context_->info().name));
+        gpu::vec4* out = &image.pixels[std::size_t(y0) * width];
+        const float scale = 1.0f / float(samples);
+        for (std::size_t i = 0; i < band_pixels; ++i) {
+            const gpu::vec4& p = band[i];  // sums of samples, and the ray count
+            out[i] = output_hits ? p : gpu::vec4(p.x * scale, p.y * scale, p.z * scale, p.w);
+        }
         if (progress && !progress(double(y0 + band_rows) / height)) throw RenderCancelled();
     }
     return image;

@@ -33,6 +33,10 @@ public:
     FloatImage render_hits(const Scene& scene) override;
 
     const gpu::Context& context() const { return *context_; }
+
+    // Bands rendered again with one sample per invocation because the driver's loop limit cut
+    // the first attempt short (lavapipe; see shaders/trace.comp), since this renderer was made.
+    std::size_t bands_rerendered() const { return bands_rerendered_; }
     const UploadStats& last_upload() const { return last_upload_; }
 
     // Rebuilds the tracer from GLSL sources at run time (same entry point, same defines as the
@@ -53,7 +57,10 @@ private:
     void ensure_output(std::size_t bytes);
     void update_descriptors();
     FloatImage render_with(const Scene& scene, bool output_hits, const ProgressFn& progress);
-    void dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, double done, const ProgressFn& progress);
+    // Renders rows [y0, y0 + rows) into output_: `samples` samples per pixel, `per_pass` of them
+    // per invocation (one dispatch per pass).
+    void dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, std::uint32_t samples,
+                       std::uint32_t per_pass, double done, const ProgressFn& progress);
 
     std::unique_ptr<gpu::Context> context_;
     std::unique_ptr<gpu::TraceLayout> layout_;
@@ -82,6 +89,7 @@ private:
     std::vector<gpu::Material> materials_shadow_;
     std::vector<gpu::Light> lights_shadow_;
     UploadStats last_upload_;
+    std::size_t bands_rerendered_ = 0;
 };
 
 }  // namespace lancer

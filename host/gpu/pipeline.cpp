@@ -57,12 +57,11 @@ void TraceLayout::release() noexcept {
 ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layout,
                                  const std::vector<std::uint32_t>& spirv, const PipelineVariant& variant)
     : device_(context.device()) {
-    const VkBool32 values[] = {variant.has_bezier, variant.has_bvh, variant.output_hits};
-    const VkSpecializationMapEntry entries[] = {{SPEC_HAS_BEZIER, 0, sizeof(VkBool32)},
-                                                {SPEC_HAS_BVH, sizeof(VkBool32), sizeof(VkBool32)},
-                                                {SPEC_OUTPUT_HITS, 2 * sizeof(VkBool32), sizeof(VkBool32)}};
+    const VkBool32 values[] = {variant.has_bezier, variant.has_bvh, variant.output_hits, variant.check_loop_limit};
+    const VkSpecializationMapEntry entries[] = {{SPEC_HAS_BEZIER, 0, 4}, {SPEC_HAS_BVH, 4, 4}, {SPEC_OUTPUT_HITS, 8, 4},
+                                                {SPEC_CHECK_LOOP_LIMIT, 12, 4}};
     VkSpecializationInfo specialization{};
-    specialization.mapEntryCount = 3;
+    specialization.mapEntryCount = 4;
     specialization.pMapEntries = entries;
     specialization.dataSize = sizeof(values);
     specialization.pData = values;

@@ -33,6 +33,7 @@ struct PipelineVariant {
     bool has_bezier = false;
     bool has_bvh = false;
     bool output_hits = false;
+    bool check_loop_limit = false;  // lavapipe; see loop_limit_reached() in shaders/trace.comp
     auto operator<=>(const PipelineVariant&) const = default;
 };
 

@@ -17,15 +17,46 @@ constexpr std::size_t kMinPrimitivesForBvh = 16;
 
 vec4 v4(const dvec3& v, double w = 0.0) { return vec4(float(v.x), float(v.y), float(v.z), float(w)); }
 
+// Turns each object into primitives (one, or many for patch sets), each with its box if bounded.
 struct PrimitivePacker {
-    uint material;
-    uint object;
-    Primitive operator()(const Sphere& s) const { return {SHAPE_SPHERE, material, 0, object, v4(s.center, s.radius), {}, {}}; }
-    Primitive operator()(const Plane& p) const { return {SHAPE_PLANE, material, 0, object, v4(p.point), v4(p.normal), {}}; }
-    Primitive operator()(const Rectangle& r) const {
-        return {SHAPE_RECTANGLE, material, 0, object, v4(r.corner), v4(r.edge_u), v4(r.edge_v)};
+    PackedScene& out;
+    std::vector<std::pair<Primitive, std::optional<Aabb>>>& prims;
+    uint material = 0;
+    uint object = 0;
+
+    void add(Primitive p, std::optional<Aabb> box) { prims.emplace_back(p, box); }
+
+    void operator()(const Sphere& s) {
+        add({SHAPE_SPHERE, material, 0, object, v4(s.center, s.radius), {}, {}}, shape_bounds(s));
     }
-    Primitive operator()(const Box& b) const { return {SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}; }
+    void operator()(const Plane& p) { add({SHAPE_PLANE, material, 0, object, v4(p.point), v4(p.normal), {}}, std::nullopt); }
+    void operator()(const Rectangle& r) {
+        add({SHAPE_RECTANGLE, material, 0, object, v4(r.corner), v4(r.edge_u), v4(r.edge_v)}, shape_bounds(r));
+    }
+    void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
+
+    // Each patch becomes 2^n x 2^n leaves (exact sub-patches, de Casteljau in double): smaller
+    // boxes cull more rays before Bezier clipping starts, and clipping converges sooner.
+    void operator()(const BezierSurface& s) {
+        const int n = 1 << s.subdivision;
+        for (std::size_t i = 0; i < s.patches.size(); ++i) {
+            for (int a = 0; a < n; ++a) {
+                for (int b = 0; b < n; ++b) {
+                    double u0 = double(a) / n, u1 = double(a + 1) / n, v0 = double(b) / n, v1 = double(b + 1) / n;
+                    surface::BezierPatch leaf = surface::sub_patch(s.patches[i], u0, u1, v0, v1);
+                    surface::PatchBounds pb = surface::bounds(leaf);
+                    dvec3 origin = 0.5 * (pb.min + pb.max);
+                    PatchLeaf g{};
+                    for (int k = 0; k < 16; ++k) g.points[k] = v4(leaf.points[k] - origin, leaf.weights[k]);
+                    g.origin = v4(origin, double(i));
+                    g.domain = vec4(float(u0), float(u1), float(v0), float(v1));
+                    auto index = static_cast<uint>(out.patches.size());
+                    out.patches.push_back(g);
+                    add({SHAPE_BEZIER, material, index, object, {}, {}, {}}, Aabb{pb.min, pb.max});
+                }
+            }
+        }
+    }
 };
 
 Material pack_material(const lancer::Material& m) {
@@ -53,14 +84,18 @@ float round_up(double x) {
 
 PackedScene pack_scene(const Scene& scene, Acceleration acceleration) {
     PackedScene packed;
-    std::vector<Primitive> bounded, unbounded;
-    std::vector<Aabb> boxes;
+    std::vector<std::pair<Primitive, std::optional<Aabb>>> prims;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
-        Primitive p = std::visit(PrimitivePacker{o.material, static_cast<uint>(i)}, o.shape);
-        std::optional<Aabb> box;
-        if (acceleration == Acceleration::Bvh && scene.objects.size() >= kMinPrimitivesForBvh) box = shape_bounds(o.shape);
-        if (box) {
+        std::visit(PrimitivePacker{packed, prims, o.material, static_cast<uint>(i)}, o.shape);
+    }
+    std::size_t bounded_count = 0;
+    for (const auto& [p, box] : prims) bounded_count += box.has_value();
+    bool use_bvh = acceleration == Acceleration::Bvh && bounded_count >= kMinPrimitivesForBvh;
+    std::vector<Primitive> bounded, unbounded;
+    std::vector<Aabb> boxes;
+    for (const auto& [p, box] : prims) {
+        if (use_bvh && box) {
             bounded.push_back(p);
             boxes.push_back(*box);
         } else {
@@ -102,6 +137,7 @@ FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {
     f.light_count = static_cast<uint>(packed.lights.size());
     f.node_count = static_cast<uint>(packed.nodes.size());
     f.unbounded_count = packed.unbounded_count;
+    f.loop_probe = 2;
     return f;
 }
 

@@ -27,6 +27,10 @@ void translate(Shape& shape, const dvec3& offset) {
             b.min += d;
             b.max += d;
         }
+        void operator()(BezierSurface& b) const {
+            for (auto& patch : b.patches)
+                for (auto& p : patch.points) p += d;
+        }
     };
     std::visit(Mover{offset}, shape);
 }

@@ -216,6 +216,8 @@ Scene parse_scene(std::string_view text, const std::string& path) {
             if (auto type = t["type"].value<std::string>()) what += " ('" + *type + "')";
             TableReader o(t, path, what);
             scene.objects.push_back(read_object(o, material_index, default_material));
+            if (auto* b = std::get_if<BezierSurface>(&scene.objects.back().shape); b && !b->source_file.empty())
+                scene.dependencies.push_back(b->source_file);
         });
     }
     read_animation(top, root, scene);

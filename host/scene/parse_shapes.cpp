@@ -1,5 +1,7 @@
 #include "scene/parse_shapes.hpp"
 
+#include "scene/parse_surfaces.hpp"
+
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -53,6 +55,7 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"plane", read_plane},
         {"rectangle", read_rectangle},
         {"box", read_box},
+        {"bezier", read_bezier},
     };
     return readers;
 }

@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/error.hpp"
+#include "surface/bezier_patch.hpp"
 
 namespace lancer {
 
@@ -78,7 +79,15 @@ struct Box {
     dvec3 max{1.0};
 };
 
-using Shape = std::variant<Sphere, Plane, Rectangle, Box>;
+// A set of bicubic (rational) Bezier patches, in world space (a transform is applied to the
+// control points when the scene is loaded: exact for affine maps).
+struct BezierSurface {
+    std::vector<surface::BezierPatch> patches;
+    int subdivision = 1;      // the GPU splits each patch into 2^n x 2^n leaves (tighter boxes)
+    std::string source_file;  // the patch file they came from, if any
+};
+
+using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface>;
 
 struct Object {
     Shape shape;
@@ -97,6 +106,8 @@ struct Scene {
     std::vector<PointLight> lights;
     std::vector<Material> materials;
     std::vector<Object> objects;
+    // Files the scene read besides itself (patch files, ...), for `lancer watch`.
+    std::vector<std::string> dependencies;
     // Set when the file has an [animation] table; scene_at() (scene/animation.hpp) turns the
     // scene into the static one of a moment. Renderers ignore it.
     std::shared_ptr<const Animation> animation;

@@ -227,4 +227,15 @@ std::optional<SurfaceHit> intersect(const BezierPatch& p, const Ray& ray, double
     return SurfaceHit{h.t, surface::unit_normal(p, h.u, h.v), {h.u, h.v}};
 }
 
+std::optional<SurfaceHit> intersect(const BezierSurface& s, const Ray& ray, double t_min, double t_max) {
+    std::optional<SurfaceHit> best;
+    for (std::size_t i = 0; i < s.patches.size(); ++i) {
+        if (auto h = intersect(s.patches[i], ray, t_min, best ? best->t : t_max)) {
+            best = h;
+            best->part = static_cast<int>(i);
+        }
+    }
+    return best;
+}
+
 }  // namespace lancer::cpu

@@ -34,5 +34,7 @@ struct PatchHit {
 };
 std::vector<PatchHit> intersect_all(const surface::BezierPatch& p, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const surface::BezierPatch& p, const Ray& ray, double t_min, double t_max);
+// The nearest hit over a whole patch set, with `part` the index of the patch hit.
+std::optional<SurfaceHit> intersect(const BezierSurface& s, const Ray& ray, double t_min, double t_max);
 
 }  // namespace lancer::cpu

@@ -1,0 +1,47 @@
+#include "cli/interrupt.hpp"
+
+#include <csignal>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace lancer {
+namespace {
+
+volatile sig_atomic_t g_signal = 0;
+int g_pipe[2] = {-1, -1};
+struct sigaction g_previous_int, g_previous_term;
+
+void on_signal(int number) {
+    g_signal = number;
+    char byte = 1;
+    [[maybe_unused]] ssize_t n = ::write(g_pipe[1], &byte, 1);  // async-signal-safe; a full pipe is fine
+}
+
+}  // namespace
+
+Interrupts::Interrupts() {
+    g_signal = 0;
+    if (::pipe2(g_pipe, O_CLOEXEC | O_NONBLOCK) != 0) g_pipe[0] = g_pipe[1] = -1;
+    struct sigaction action {};
+    action.sa_handler = on_signal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    ::sigaction(SIGINT, &action, &g_previous_int);
+    ::sigaction(SIGTERM, &action, &g_previous_term);
+}
+
+Interrupts::~Interrupts() {
+    ::sigaction(SIGINT, &g_previous_int, nullptr);
+    ::sigaction(SIGTERM, &g_previous_term, nullptr);
+    for (int& fd : g_pipe) {
+        if (fd >= 0) ::close(fd);
+        fd = -1;
+    }
+}
+
+bool Interrupts::requested() const { return g_signal != 0; }
+int Interrupts::fd() const { return g_pipe[0]; }
+int Interrupts::signal_number() const { return g_signal; }
+
+}  // namespace lancer

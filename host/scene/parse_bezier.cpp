@@ -1,0 +1,104 @@
+// [[object]] type = "bezier": a set of bicubic (rational) Bezier patches, given as
+//   file = "teapot.bpt"                        a patch file, relative to the scene file
+//   control_points = [[x,y,z], ... 16]         one patch, row-major (i along u)
+//   patches = [[[x,y,z], ... 16], ...]         several
+// with optional weights (rational patches) shaped like the points, a transform, and the GPU's
+// subdivision level.
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "scene/parse_surfaces.hpp"
+#include "scene/transform.hpp"
+#include "surface/patch_file.hpp"
+
+namespace lancer {
+namespace {
+
+using surface::BezierPatch;
+
+// 16 control points from an array of 16 [x, y, z].
+std::array<dvec3, 16> read_points(const toml::node& node, const std::string& file, const std::string& what) {
+    const toml::array* array = node.as_array();
+    if (!array || array->size() != 16)
+        throw SceneError(location_of(node, file),
+                         fmt::format("{} must hold 16 control points (a bicubic patch), not {}", what,
+                                     array ? std::to_string(array->size()) : std::string("a single value")));
+    std::array<dvec3, 16> points;
+    for (int k = 0; k < 16; ++k) points[k] = node_vec3(*array->get(k), file, fmt::format("{}[{}]", what, k));
+    return points;
+}
+
+std::array<double, 16> read_weights(const toml::node& node, const std::string& file, const std::string& what) {
+    const toml::array* array = node.as_array();
+    if (!array || array->size() != 16)
+        throw SceneError(location_of(node, file), what + " must hold 16 weights, one per control point");
+    std::array<double, 16> weights;
+    for (int k = 0; k < 16; ++k) {
+        weights[k] = node_number(*array->get(k), file, fmt::format("{}[{}]", what, k));
+        if (!(weights[k] > 0.0))
+            throw SceneError(location_of(*array->get(k), file), fmt::format("{}[{}] must be positive", what, k));
+    }
+    return weights;
+}
+
+std::vector<BezierPatch> read_inline(TableReader& t, const toml::node& points, const toml::node* weights, bool single) {
+    std::vector<BezierPatch> patches;
+    if (single) {
+        BezierPatch p;
+        p.points = read_points(points, t.file(), "control_points");
+        if (weights) p.weights = read_weights(*weights, t.file(), "weights");
+        patches.push_back(p);
+        return patches;
+    }
+    const toml::array* list = points.as_array();
+    if (!list || list->empty()) t.fail("patches", "patches must be a non-empty array of patches (16 points each)");
+    if (list->size() > static_cast<std::size_t>(surface::kMaxPatchesPerFile))
+        t.fail("patches", fmt::format("too many patches (the limit is {})", surface::kMaxPatchesPerFile));
+    const toml::array* weight_list = weights ? weights->as_array() : nullptr;
+    if (weights && (!weight_list || weight_list->size() != list->size()))
+        t.fail("weights", "weights must hold one list of 16 weights per patch");
+    for (std::size_t i = 0; i < list->size(); ++i) {
+        BezierPatch p;
+        p.points = read_points(*list->get(i), t.file(), fmt::format("patches[{}]", i));
+        if (weight_list) p.weights = read_weights(*weight_list->get(i), t.file(), fmt::format("weights[{}]", i));
+        patches.push_back(p);
+    }
+    return patches;
+}
+
+}  // namespace
+
+Shape read_bezier(TableReader& t) {
+    const toml::node* file = t.node("file");
+    const toml::node* control_points = t.node("control_points");
+    const toml::node* patch_list = t.node("patches");
+    const toml::node* weights = t.node("weights");
+    int given = (file != nullptr) + (control_points != nullptr) + (patch_list != nullptr);
+    if (given != 1)
+        throw SceneError(t.location(), "a bezier object needs exactly one of file, control_points or patches");
+
+    BezierSurface surface;
+    if (file) {
+        std::string name = t.string("file", "");
+        if (weights) t.fail("weights", "weights come from the patch file (a 4th number per point)");
+        std::filesystem::path path = std::filesystem::path(t.file()).parent_path() / name;
+        try {
+            surface.patches = surface::read_patch_file(path.string());
+        } catch (const SceneError& e) {
+            if (e.where().line > 0) throw;  // a problem inside the patch file: its own location
+            throw SceneError(t.location("file"), fmt::format("cannot read patch file '{}': {}", path.string(), e.what()));
+        }
+        surface.source_file = path.string();
+    } else {
+        surface.patches = read_inline(t, control_points ? *control_points : *patch_list, weights, control_points != nullptr);
+    }
+    surface.subdivision = t.integer("subdivision", surface.subdivision);
+    if (surface.subdivision < 0 || surface.subdivision > 4)
+        t.fail("subdivision", "subdivision must be between 0 and 4 (each patch becomes 4^n leaves on the GPU)");
+    glm::dmat4 m = read_transform(t);
+    for (auto& p : surface.patches) p = surface::transformed(p, m);
+    return surface;
+}
+
+}  // namespace lancer
