@@ -1,5 +1,6 @@
 #include "gpu/scene_packing.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -7,6 +8,8 @@
 #include "accel/bvh.hpp"
 #include "accel/shape_bounds.hpp"
 #include "scene/camera.hpp"
+
+#include <glm/geometric.hpp>
 
 namespace lancer::gpu {
 namespace {
@@ -107,9 +110,13 @@ PackedScene pack_scene(const Scene& scene, Acceleration acceleration) {
     packed.primitives.insert(packed.primitives.end(), unbounded.begin(), unbounded.end());
     packed.unbounded_count = static_cast<uint>(unbounded.size());
     for (const lancer::BvhNode& n : bvh.nodes) {
+        // Padded by a few float ulps of the coordinates: the shader's slab test has rounding
+        // errors of its own, and a ray aimed exactly at a box's edge (a patch corner, which is
+        // a control point and so on the box) must not slip past it.
+        double pad = 1e-6 * std::max({1.0, glm::length(n.box.lo), glm::length(n.box.hi)});
         gpu::BvhNode g{};
-        g.lo = vec4(round_down(n.box.lo.x), round_down(n.box.lo.y), round_down(n.box.lo.z), 0.0f);
-        g.hi = vec4(round_up(n.box.hi.x), round_up(n.box.hi.y), round_up(n.box.hi.z), 0.0f);
+        g.lo = vec4(round_down(n.box.lo.x - pad), round_down(n.box.lo.y - pad), round_down(n.box.lo.z - pad), 0.0f);
+        g.hi = vec4(round_up(n.box.hi.x + pad), round_up(n.box.hi.y + pad), round_up(n.box.hi.z + pad), 0.0f);
         g.first = n.first;
         g.count = n.count;
         packed.nodes.push_back(g);
