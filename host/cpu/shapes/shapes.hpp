@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 
 #include "cpu/ray.hpp"
+#include "surface/parametric_surface.hpp"
 
 namespace lancer::cpu {
 
@@ -21,5 +22,8 @@ std::optional<SurfaceHit> intersect(const Sphere& s, const Ray& ray, double t_mi
 std::optional<SurfaceHit> intersect(const Plane& p, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Rectangle& r, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, double t_max);
+// Certified (interval Newton) search for the nearest root; `normal` is surface_normal() there
+// and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
+std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
 
 }  // namespace lancer::cpu
