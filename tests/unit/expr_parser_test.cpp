@@ -2,11 +2,14 @@
 // error with the column it points at.
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "surface/expr/domain_check.hpp"
 #include "surface/expr/evaluate.hpp"
+#include "surface/expr/glsl_emitter.hpp"
 #include "surface/expr/functions.hpp"
 #include "surface/expr/parser.hpp"
 
@@ -228,6 +231,78 @@ TEST(ExprParserErrors, BadParamsAreUserErrors) {
     } catch (const UserError& e) {
         EXPECT_NE(std::string(e.what()).find("would hide the variable v"), std::string::npos) << e.what();
     }
+}
+
+}  // namespace
+}  // namespace lancer::surface
+
+namespace lancer::surface {
+namespace {
+
+// A random well-formed expression (for fuzzing).
+std::string random_expression(std::mt19937& rng, int depth) {
+    std::uniform_int_distribution<int> choice(0, depth > 0 ? 7 : 2);
+    const char* leaves[] = {"u", "v", "pi", "e", "R", "2", "0.5", "1e-3", "3"};
+    switch (choice(rng)) {
+        case 0:
+        case 1:
+        case 2: return leaves[std::uniform_int_distribution<int>(0, 8)(rng)];
+        case 3: return "-" + random_expression(rng, depth - 1);
+        case 4: return "(" + random_expression(rng, depth - 1) + ")";
+        case 5: {
+            const char* ops[] = {" + ", " - ", " * ", " / ", "^"};
+            return random_expression(rng, depth - 1) + ops[std::uniform_int_distribution<int>(0, 4)(rng)] +
+                   random_expression(rng, depth - 1);
+        }
+        default: {
+            auto table = function_table();
+            const auto& f = table[std::uniform_int_distribution<std::size_t>(0, table.size() - 1)(rng)];
+            std::string call = std::string(f.name) + "(" + random_expression(rng, depth - 1);
+            for (int i = 1; i < f.arity; ++i) call += ", " + random_expression(rng, depth - 1);
+            return call + ")";
+        }
+    }
+}
+
+// Every well-formed expression parses; damaged ones parse or are an ExprError at a column inside
+// the text (never a crash, a hang or another exception); and whatever parses can be evaluated,
+// checked and emitted.
+TEST(ExprParserFuzz, RandomAndDamagedExpressions) {
+    std::mt19937 rng(99);
+    const std::string junk("uv()+-*/^,.e1 $\0", 16);  // with a NUL byte
+    int damaged_parsed = 0;
+    for (int i = 0; i < 4000; ++i) {
+        std::string text = random_expression(rng, 5);
+        bool damaged = i % 2 == 1;
+        if (damaged) {
+            for (int k = std::uniform_int_distribution<int>(1, 3)(rng); k > 0; --k) {
+                std::size_t at = std::uniform_int_distribution<std::size_t>(0, text.size())(rng);
+                if (rng() % 2 && at < text.size()) text.erase(at, 1);
+                else text.insert(at, 1, junk[rng() % junk.size()]);
+            }
+        }
+        Expr e;
+        try {
+            e = parse_expression(text, kParams);
+        } catch (const ExprError& error) {
+            ASSERT_TRUE(damaged) << text << ": " << error.what();
+            ASSERT_GE(error.column, 0) << text;
+            ASSERT_LE(error.column, static_cast<int>(text.size())) << text;
+            continue;
+        }
+        damaged_parsed += damaged;
+        evaluate(e, 0.3, 0.7);
+        evaluate(e, Interval(0.0, 1.0), Interval(0.0, 1.0));
+        evaluate(e, Dual<Interval>::variable_u({0.0, 1.0}), Dual<Interval>::variable_v({0.0, 1.0}));
+        try {
+            check_expression_domain(e, {0.0, 1.0}, {0.0, 1.0});
+        } catch (const ExprError& error) {
+            ASSERT_GE(error.column, 0);
+            ASSERT_LT(error.column, static_cast<int>(text.size()));
+        }
+        ASSERT_FALSE(emit_glsl_surface(e, e, e, "surf").empty());
+    }
+    EXPECT_GT(damaged_parsed, 100);  // the damage is not always fatal, so both paths are exercised
 }
 
 }  // namespace
