@@ -1,7 +1,6 @@
 // The CPU reference intersector for parametric surfaces: against the analytic sphere, aimed rays
 // (a ray aimed at S(u0, v0) must hit it at t = 1 unless something is nearer), tangent and
 // grazing rays, poles, seams, self-intersections, partly undefined surfaces, and its speed.
-#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -264,27 +263,6 @@ TEST(ParametricIntersect, AChangedSurfaceIsCaught) {
     EXPECT_TRUE(intersect(copy, {{-3, 0, 0}, {1, 0, 0}}, 0.0, 1e30));
     s.u1 = pi;
     EXPECT_THROW(intersect(s, {{-3, 0, 0}, {1, 0, 0}}, 0.0, 1e30), std::logic_error);
-}
-
-// Not a pass/fail test (speed is measured, never asserted): rays/s on the torus, printed.
-TEST(ParametricIntersect, MeasureRaysPerSecondOnTheTorus) {
-    ParametricSurface s = test::make_surface(test::surface_spec("torus"));
-    intersect(s, {{-3, 0, 0}, {1, 0, 0}}, 0.0, 1e30);  // build the tree outside the timing
-    std::mt19937 rng(71);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    std::vector<Ray> rays;
-    for (int i = 0; i < 4000; ++i) {
-        dvec3 o = glm::normalize(dvec3(unit(rng), unit(rng), unit(rng))) * 4.0;
-        dvec3 aim = dvec3(unit(rng) * 1.4, unit(rng) * 1.4, unit(rng) * 0.4);
-        rays.push_back({o, glm::normalize(aim - o)});
-    }
-    int hits = 0;
-    auto start = std::chrono::steady_clock::now();
-    for (const Ray& r : rays) hits += intersect(s, r, 1e-9, 1e30).has_value();
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << "[ speed    ] torus: " << rays.size() / seconds << " rays/s (" << 1e6 * seconds / rays.size()
-              << " us/ray, " << hits << " of " << rays.size() << " hit)\n";
-    EXPECT_GT(hits, 0);
 }
 
 }  // namespace
