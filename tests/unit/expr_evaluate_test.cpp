@@ -108,8 +108,12 @@ TEST(ExprEvaluate, BoundsContainSampledValuesAndDerivatives) {
                 if (std::isnan(value)) continue;
                 ASSERT_TRUE(bound.contains(value)) << what << " at " << u << ", " << v;
                 ASSERT_TRUE(dual.v.contains(value)) << what;
-                if (std::isfinite(d.du)) ASSERT_TRUE(dual.du.contains(d.du)) << what << " du at " << u << ", " << v;
-                if (std::isfinite(d.dv)) ASSERT_TRUE(dual.dv.contains(d.dv)) << what << " dv at " << u << ", " << v;
+                if (std::isfinite(d.du)) {
+                    ASSERT_TRUE(dual.du.contains(d.du)) << what << " du at " << u << ", " << v;
+                }
+                if (std::isfinite(d.dv)) {
+                    ASSERT_TRUE(dual.dv.contains(d.dv)) << what << " dv at " << u << ", " << v;
+                }
             }
         }
     };

@@ -119,7 +119,9 @@ TEST(ParametricCells, MeanValueFormMakesBoxesTighterThanTheNaturalExtension) {
             natural_volume += natural;
             volume += box;
         }
-        if (std::string(name) == "enneper") EXPECT_LT(volume, 0.7 * natural_volume);
+        if (std::string(name) == "enneper") {
+            EXPECT_LT(volume, 0.7 * natural_volume);
+        }
     }
 }
 

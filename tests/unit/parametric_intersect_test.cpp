@@ -204,10 +204,14 @@ TEST(ParametricIntersect, TangentRaysEndWithoutNaN) {
     EXPECT_GT(hits, 150);
     // Tangent to the outer equator: touches at (0, 1.35, 0) and nowhere else.
     auto touch = intersect(s, {{-3.0, 1.35, 0.0}, {1.0, 0.0, 0.0}}, 0.0, 1e30);
-    if (touch) EXPECT_NEAR(touch->t, 3.0, 1e-3);
+    if (touch) {
+        EXPECT_NEAR(touch->t, 3.0, 1e-3);
+    }
     // Tangent to the top circle z = r along its tangent: touches at (1, 0, 0.35).
     auto top = intersect(s, {{1.0, -3.0, 0.35}, {0.0, 1.0, 0.0}}, 0.0, 1e30);
-    if (top) EXPECT_NEAR(top->t, 3.0, 1e-3);
+    if (top) {
+        EXPECT_NEAR(top->t, 3.0, 1e-3);
+    }
 }
 
 TEST(ParametricIntersect, SecondaryRaysLeaveTheSurface) {
