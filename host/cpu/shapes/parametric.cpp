@@ -103,7 +103,6 @@ public:
     }
 
 private:
-
     static std::vector<Item>& scratch_heap() {
         thread_local std::vector<Item> heap;
         return heap;
