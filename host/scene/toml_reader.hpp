@@ -8,6 +8,7 @@
 
 #include <toml++/toml.h>
 
+#include "core/closest_match.hpp"
 #include "core/error.hpp"
 #include "scene/scene.hpp"
 
@@ -62,8 +63,5 @@ SourceLocation location_of(const toml::source_region& region, const std::string&
 // Reads a node as a finite number (integer or float) or a 3-vector of them.
 double node_number(const toml::node& node, const std::string& file, const std::string& what);
 dvec3 node_vec3(const toml::node& node, const std::string& file, const std::string& what);
-
-// The candidate closest to `word` by edit distance, or "" when nothing is plausibly a typo.
-std::string closest_match(std::string_view word, const std::set<std::string, std::less<>>& candidates);
 
 }  // namespace lancer

@@ -10,6 +10,7 @@
 
 #include "cpu/ray.hpp"
 #include "surface/bezier_patch.hpp"
+#include "surface/parametric_surface.hpp"
 
 namespace lancer::cpu {
 
@@ -24,6 +25,9 @@ std::optional<SurfaceHit> intersect(const Sphere& s, const Ray& ray, double t_mi
 std::optional<SurfaceHit> intersect(const Plane& p, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Rectangle& r, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, double t_max);
+// Certified (interval Newton) search for the nearest root; `normal` is surface_normal() there
+// and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
+std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
 
 // Bicubic (rational) Bezier patches, exactly, by resultant + generalized eigenvalues (bezier.cpp).
 // The ray's direction need not be unit length: t is in units of it. intersect_all returns every

@@ -1,0 +1,37 @@
+#pragma once
+// The (u, v) domain of a surface cut into cells for the GPU, each with a world-space box that
+// is guaranteed to contain the surface over the cell. The GPU intersects rays with the boxes
+// (through a BVH) and runs Newton from seeds inside each cell it enters, so cells must be small
+// enough for Newton to converge from their seeds, and their boxes tight.
+#include <cstddef>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "surface/parametric_surface.hpp"
+
+namespace lancer::surface {
+
+struct CellOptions {
+    int initial_grid = 8;                     // cells per side to start from
+    double max_size_fraction = 1.0 / 32.0;    // a cell's box diagonal <= this * the surface's
+    double min_regular_fraction = 1.0 / 512;  // below this size, stop splitting for regularity
+    int max_depth = 16;                       // splits below the initial grid
+    std::size_t max_cells = std::size_t{1} << 16;
+};
+
+struct SurfaceCell {
+    double u0, u1, v0, v1;
+    dvec3 lo, hi;  // world space; padded outward by a few ulps (round outward again for float)
+    bool regular;  // proved on the whole cell: |Su x Sv| >= 1e-3 |Su| |Sv| (so nonzero, well conditioned)
+};
+
+// Splits a cell (along the side that is longer in world space) while its box is larger than
+// max_size_fraction of the surface's, or while |Su x Sv| may vanish on it (a pole, a fold) and it
+// is larger than min_regular_fraction, up to max_depth. The cells tile the domain exactly: each
+// split is at the midpoint, and cells where the surface is undefined everywhere are left out.
+// Throws UserError when more than max_cells are needed, or when a cell at the depth limit still
+// has an unbounded box (the surface goes to infinity inside the domain).
+std::vector<SurfaceCell> subdivide_surface(const ParametricSurface& surface, const CellOptions& options = {});
+
+}  // namespace lancer::surface

@@ -1,0 +1,185 @@
+// Cells for the GPU: they tile the (u, v) domain exactly, every sampled point of the surface lies
+// in its cell's box (also after a transform), the boxes are small, and the limits are errors.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "surface/expr/evaluate.hpp"
+#include "surface/parametric_cells.hpp"
+#include "unit/surface_fixtures.hpp"
+
+namespace lancer::surface {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+void expect_tiling(const ParametricSurface& s, const std::vector<SurfaceCell>& cells) {
+    double area = 0.0;
+    for (const auto& c : cells) {
+        ASSERT_LT(c.u0, c.u1);
+        ASSERT_LT(c.v0, c.v1);
+        ASSERT_GE(c.u0, s.u0);
+        ASSERT_LE(c.u1, s.u1);
+        ASSERT_GE(c.v0, s.v0);
+        ASSERT_LE(c.v1, s.v1);
+        area += (c.u1 - c.u0) * (c.v1 - c.v0);
+    }
+    EXPECT_NEAR(area, (s.u1 - s.u0) * (s.v1 - s.v0), 1e-12 * (s.u1 - s.u0) * (s.v1 - s.v0));
+    // No two cells overlap (sorted by u0, only cells starting before c ends can overlap it).
+    std::vector<SurfaceCell> sorted = cells;
+    std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.u0 < b.u0; });
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+        for (std::size_t j = i + 1; j < sorted.size() && sorted[j].u0 < sorted[i].u1; ++j) {
+            bool overlap = sorted[j].v0 < sorted[i].v1 && sorted[i].v0 < sorted[j].v1;
+            ASSERT_FALSE(overlap) << "cells " << i << " and " << j << " overlap";
+        }
+    }
+}
+
+void expect_containment(const ParametricSurface& s, const std::vector<SurfaceCell>& cells, std::mt19937& rng) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const auto& c : cells) {
+        for (int k = 0; k < 12; ++k) {
+            double a = k < 4 ? (k & 1) : unit(rng), b = k < 4 ? (k >> 1) : unit(rng);
+            double u = k < 4 ? (a == 0 ? c.u0 : c.u1) : c.u0 + (c.u1 - c.u0) * a;
+            double v = k < 4 ? (b == 0 ? c.v0 : c.v1) : c.v0 + (c.v1 - c.v0) * b;
+            dvec3 p = evaluate_surface(s, std::min(u, c.u1), std::min(v, c.v1)).P;
+            for (int i = 0; i < 3; ++i) {
+                ASSERT_GE(p[i], c.lo[i]) << "at (" << u << ", " << v << ") axis " << i;
+                ASSERT_LE(p[i], c.hi[i]) << "at (" << u << ", " << v << ") axis " << i;
+            }
+        }
+    }
+}
+
+TEST(ParametricCells, TileTheDomainAndContainTheSurface) {
+    std::mt19937 rng(21);
+    for (const auto& spec : test::classic_surfaces()) {
+        SCOPED_TRACE(spec.name);
+        ParametricSurface s = test::make_surface(spec);
+        auto cells = subdivide_surface(s);
+        std::size_t regular = std::count_if(cells.begin(), cells.end(), [](const auto& c) { return c.regular; });
+        std::cout << "[ cells    ] " << spec.name << ": " << cells.size() << " cells, " << regular << " regular\n";
+        expect_tiling(s, cells);
+        expect_containment(s, cells, rng);
+    }
+}
+
+TEST(ParametricCells, TransformedSurfaceBoxesContainTheWorldSurface) {
+    std::mt19937 rng(22);
+    for (const char* name : {"torus", "klein8"}) {
+        ParametricSurface s = test::make_surface(test::surface_spec(name));
+        s.to_world = glm::translate(glm::dmat4(1.0), glm::dvec3(3.0, -1.0, 20.0)) *
+                     glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(1.0, 2.0, -0.5))) *
+                     glm::scale(glm::dmat4(1.0), glm::dvec3(2.0, 0.5, 1.25));
+        auto cells = subdivide_surface(s);
+        expect_tiling(s, cells);
+        expect_containment(s, cells, rng);
+    }
+}
+
+TEST(ParametricCells, BoxesAreSmallAndPolesAreIrregular) {
+    ParametricSurface torus = test::make_surface(test::surface_spec("torus"));
+    auto cells = subdivide_surface(torus);
+    const double torus_diagonal = std::sqrt(2.7 * 2.7 * 2 + 0.7 * 0.7);
+    for (const auto& c : cells) {
+        EXPECT_TRUE(c.regular);
+        EXPECT_LE(glm::length(c.hi - c.lo), torus_diagonal / 32.0 * 1.0001);
+    }
+    ParametricSurface sphere = test::make_surface(test::surface_spec("sphere"));
+    auto sphere_cells = subdivide_surface(sphere);
+    for (const auto& c : sphere_cells) {
+        bool at_pole = c.v0 == sphere.v0 || c.v1 == sphere.v1;
+        EXPECT_EQ(c.regular, !at_pole) << c.v0 << " " << c.v1;
+    }
+}
+
+TEST(ParametricCells, MeanValueFormMakesBoxesTighterThanTheNaturalExtension) {
+    // The natural extension of u - u^3/3 + u v^2 bounds each term separately and overestimates;
+    // the mean-value form is nearly exact for small cells. Never looser, always containing.
+    for (const char* name : {"enneper", "torus"}) {
+        ParametricSurface s = test::make_surface(test::surface_spec(name));
+        CellOptions coarse;
+        coarse.initial_grid = 16;
+        coarse.max_size_fraction = 1.0;  // no refinement: compare boxes of the same cells
+        auto cells = subdivide_surface(s, coarse);
+        ASSERT_EQ(cells.size(), 256u);
+        double volume = 0.0, natural_volume = 0.0;
+        for (const auto& c : cells) {
+            Interval U(c.u0, c.u1), V(c.v0, c.v1);
+            Interval x = evaluate(s.x, U, V), y = evaluate(s.y, U, V), z = evaluate(s.z, U, V);
+            double natural = x.width() * y.width() * z.width();
+            double box = (c.hi.x - c.lo.x) * (c.hi.y - c.lo.y) * (c.hi.z - c.lo.z);
+            EXPECT_LE(box, natural * (1 + 1e-9) + 1e-300) << name;
+            natural_volume += natural;
+            volume += box;
+        }
+        if (std::string(name) == "enneper") {
+            EXPECT_LT(volume, 0.7 * natural_volume);
+        }
+    }
+}
+
+TEST(ParametricCells, UndefinedPartsAreLeftOut) {
+    ParametricSurface s;
+    s.x = parse_expression("u", {});
+    s.y = parse_expression("v", {});
+    s.z = parse_expression("sqrt(u - 0.5)", {});
+    auto cells = subdivide_surface(s);
+    double area = 0.0;
+    for (const auto& c : cells) {
+        EXPECT_GE(c.u1, 0.5);  // cells ending at u = 0.5 hold the defined line u = 0.5
+        if (c.u0 >= 0.5) area += (c.u1 - c.u0) * (c.v1 - c.v0);
+    }
+    EXPECT_NEAR(area, 0.5, 1e-12);
+    std::mt19937 rng(23);
+    std::vector<SurfaceCell> defined;
+    for (const auto& c : cells)
+        if (c.u0 >= 0.5) defined.push_back(c);
+    expect_containment(s, defined, rng);
+}
+
+TEST(ParametricCells, TooManyCellsIsAUserError) {
+    ParametricSurface s = test::make_surface(test::surface_spec("klein8"));
+    CellOptions options;
+    options.max_cells = 100;
+    try {
+        subdivide_surface(s, options);
+        FAIL() << "no error";
+    } catch (const UserError& e) {
+        EXPECT_NE(std::string(e.what()).find("more than 100 cells"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ParametricCells, AnUnboundedSurfaceIsAUserError) {
+    ParametricSurface s;
+    s.x = parse_expression("1/u", {});
+    s.y = parse_expression("v", {});
+    s.z = parse_expression("0", {});
+    try {
+        subdivide_surface(s);
+        FAIL() << "no error";
+    } catch (const UserError& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot bound the surface near (u, v) = (0"), std::string::npos)
+            << e.what();
+    }
+    s.u0 = 0.1;  // away from the pole it is fine
+    EXPECT_NO_THROW(subdivide_surface(s));
+}
+
+TEST(ParametricCells, BadDomainsAreUserErrors) {
+    ParametricSurface s = test::make_surface(test::surface_spec("torus"));
+    s.u1 = s.u0;
+    EXPECT_THROW(subdivide_surface(s), UserError);
+    s = test::make_surface(test::surface_spec("torus"));
+    s.v1 = kInf;
+    EXPECT_THROW(subdivide_surface(s), UserError);
+}
+
+}  // namespace
+}  // namespace lancer::surface
