@@ -82,7 +82,8 @@ void main() {
     if (pixel.x >= frame.width || gl_GlobalInvocationID.y >= band.rows || pixel.y >= frame.height) return;
     uint out_index = gl_GlobalInvocationID.y * frame.width + pixel.x;
     if (OUTPUT_HITS) {
-        pixels[out_index] = first_hit(vec2(pixel) + 0.5);
+        vec4 hit = first_hit(vec2(pixel) + 0.5);
+        pixels[out_index] = CHECK_LOOP_LIMIT && loop_limit_reached() ? vec4(-1.0, 0.0, 0.0, -2.0) : hit;
         return;
     }
 

@@ -13,6 +13,14 @@ struct BoundsOf {
         return b;
     }
     std::optional<Aabb> operator()(const Box& b) const { return Aabb{b.min, b.max}; }
+    std::optional<Aabb> operator()(const ParametricObject& p) const {
+        Aabb b;
+        for (const auto& cell : p.cells) {
+            b.extend(cell.lo);
+            b.extend(cell.hi);
+        }
+        return b;
+    }
     std::optional<Aabb> operator()(const BezierSurface& s) const {
         Aabb b;
         for (const auto& patch : s.patches) {

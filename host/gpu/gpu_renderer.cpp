@@ -9,6 +9,7 @@
 #include "gpu/embedded_shaders.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/scene_packing.hpp"
+#include "gpu/surface_codegen.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace lancer {
@@ -255,7 +256,7 @@ FloatImage GpuRenderer::render_with(const Scene& scene, bool output_hits, const 
 
     gpu::PipelineVariant variant = upload_scene(scene);
     variant.output_hits = output_hits;
-    ensure_program("");  // generated code for parametric surfaces comes here
+    ensure_program(gpu::surface_functions_glsl(scene));
     select_pipeline(variant);
     ensure_output(rows * row_bytes);
     update_descriptors();

@@ -38,6 +38,24 @@ struct PrimitivePacker {
     }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
+    // Each cell of the surface's domain is a primitive with the cell's proved box; the surface
+    // itself (its affine map; its equations are compiled into the shader) is one SurfaceInfo.
+    void operator()(const ParametricObject& p) {
+        auto index = static_cast<uint>(out.surfaces.size());
+        const glm::dmat4& m = p.surface.to_world;  // column-major: m[column][row]
+        SurfaceInfo info{};
+        info.row0 = vec4(float(m[0][0]), float(m[1][0]), float(m[2][0]), float(m[3][0]));
+        info.row1 = vec4(float(m[0][1]), float(m[1][1]), float(m[2][1]), float(m[3][1]));
+        info.row2 = vec4(float(m[0][2]), float(m[1][2]), float(m[2][2]), float(m[3][2]));
+        info.domain = vec4(float(p.surface.u0), float(p.surface.u1), float(p.surface.v0), float(p.surface.v1));
+        out.surfaces.push_back(info);
+        for (const auto& cell : p.cells) {
+            vec4 domain(float(cell.u0), float(cell.u1), float(cell.v0), float(cell.v1));
+            add({SHAPE_PARAMETRIC, material, index, object, domain, v4(0.5 * (cell.lo + cell.hi)), {}},
+                Aabb{cell.lo, cell.hi});
+        }
+    }
+
     // Each patch becomes 2^n x 2^n leaves (exact sub-patches, de Casteljau in double): smaller
     // boxes cull more rays before Bezier clipping starts, and clipping converges sooner.
     void operator()(const BezierSurface& s) {

@@ -27,6 +27,13 @@ void translate(Shape& shape, const dvec3& offset) {
             b.min += d;
             b.max += d;
         }
+        void operator()(ParametricObject& p) const {
+            p.surface.to_world[3] += glm::dvec4(d, 0.0);  // translation column of the affine map
+            for (auto& cell : p.cells) {
+                cell.lo += d;
+                cell.hi += d;
+            }
+        }
         void operator()(BezierSurface& b) const {
             for (auto& patch : b.patches)
                 for (auto& p : patch.points) p += d;

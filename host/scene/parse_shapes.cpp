@@ -56,6 +56,7 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"rectangle", read_rectangle},
         {"box", read_box},
         {"bezier", read_bezier},
+        {"parametric", read_parametric},
     };
     return readers;
 }

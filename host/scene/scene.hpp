@@ -12,6 +12,8 @@
 
 #include "core/error.hpp"
 #include "surface/bezier_patch.hpp"
+#include "surface/parametric_cells.hpp"
+#include "surface/parametric_surface.hpp"
 
 namespace lancer {
 
@@ -87,7 +89,14 @@ struct BezierSurface {
     std::string source_file;  // the patch file they came from, if any
 };
 
-using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface>;
+// A surface given by its equations, with its domain cut into cells whose world boxes are proved
+// to contain it (interval arithmetic): the GPU's leaves. Both are in world space.
+struct ParametricObject {
+    surface::ParametricSurface surface;
+    std::vector<surface::SurfaceCell> cells;
+};
+
+using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject>;
 
 struct Object {
     Shape shape;

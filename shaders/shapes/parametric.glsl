@@ -28,43 +28,56 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
     vec4 cell = prim.p0;  // (u0, u1, v0, v1)
     vec2 size = vec2(cell.y - cell.x, cell.w - cell.z);
     vec3 d = ray.dir;
+    // Re-origin at the point of the ray nearest the cell (p1 = the centre of its box): the
+    // residuals are then differences of nearby numbers, not of the distance to the camera.
+    float t_shift = dot(prim.p1.xyz - ray.origin, d);
+    vec3 origin = ray.origin + t_shift * d;
     vec3 a = abs(d.x) <= abs(d.y) && abs(d.x) <= abs(d.z) ? vec3(1.0, 0.0, 0.0)
            : (abs(d.y) <= abs(d.z) ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
     vec3 n1 = normalize(cross(d, a));
     vec3 n2 = cross(d, n1);
     float best = t_max;
     bool found = false;
-    const vec2 seeds[5] = vec2[5](vec2(0.5, 0.5), vec2(0.25, 0.25), vec2(0.75, 0.25), vec2(0.25, 0.75), vec2(0.75, 0.75));
+    // Seeds: the cell's centre, then the centres of its quadrants.
     for (int s = 0; s < 5; ++s) {
-        vec2 local = seeds[s];  // in the cell's own [0, 1]^2
-        bool converged = false;
+        vec2 local = s == 0 ? vec2(0.5) : vec2(0.25 + 0.5 * float((s - 1) & 1), 0.25 + 0.5 * float((s - 1) >> 1));
+        int state = 0;  // 0: iterating, 1: converged, 2: failed
         for (int k = 0; k < NEWTON_STEPS; ++k) {
-            vec3 P, Pu, Pv;
-            surface_world(prim.data, vec2(cell.x, cell.z) + local * size, P, Pu, Pv);
-            vec3 r = P - ray.origin;
-            vec2 f = vec2(dot(n1, r), dot(n2, r));
-            // Jacobian in the cell's local parameters (scaled by the cell size: better conditioned).
-            mat2 j = mat2(dot(n1, Pu) * size.x, dot(n2, Pu) * size.x, dot(n1, Pv) * size.y, dot(n2, Pv) * size.y);
-            float det = determinant(j);
-            if (abs(det) < 1e-30) break;
-            vec2 step = inverse(j) * f;
-            local -= step;
-            if (any(lessThan(local, vec2(-0.5))) || any(greaterThan(local, vec2(1.5)))) break;  // wandered off
-            if (abs(step.x) + abs(step.y) < 1e-6) {
-                converged = true;
-                break;
+            if (state == 0) {
+                vec3 P, Pu, Pv;
+                surface_world(prim.data, vec2(cell.x, cell.z) + local * size, P, Pu, Pv);
+                vec3 r = P - origin;
+                vec2 f = vec2(dot(n1, r), dot(n2, r));
+                // Jacobian in the cell's local parameters (scaled by the cell size: better conditioned).
+                mat2 j = mat2(dot(n1, Pu) * size.x, dot(n2, Pu) * size.x, dot(n1, Pv) * size.y, dot(n2, Pv) * size.y);
+                float det = determinant(j);
+                if (abs(det) < 1e-30) {
+                    state = 2;
+                } else {
+                    vec2 step = inverse(j) * f;
+                    local -= step;
+                    if (any(lessThan(local, vec2(-0.5))) || any(greaterThan(local, vec2(1.5)))) {
+                        state = 2;  // wandered off
+                    } else if (abs(step.x) + abs(step.y) < 1e-4) {
+                        // Quadratic convergence: after a step this small the error is ~1e-8,
+                        // below float's noise in the residual, which smaller steps would chase.
+                        state = 1;
+                    }
+                }
             }
         }
         // Closed cell, widened a little: neighbours overlap, so no ray falls between cells.
-        if (!converged || any(lessThan(local, vec2(-1e-4))) || any(greaterThan(local, vec2(1.0 + 1e-4)))) continue;
-        vec3 P, Pu, Pv;
-        vec2 uv = vec2(cell.x, cell.z) + clamp(local, 0.0, 1.0) * size;
-        surface_world(prim.data, uv, P, Pu, Pv);
-        float t = dot(d, P - ray.origin);
-        if (t > t_min && t < best) {
-            best = t;
-            uv_hit = uv;
-            found = true;
+        bool inside = all(greaterThanEqual(local, vec2(-1e-4))) && all(lessThanEqual(local, vec2(1.0 + 1e-4)));
+        if (state == 1 && inside) {
+            vec3 P, Pu, Pv;
+            vec2 uv = vec2(cell.x, cell.z) + clamp(local, 0.0, 1.0) * size;
+            surface_world(prim.data, uv, P, Pu, Pv);
+            float t = t_shift + dot(d, P - origin);
+            if (t > t_min && t < best) {
+                best = t;
+                uv_hit = uv;
+                found = true;
+            }
         }
     }
     if (!found) return false;

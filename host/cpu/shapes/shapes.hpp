@@ -28,6 +28,9 @@ std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, 
 // Certified (interval Newton) search for the nearest root; `normal` is surface_normal() there
 // and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
 std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
+inline std::optional<SurfaceHit> intersect(const ParametricObject& p, const Ray& ray, double t_min, double t_max) {
+    return intersect(p.surface, ray, t_min, t_max);
+}
 
 // Bicubic (rational) Bezier patches, exactly, by resultant + generalized eigenvalues (bezier.cpp).
 // The ray's direction need not be unit length: t is in units of it. intersect_all returns every

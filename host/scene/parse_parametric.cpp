@@ -1,0 +1,103 @@
+// [[object]] type = "parametric": a surface given by its equations, x(u, v), y(u, v), z(u, v),
+// over u = [u0, u1], v = [v0, v1], with named constants, a transform and a material:
+//   x = "(R + r*cos(v))*cos(u)"   y = "r*sin(v)"   z = "(R + r*cos(v))*sin(u)"
+//   u = [0, "2*pi"]   v = [0, "2*pi"]   params = { R = 1, r = 0.35 }
+// Errors inside an expression point at its exact column in the scene file.
+#include <fmt/format.h>
+
+#include "scene/parse_surfaces.hpp"
+#include "scene/transform.hpp"
+#include "surface/expr/domain_check.hpp"
+#include "surface/expr/evaluate.hpp"
+#include "surface/expr/parser.hpp"
+
+namespace lancer {
+namespace {
+
+// Where character `column` (0-based) of a single-line TOML string value is in the file: after
+// the opening quote. (Escape sequences before it would shift it; expressions have none.)
+SourceLocation column_in_string(const toml::node& node, const std::string& file, int column) {
+    SourceLocation at = location_of(node, file);
+    at.column += 1 + column;
+    return at;
+}
+
+surface::Expr parse_string(const toml::node& node, const std::string& file, const std::string& what,
+                           const surface::Constants& constants) {
+    const auto* text = node.as_string();
+    if (!text) throw SceneError(location_of(node, file), what + " must be a string holding an expression in u and v");
+    try {
+        return surface::parse_expression(text->get(), constants);
+    } catch (const surface::ExprError& e) {
+        throw SceneError(column_in_string(node, file, e.column), e.what());
+    } catch (const UserError& e) {
+        throw SceneError(location_of(node, file), e.what());
+    }
+}
+
+// A domain bound: a number, or a constant expression such as "2*pi" (u and v are 0 there, and
+// an expression that uses them is refused).
+double read_bound(const toml::node& node, const std::string& file, const std::string& what,
+                  const surface::Constants& constants) {
+    if (!node.is_string()) return node_number(node, file, what);
+    surface::Expr e = parse_string(node, file, what, constants);
+    for (const auto& n : e.nodes)
+        if (n.op == surface::Op::U || n.op == surface::Op::V)
+            throw SceneError(column_in_string(node, file, n.column), what + " must not depend on u or v");
+    double value = surface::evaluate(e, 0.0, 0.0);
+    if (!std::isfinite(value)) throw SceneError(location_of(node, file), what + " is not a finite number");
+    return value;
+}
+
+std::pair<double, double> read_range(TableReader& t, std::string_view key, const surface::Constants& constants) {
+    const toml::node* node = t.node(key);
+    if (!node) t.fail(key, fmt::format("missing required key '{}' (its range, e.g. {} = [0, \"2*pi\"])", key, key));
+    const toml::array* range = node->as_array();
+    if (!range || range->size() != 2) t.fail(key, fmt::format("{} must be [start, end]", key));
+    double lo = read_bound(*range->get(0), t.file(), std::string(key) + "[0]", constants);
+    double hi = read_bound(*range->get(1), t.file(), std::string(key) + "[1]", constants);
+    if (!(lo < hi)) t.fail(key, fmt::format("{} range is empty: {:g} is not less than {:g}", key, lo, hi));
+    return {lo, hi};
+}
+
+surface::Constants read_params(TableReader& t) {
+    surface::Constants constants;
+    const toml::table* params = t.table("params");
+    if (!params) return constants;
+    for (auto&& [key, node] : *params)
+        constants[std::string(key.str())] = node_number(node, t.file(), "params." + std::string(key.str()));
+    return constants;
+}
+
+}  // namespace
+
+Shape read_parametric(TableReader& t) {
+    surface::Constants constants = read_params(t);
+    ParametricObject object;
+    surface::ParametricSurface& s = object.surface;
+    const char* axes[] = {"x", "y", "z"};
+    surface::Expr* exprs[] = {&s.x, &s.y, &s.z};
+    for (int i = 0; i < 3; ++i) {
+        const toml::node* node = t.node(axes[i]);
+        if (!node) throw SceneError(t.location(), fmt::format("missing required key '{}' (an expression in u and v)", axes[i]));
+        *exprs[i] = parse_string(*node, t.file(), axes[i], constants);
+    }
+    std::tie(s.u0, s.u1) = read_range(t, "u", constants);
+    std::tie(s.v0, s.v1) = read_range(t, "v", constants);
+    for (int i = 0; i < 3; ++i) {
+        try {
+            surface::check_expression_domain(*exprs[i], {s.u0, s.u1}, {s.v0, s.v1});
+        } catch (const surface::ExprError& e) {
+            throw SceneError(column_in_string(*t.node(axes[i]), t.file(), e.column), e.what());
+        }
+    }
+    s.to_world = read_transform(t);
+    try {
+        object.cells = surface::subdivide_surface(s);
+    } catch (const UserError& e) {
+        throw SceneError(t.location(), std::string("parametric surface: ") + e.what());
+    }
+    return object;
+}
+
+}  // namespace lancer
