@@ -231,3 +231,72 @@ TEST(Exactness, GpuNewtonAgreesWithIntervalNewtonOnTheTorus) {
 
 }  // namespace
 }  // namespace lancer
+
+#include "support/rational_patches.hpp"
+
+namespace lancer {
+namespace {
+
+// Twins: a surface given by equations renders like its closed-form or exact-patch twin, on the
+// GPU, under the image tests' metric.
+void expect_same_picture(const Scene& a, const Scene& b, const std::string& name) {
+    Rgb8Image ia = to_srgb8(test::gpu_renderer().render(a, {}));
+    Rgb8Image ib = to_srgb8(test::gpu_renderer().render(b, {}));
+    ImageDiff d = compare_images(ia, ib, 4);
+    if (d.psnr_db < 40.0 || d.fraction_over > 0.001) test::save_comparison(name, ia, ib);
+    EXPECT_GE(d.psnr_db, 40.0) << name;
+    EXPECT_LE(d.fraction_over, 0.001) << name;
+}
+
+const char* kTwinStage = R"(
+    [render]
+    width = 120
+    height = 90
+    samples = 2
+    [camera]
+    eye = [1.5, 2.5, -4]
+    look_at = [0, 0, 0]
+    fov = 45
+    [[light]]
+    position = [-4, 6, -5]
+    [material.m]
+    color = [0.8, 0.5, 0.2]
+    specular = 0.6
+    shininess = 30
+    [[object]]
+    type = "plane"
+    point = [0, -1.5, 0]
+    normal = [0, 1, 0]
+    [[object]]
+    material = "m"
+)";
+
+TEST(Twins, ParametricSphereIsTheAnalyticSphere) {
+    Scene parametric = test::scene_from_text(std::string(kTwinStage) + R"toml(
+        type = "parametric"
+        x = "1.2*cos(v)*cos(u)"
+        y = "1.2*sin(v)"
+        z = "1.2*cos(v)*sin(u)"
+        u = [0, "2*pi"]
+        v = ["-pi/2", "pi/2"]
+    )toml");
+    Scene analytic = test::scene_from_text(std::string(kTwinStage) + "type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1.2\n");
+    expect_same_picture(parametric, analytic, "twin-sphere");
+}
+
+TEST(Twins, ParametricTorusIsTheRationalBezierTorus) {
+    Scene parametric = test::scene_from_text(std::string(kTwinStage) + R"toml(
+        type = "parametric"
+        x = "(1 + 0.35*cos(v)) * cos(u)"
+        y = "(1 + 0.35*cos(v)) * sin(u)"
+        z = "0.35*sin(v)"
+        u = [0, "2*pi"]
+        v = [0, "2*pi"]
+    )toml");
+    Scene patches = parametric;
+    patches.objects[1].shape = BezierSurface{test::torus_patches(1.0, 0.35), 1, ""};
+    expect_same_picture(parametric, patches, "twin-torus");
+}
+
+}  // namespace
+}  // namespace lancer
