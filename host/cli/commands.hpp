@@ -15,6 +15,7 @@ struct Subcommand {
 
 Subcommand add_render_command(CLI::App& parent);
 Subcommand add_watch_command(CLI::App& parent);
+Subcommand add_diff_command(CLI::App& parent);
 
 int list_devices();
 

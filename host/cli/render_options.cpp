@@ -9,6 +9,7 @@
 #include "cpu/cpu_renderer.hpp"
 #include "gpu/context.hpp"
 #include "gpu/gpu_renderer.hpp"
+#include "gpu/shader_compiler.hpp"
 #include "scene/limits.hpp"
 #include "scene/load_scene.hpp"
 
@@ -29,6 +30,8 @@ void add_render_options(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--backend", o.backend, "gpu (Vulkan compute, default) or cpu (reference renderer)")
         ->check(CLI::IsMember({"gpu", "cpu"}));
     cmd.add_option("--device", o.device, "Vulkan device: index or part of its name (see --list-devices)");
+    cmd.add_option("--shaders", o.shader_dir,
+                   "Compile the tracer at run time from this shader directory instead of the built-in one");
     cmd.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
 }
 
@@ -62,8 +65,17 @@ void check_output_writable(const std::string& path) {
 }
 
 std::unique_ptr<Renderer> make_renderer(const RenderOptions& o) {
-    if (o.backend == "cpu") return std::make_unique<CpuRenderer>();
-    return std::make_unique<GpuRenderer>(gpu::ContextOptions{o.device, gpu::validation_requested_by_environment()});
+    if (o.backend == "cpu") {
+        if (!o.shader_dir.empty()) throw UserError("--shaders needs the gpu backend");
+        return std::make_unique<CpuRenderer>();
+    }
+    auto gpu = std::make_unique<GpuRenderer>(gpu::ContextOptions{o.device, gpu::validation_requested_by_environment()});
+    if (!o.shader_dir.empty()) {
+        if (!std::filesystem::is_directory(o.shader_dir))
+            throw UserError("--shaders: '" + o.shader_dir + "' is not a directory");
+        gpu->use_shaders(gpu::directory_tree(o.shader_dir), o.shader_dir);
+    }
+    return gpu;
 }
 
 long peak_rss_mib() {

@@ -18,6 +18,7 @@ struct RenderOptions {
     std::optional<int> width, height, samples, max_depth;
     std::string backend = "gpu";
     std::string device;
+    std::string shader_dir;  // compile the tracer from these sources at run time (development)
     bool quiet = false;
 };
 

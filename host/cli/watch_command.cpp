@@ -36,16 +36,16 @@ std::string describe_changes(const std::set<fs::path>& changed) {
 }
 
 struct WatchCommand {
-    RenderOptions options;
-    std::string shader_dir;
+    RenderOptions options;  // options.shader_dir: the directory to watch
     std::optional<int> frame;  // of an animated scene
 
     // The shader directory to watch: --shaders, else ./shaders when it exists (running from the
     // repository), else none (only the scene is watched; the embedded shaders are used).
     std::string resolve_shader_dir() const {
-        if (!shader_dir.empty()) {
-            if (!fs::is_directory(shader_dir)) throw UserError("--shaders: '" + shader_dir + "' is not a directory");
-            return shader_dir;
+        if (!options.shader_dir.empty()) {
+            if (!fs::is_directory(options.shader_dir))
+                throw UserError("--shaders: '" + options.shader_dir + "' is not a directory");
+            return options.shader_dir;
         }
         if (fs::exists("shaders/trace.comp")) return "shaders";
         return "";
@@ -56,7 +56,9 @@ struct WatchCommand {
         check_output_writable(output);
         std::string shaders = resolve_shader_dir();
         FileWatcher watcher;  // also turns Ctrl-C into a clean exit
-        auto renderer = make_renderer(options);
+        RenderOptions without_shaders = options;
+        without_shaders.shader_dir.clear();  // compiled below, where errors are kept, not fatal
+        auto renderer = make_renderer(without_shaders);
         auto* gpu = dynamic_cast<GpuRenderer*>(renderer.get());
         if (!shaders.empty() && !gpu) throw UserError("--shaders needs the gpu backend");
 
@@ -150,8 +152,6 @@ Subcommand add_watch_command(CLI::App& parent) {
     auto state = std::make_shared<WatchCommand>();
     CLI::App* cmd = parent.add_subcommand("watch", "Render, then re-render whenever the shaders or the scene change");
     add_render_options(*cmd, state->options);
-    cmd->add_option("--shaders", state->shader_dir,
-                    "Shader directory to compile and watch (default: ./shaders if present, else the built-in shaders)");
     cmd->add_option("--frame", state->frame, "Frame of an animated scene to preview (default 0)");
     return {cmd, [state] { return state->run(); }};
 }

@@ -104,3 +104,28 @@ INSTANTIATE_TEST_SUITE_P(
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+TEST(CliDiff, ReportsTheMetricAndWritesTheSideBySide) {
+    std::string a = test::output_dir() + "/diff-a.png", b = test::output_dir() + "/diff-b.png";
+    std::string side = test::output_dir() + "/diff-side.png";
+    Rgb8Image img{4, 2, std::vector<std::uint8_t>(24, 100)};
+    write_png(a, img);
+    img.bytes[0] = 200;  // one pixel off by 100
+    write_png(b, img);
+    auto r = test::run_lancer("diff " + a + " " + b + " --side-by-side " + side);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("12.500% of pixels off by more than 4/255, largest difference 100/255"), std::string::npos) << r.out;
+    EXPECT_EQ(read_png(side).width, 12);
+    auto same = test::run_lancer("diff " + a + " " + a);
+    EXPECT_NE(same.out.find("PSNR inf dB"), std::string::npos) << same.out;
+    write_png(b, Rgb8Image{3, 2, std::vector<std::uint8_t>(18, 0)});
+    auto sizes = test::run_lancer("diff " + a + " " + b);
+    EXPECT_EQ(sizes.exit_code, 2);
+    EXPECT_NE(sizes.err.find("images differ in size"), std::string::npos) << sizes.err;
+}
+
+}  // namespace
+}  // namespace lancer

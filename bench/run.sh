@@ -1,0 +1,121 @@
+#!/usr/bin/env bash
+# lancer's benchmark suite against POV-Ray 3.7 (a benchmark, never a test: speed is not asserted).
+#
+#   bench/run.sh [runs=3]
+#
+# For each suite scene, in one run so the ratios mean something on a shared, noisy machine:
+# lancer on the GPU path (lavapipe here), lancer's CPU reference, and POV-Ray rendering the same
+# scene (converted by bench/toml_to_pov.py), each after a warm-up, the median of `runs` runs.
+# Columns: wall time of the whole process, render time alone (lancer's final line; POV's
+# "Trace Time"), rays per second of render time (all rays: camera, shadow, reflection; POV's
+# "Rays" plus "Shadow Ray Tests"), peak memory, and POV's wall time over this one's.
+# Images land in bench/out/: SCENE-lancer.png, SCENE-pov.png and SCENE-side.png (lancer | POV |
+# difference x 8) with their PSNR, so anyone can see they are the same picture.
+#
+# Installs POV-Ray (and GNU time) with apt-get when missing: the benchmark's own setup, not the
+# main one.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+runs="${1:-3}"
+out=bench/out
+mkdir -p "$out"
+
+need=()
+command -v povray >/dev/null || need+=(povray)
+[ -x /usr/bin/time ] || need+=(time)
+command -v python3 >/dev/null || need+=(python3)
+if ((${#need[@]})); then
+  sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${need[@]}" >/dev/null
+fi
+[ -x build/lancer ] || ./setup.sh build
+
+median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
+
+# One timed run: prints "wall render rays peak_mib" (render and rays may be "-").
+run_lancer() {  # scene width height backend
+  local log; log=$(mktemp)
+  /usr/bin/time -f "%e %M" -o "$log.time" build/lancer render "$1" --width "$2" --height "$3" --backend "$4" \
+    -o "$out/$(basename "$1" .toml)-lancer-$4.png" 2>"$log"
+  local line; line=$(tail -n 1 "$log")
+  local render rays; render=$(sed -E 's/.*: ([0-9.]+) s, .*/\1/' <<<"$line")
+  rays=$(sed -E 's/.*\(([0-9.]+) M rays\).*/\1/' <<<"$line")
+  read -r wall kib <"$log.time"
+  echo "$wall $render $(awk -v r="$rays" 'BEGIN{print r*1e6}') $((kib / 1024))"
+  rm -f "$log" "$log.time"
+}
+
+run_pov() {  # pov width height
+  local log; log=$(mktemp)
+  /usr/bin/time -f "%e %M" -o "$log.time" povray +I"$1" +O"$out/$(basename "$1" .pov)-pov.png" +W"$2" +H"$3" \
+    +A0.0 +AM1 +R3 -J +WT2 -D +FN >"$log" 2>&1
+  local render rays shadow
+  render=$(sed -nE 's/.*Trace Time:.*\(([0-9.]+) seconds\).*/\1/p' "$log" | tail -n 1)
+  rays=$(sed -nE 's/^Rays: *([0-9]+).*/\1/p' "$log" | tail -n 1)
+  shadow=$(sed -nE 's/^Shadow Ray Tests: *([0-9]+).*/\1/p' "$log" | tail -n 1)
+  read -r wall kib <"$log.time"
+  echo "$wall $render $((rays + ${shadow:-0})) $((kib / 1024))"
+  rm -f "$log" "$log.time"
+}
+
+# Median over `runs` of a runner's lines, column by column.
+measure() {
+  local lines=()
+  for _ in $(seq 1 "$runs"); do lines+=("$("$@")"); done
+  local cols=()
+  for c in 1 2 3 4; do cols+=("$(printf '%s\n' "${lines[@]}" | awk -v c="$c" '{print $c}' | median)"); done
+  echo "${cols[*]}"
+}
+
+printf '| scene | size | rays/pixel | renderer | wall s | render s | Mrays/s | peak MiB | POV wall / this |\n'
+printf '|---|---|---|---|---|---|---|---|---|\n'
+row() {  # scene size spp name "wall render rays mib" pov_wall
+  read -r wall render rays mib <<<"$5"
+  local mrays ratio
+  mrays=$(awk -v r="$rays" -v t="$render" 'BEGIN{ if (t > 0) printf "%.2f", r / t / 1e6; else print "-" }')
+  ratio=$(awk -v p="$6" -v w="$wall" 'BEGIN{ printf "%.2f", p / w }')
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$1" "$2" "$3" "$4" "$wall" "$render" "$mrays" "$mib" "$ratio"
+}
+
+bench_scene() {  # scene width height cpu_width cpu_height [pov_variant]
+  local name=$1 w=$2 h=$3 cw=$4 ch=$5 variant=${6:-parametric}
+  local toml=scenes/$name.toml pov=$out/$name.pov
+  python3 bench/toml_to_pov.py "$toml" --torus-as "$variant" >"$pov"
+  build/lancer render "$toml" --width 64 --height 36 -q -o "$out/warm.png"  # warm-up: Mesa's shader cache
+  povray +I"$pov" +O"$out/warm.png" +W64 +H36 -D +FN >/dev/null 2>&1 || true
+  local gpu cpu pov
+  gpu=$(measure run_lancer "$toml" "$w" "$h" gpu)
+  pov=$(measure run_pov "$pov" "$w" "$h")
+  local pov_wall; pov_wall=$(awk '{print $1}' <<<"$pov")
+  row "$name" "${w}x$h" 9 "lancer gpu" "$gpu" "$pov_wall"
+  if [ "$cw" = "$w" ]; then
+    cpu=$(measure run_lancer "$toml" "$w" "$h" cpu)
+    row "$name" "${w}x$h" 9 "lancer cpu reference" "$cpu" "$pov_wall"
+  fi
+  row "$name" "${w}x$h" "9 (+centre)" "POV-Ray 3.7, 2 threads" "$pov" "$pov_wall"
+  cp "$out/$name-lancer-gpu.png" "$out/$name-lancer.png"
+  build/lancer diff "$out/$name-lancer.png" "$out/$name-pov.png" --side-by-side "$out/$name-side.png" \
+    | sed 's/^/    /' >>"$out/psnr.txt"
+  if [ "$cw" != "$w" ]; then
+    # The CPU reference's exact patch algebra is far too slow for the full size: a smaller image.
+    cpu=$(measure run_lancer "$toml" "$cw" "$ch" cpu)
+    row "$name" "${cw}x$ch" 9 "lancer cpu reference" "$cpu" "-"
+  fi
+}
+
+: >"$out/psnr.txt"
+bench_scene seed 1280 720 1280 720
+bench_scene many 1280 720 1280 720
+bench_scene teapot 1280 720 320 180
+bench_scene torus 1280 720 320 180 analytic
+# POV-Ray's parametric (Lipschitz subdivision) needs minutes for even a small torus image.
+bench_scene torus 160 90 160 90 parametric
+
+# Start-up: a 1x1 render is nearly all instance, device, pipeline and shader-cache lookup.
+startup=$( { /usr/bin/time -f "%e" build/lancer render scenes/seed.toml --width 1 --height 1 --samples 1 -q \
+  -o "$out/warm.png"; } 2>&1 | tail -n 1)
+echo
+echo "lancer start-up (process for a 1x1 render of seed.toml: instance, device, pipeline): ${startup} s"
+echo
+echo "Same pictures? (lancer vs POV-Ray; side by side in $out/*-side.png):"
+cat "$out/psnr.txt"

@@ -1,0 +1,226 @@
+#!/usr/bin/env python3
+"""Writes a lancer scene as an equivalent POV-Ray 3.7 scene, for bench/run.sh: the same camera,
+lights, materials and geometry, so both renderers draw the same picture and their times can be
+compared. (A tool of the benchmark, not part of lancer.)
+
+    python3 bench/toml_to_pov.py scenes/seed.toml > seed.pov
+    python3 bench/toml_to_pov.py scenes/torus.toml --torus-as analytic > torus_analytic.pov
+
+Where lancer and POV-Ray differ (docs/scene-format.md, "Porting from POV-Ray"):
+- lancer mixes reflection as (1 - r) * local + r * reflected; POV adds r * reflected, so every
+  finish's ambient, diffuse and phong are lancer's times (1 - r);
+- lancer's fov is vertical, POV's camera angle horizontal;
+- lancer's max_depth counts bounces, POV's max_trace_level counts the camera ray too;
+- lancer stops following reflections below a weight of 1/1024: adc_bailout 1/1024.
+Both are left-handed with y up, so coordinates and rotations carry over unchanged.
+Bezier patches become bicubic_patch (POV tessellates them: type 1, its usual settings);
+parametric surfaces become POV's `parametric` (Lipschitz subdivision with max_gradient, accuracy
+0.001 and precompute), or with --torus-as analytic, a torus becomes POV's exact `torus`.
+"""
+import argparse
+import math
+import os
+import re
+import sys
+import tomllib
+
+
+def vec(v):
+    return "<%s>" % ", ".join("%.9g" % float(x) for x in v)
+
+
+def rgb(v):
+    return "rgb " + vec(v)
+
+
+def camera(scene):
+    r = scene.get("render", {})
+    w, h = r.get("width", 640), r.get("height", 480)
+    c = scene["camera"]
+    fov = c.get("fov", 60.0)
+    horizontal = 2 * math.degrees(math.atan(math.tan(math.radians(fov / 2)) * w / h))
+    up = c.get("up", [0, 1, 0])
+    return (f"camera {{ location {vec(c['eye'])} sky {vec(up)} look_at {vec(c['look_at'])}\n"
+            f"         right x * image_width / image_height angle {horizontal:.9g} }}\n")
+
+
+def finish(m):
+    r = m.get("reflection", 0.0)
+    k = 1.0 - r
+    return (f"finish {{ ambient {m.get('ambient', 0.1) * k:.9g} diffuse {m.get('diffuse', 0.6) * k:.9g} "
+            f"phong {m.get('specular', 0.0) * k:.9g} phong_size {m.get('shininess', 40.0):.9g} reflection {r:.9g} }}")
+
+
+def pigment(m):
+    if "checker" in m:
+        c = m["checker"]
+        return (f"pigment {{ checker {rgb(c['colors'][0])}, {rgb(c['colors'][1])} "
+                f"scale {c.get('size', 1.0):.9g} }}")
+    return f"pigment {{ {rgb(m.get('color', [1, 1, 1]))} }}"
+
+
+def transform(t):
+    if t is None:
+        return ""
+    steps = t if isinstance(t, list) else [t]
+    out = []
+    for s in steps:
+        if "scale" in s:
+            sc = s["scale"]
+            out.append("scale " + (vec(sc) if isinstance(sc, list) else "%.9g" % sc))
+        if "rotate" in s:
+            out.append("rotate " + vec(s["rotate"]))
+        if "translate" in s:
+            out.append("translate " + vec(s["translate"]))
+    return " ".join(out)
+
+
+def read_bpt(path):
+    """Patches of a BPT file as lists of 16 (x, y, z); weights are not supported by POV."""
+    numbers = []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].replace(",", " ")
+            numbers.extend(float(x) for x in line.split())
+    count = int(numbers[0])
+    pos, patches = 1, []
+    for _ in range(count):
+        pos += 2  # "3 3"
+        pts = []
+        for _ in range(16):
+            pts.append(numbers[pos:pos + 3])
+            pos += 3
+        patches.append(pts)
+    return patches
+
+
+def bezier(o, base):
+    if "file" in o:
+        patches = read_bpt(os.path.join(base, o["file"]))
+    elif "patches" in o:
+        patches = o["patches"]
+    else:
+        patches = [o["control_points"]]
+    parts = []
+    for p in patches:
+        pts = ",\n    ".join(vec(q) for q in p)
+        # POV-Ray's usual teapot settings: a type 1 patch (subdivision tree kept) of 3 + 3 steps.
+        parts.append(f"  bicubic_patch {{ type 1 flatness 0 u_steps 3 v_steps 3\n    {pts} }}")
+    return "union {\n" + "\n".join(parts) + "\n"
+
+
+# lancer's expression functions in POV-Ray's function syntax (POV's log is base 10, ln natural).
+POV_FUNCTIONS = {"log": "ln", "log10": "log", "sqr": "pow(%s,2)", "cbrt": "pow(%s,1/3)", "exp2": "pow(2,%s)",
+                 "log2": "(ln(%s)/ln(2))", "hypot": "sqrt(pow(%s,2)+pow(%s,2))"}
+
+
+def pov_expression(text, params):
+    for name, value in params.items():
+        text = re.sub(r"\b%s\b" % re.escape(name), "(%.17g)" % value, text)
+    for name, pov in POV_FUNCTIONS.items():
+        if "%s" not in pov:
+            text = re.sub(r"\b%s\(" % name, pov + "(", text)
+    return text
+
+
+def py_function(text, params):
+    env = {"pi": math.pi, "e": math.e, **{k: float(v) for k, v in params.items()}}
+    py = text.replace("^", "**")
+    funcs = {n: getattr(math, n) for n in ("sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh",
+                                           "tanh", "exp", "log", "sqrt", "log10", "log2", "hypot")}
+    funcs.update({"abs": abs, "min": min, "max": max, "pow": math.pow, "sqr": lambda x: x * x,
+                  "cbrt": lambda x: math.copysign(abs(x) ** (1 / 3), x), "exp2": lambda x: 2 ** x})
+    code = compile(py, "<expr>", "eval")
+    return lambda u, v: eval(code, {"__builtins__": {}}, {**funcs, **env, "u": u, "v": v})
+
+
+def bound(b, params):
+    return float(b) if not isinstance(b, str) else py_function(b, params)(0.0, 0.0)
+
+
+def parametric(o):
+    params = o.get("params", {})
+    u0, u1 = (bound(b, params) for b in o["u"])
+    v0, v1 = (bound(b, params) for b in o["v"])
+    fx, fy, fz = (py_function(o[a], params) for a in "xyz")
+    # contained_by box and max_gradient from a dense sample of the surface and its differences.
+    n = 200
+    lo, hi, grad = [1e30] * 3, [-1e30] * 3, 0.0
+    du, dv = (u1 - u0) / n, (v1 - v0) / n
+    for i in range(n + 1):
+        for j in range(n + 1):
+            u, v = u0 + i * du, v0 + j * dv
+            p = (fx(u, v), fy(u, v), fz(u, v))
+            for k in range(3):
+                lo[k], hi[k] = min(lo[k], p[k]), max(hi[k], p[k])
+            if i < n and j < n:
+                pu = (fx(u + du, v), fy(u + du, v), fz(u + du, v))
+                pv = (fx(u, v + dv), fy(u, v + dv), fz(u, v + dv))
+                for k in range(3):
+                    grad = max(grad, abs(pu[k] - p[k]) / du, abs(pv[k] - p[k]) / dv)
+    pad = [0.01 * (h - l) + 1e-3 for l, h in zip(lo, hi)]
+    box = f"box {{ {vec([l - q for l, q in zip(lo, pad)])}, {vec([h + q for h, q in zip(hi, pad)])} }}"
+    funcs = "\n".join(f"  function {{ {pov_expression(o[a], params)} }}" for a in "xyz")
+    return (f"parametric {{\n{funcs}\n  <{u0:.17g}, {v0:.17g}>, <{u1:.17g}, {v1:.17g}>\n"
+            f"  contained_by {{ {box} }}\n  max_gradient {1.1 * grad:.6g} accuracy 0.001 precompute 12 x, y, z\n")
+
+
+def analytic_torus(o):
+    """POV's exact torus for the lancer torus (R + r cos v) cos u, r sin v, (R + r cos v) sin u."""
+    p = o.get("params", {})
+    return f"torus {{ {p['R']:.9g}, {p['r']:.9g}\n"
+
+
+def objects(scene, base, torus_as):
+    out = []
+    for o in scene.get("object", []):
+        t = o["type"]
+        if t == "sphere":
+            body = f"sphere {{ {vec(o['center'])}, {o['radius']:.9g}\n"
+        elif t == "plane":
+            n = o["normal"]
+            length = math.sqrt(sum(x * x for x in n))
+            n = [x / length for x in n]
+            d = sum(a * b for a, b in zip(n, o.get("point", [0, 0, 0])))
+            body = f"plane {{ {vec(n)}, {d:.9g}\n"
+        elif t == "rectangle":
+            c, eu, ev = o["corner"], o["edge_u"], o["edge_v"]
+            pts = [c, [a + b for a, b in zip(c, eu)], [a + b + d for a, b, d in zip(c, eu, ev)],
+                   [a + d for a, d in zip(c, ev)], c]
+            body = "polygon { 5, " + ", ".join(vec(p) for p in pts) + "\n"
+        elif t == "box":
+            body = f"box {{ {vec(o['min'])}, {vec(o['max'])}\n"
+        elif t == "bezier":
+            body = bezier(o, base)
+        elif t == "parametric":
+            body = analytic_torus(o) if torus_as == "analytic" else parametric(o)
+        else:
+            sys.exit(f"toml_to_pov: object type {t} is not supported")
+        mat = scene.get("material", {}).get(o.get("material", ""), {})
+        out.append(body + f"  {pigment(mat)}\n  {finish(mat)}\n  {transform(o.get('transform'))}\n}}\n")
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("scene")
+    ap.add_argument("--torus-as", choices=["parametric", "analytic"], default="parametric")
+    args = ap.parse_args()
+    with open(args.scene, "rb") as f:
+        scene = tomllib.load(f)
+    r = scene.get("render", {})
+    amb = scene.get("ambient", {}).get("color", [1, 1, 1])
+    print(f"// Generated from {args.scene} by bench/toml_to_pov.py. Do not edit.")
+    print("#version 3.7;")
+    print(f"global_settings {{ assumed_gamma 1.0 ambient_light {rgb(amb)} "
+          f"max_trace_level {r.get('max_depth', 5) + 1} adc_bailout 1/1024 }}")
+    print(camera(scene))
+    print(f"background {{ {rgb(r.get('background', [0, 0, 0]))} }}")
+    for light in scene.get("light", []):
+        print(f"light_source {{ {vec(light['position'])} color {rgb(light.get('color', [1, 1, 1]))} }}")
+    print()
+    print("\n".join(objects(scene, os.path.dirname(args.scene), args.torus_as)))
+
+
+if __name__ == "__main__":
+    main()
