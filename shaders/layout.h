@@ -125,10 +125,16 @@ struct FrameParams {
     uint unbounded_count;  // the last unbounded_count primitives are tested by every ray
 };
 
-// Push constants: which band of rows this dispatch renders.
+// Push constants: which band of rows this dispatch renders, and which of each pixel's N x N
+// grid samples it traces, in the order a whole render traces them (k = j * N + i, row by row).
+// A pass that does not start at sample 0 continues the sums the output buffer holds, and only
+// the pass that ends at sample N * N divides by N * N: passes add the same floats in the same
+// order as one full render, so progressive refinement ends on exactly that image.
 struct BandParams {
     uint y0;
     uint rows;
+    uint sample_first;
+    uint sample_count;
 };
 
 #ifdef __cplusplus
@@ -139,7 +145,7 @@ static_assert(sizeof(BvhNode) == 48);
 static_assert(sizeof(PatchLeaf) == 288);
 static_assert(sizeof(SurfaceInfo) == 64);
 static_assert(sizeof(FrameParams) == 128);
-static_assert(sizeof(BandParams) == 8);
+static_assert(sizeof(BandParams) == 16);
 }  // namespace lancer::gpu
 #endif
 

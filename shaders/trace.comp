@@ -10,7 +10,8 @@ layout(local_size_x = WORKGROUP_X, local_size_y = WORKGROUP_Y, local_size_z = 1)
 
 layout(push_constant) uniform BandBlock { BandParams band; };
 // rgb = linear colour, a = number of rays traced for this pixel (camera + shadow + reflection).
-layout(std430, set = 0, binding = BINDING_OUTPUT) writeonly buffer OutputBlock { vec4 pixels[]; };
+// Between the passes of a progressive render: rgb = the sum of the samples so far.
+layout(std430, set = 0, binding = BINDING_OUTPUT) buffer OutputBlock { vec4 pixels[]; };
 
 #include "common.glsl"
 #include "scene.glsl"
@@ -71,12 +72,17 @@ void main() {
     }
 
     float n = float(frame.samples);
+    uint total = frame.samples * frame.samples;
+    uint last = min(band.sample_first + band.sample_count, total);
     vec3 sum = vec3(0.0);
     float rays = 0.0;
-    for (uint j = 0u; j < frame.samples; ++j) {
-        for (uint i = 0u; i < frame.samples; ++i) {
-            sum += trace(camera_ray(vec2(pixel) + (vec2(i, j) + 0.5) / n), rays);
-        }
+    if (band.sample_first > 0u) {  // continue the sums of the passes before (see BandParams)
+        sum = pixels[out_index].rgb;
+        rays = pixels[out_index].a;
     }
-    pixels[out_index] = vec4(sum / (n * n), rays);
+    for (uint k = band.sample_first; k < last; ++k) {
+        uvec2 ij = uvec2(k % frame.samples, k / frame.samples);
+        sum += trace(camera_ray(vec2(pixel) + (vec2(ij) + 0.5) / n), rays);
+    }
+    pixels[out_index] = last == total ? vec4(sum / (n * n), rays) : vec4(sum, rays);
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 #include <type_traits>
 
 #include "gpu/embedded_shaders.hpp"
@@ -185,7 +186,7 @@ void GpuRenderer::update_descriptors() {
     descriptors_dirty_ = false;
 }
 
-void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, double done,
+void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t width, double done,
                                 const ProgressFn& progress) {
     VkDevice device = context_->device();
     VK_CHECK(vkResetCommandBuffer(command_buffer_, 0));
@@ -195,10 +196,9 @@ void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint3
     vkCmdBindPipeline(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->handle());
     vkCmdBindDescriptorSets(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_->pipeline_layout(), 0, 1,
                             &descriptor_set_, 0, nullptr);
-    gpu::BandParams band{y0, rows};
     vkCmdPushConstants(command_buffer_, layout_->pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(band), &band);
     vkCmdDispatch(command_buffer_, (width + gpu::WORKGROUP_X - 1) / gpu::WORKGROUP_X,
-                  (rows + gpu::WORKGROUP_Y - 1) / gpu::WORKGROUP_Y, 1);
+                  (band.rows + gpu::WORKGROUP_Y - 1) / gpu::WORKGROUP_Y, 1);
     // Make the shader's writes visible to the host's read of the mapped output.
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -224,16 +224,32 @@ void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint3
 }
 
 FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
-    return render_with(scene, false, progress);
+    FloatImage image;
+    auto all = static_cast<std::uint32_t>(scene.render.samples * scene.render.samples);
+    render_with(scene, false, {0, all}, image, progress);
+    return image;
 }
 
-FloatImage GpuRenderer::render_hits(const Scene& scene) { return render_with(scene, true, {}); }
+FloatImage GpuRenderer::render_hits(const Scene& scene) {
+    FloatImage image;
+    render_with(scene, true, {0, 1}, image, {});
+    return image;
+}
 
-FloatImage GpuRenderer::render_with(const Scene& scene, bool output_hits, const ProgressFn& progress) {
+void GpuRenderer::render_samples(const Scene& scene, std::uint32_t first, std::uint32_t count, FloatImage& sums,
+                                 const ProgressFn& progress) {
+    render_with(scene, false, {first, count}, sums, progress);
+}
+
+void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange samples, FloatImage& image,
+                              const ProgressFn& progress) {
     const RenderSettings& rs = scene.render;
     const auto width = static_cast<std::uint32_t>(rs.width);
     const auto height = static_cast<std::uint32_t>(rs.height);
     const std::size_t row_bytes = std::size_t(width) * sizeof(gpu::vec4);
+    const bool continues = samples.first > 0;
+    if (continues && (image.width != rs.width || image.height != rs.height))
+        throw std::logic_error("render_samples: the sums so far are not of the scene's size");
 
     std::size_t max_rows = std::max<std::size_t>(1, context_->limits().maxStorageBufferRange / row_bytes);
     std::size_t rows = std::clamp<std::size_t>(kBandPixels / width, gpu::WORKGROUP_Y, height);
@@ -246,14 +262,15 @@ FloatImage GpuRenderer::render_with(const Scene& scene, bool output_hits, const 
     ensure_output(rows * row_bytes);
     update_descriptors();
 
-    FloatImage image(rs.width, rs.height);
+    if (!continues) image = FloatImage(rs.width, rs.height);
     for (std::uint32_t y0 = 0; y0 < height; y0 += static_cast<std::uint32_t>(rows)) {
         auto band_rows = static_cast<std::uint32_t>(std::min<std::size_t>(rows, height - y0));
-        dispatch_band(y0, band_rows, width, double(y0) / height, progress);
-        std::memcpy(&image.pixels[std::size_t(y0) * width], output_.data(), band_rows * row_bytes);
+        glm::vec4* band_pixels = &image.pixels[std::size_t(y0) * width];
+        if (continues) std::memcpy(output_.data(), band_pixels, band_rows * row_bytes);
+        dispatch_band({y0, band_rows, samples.first, samples.count}, width, double(y0) / height, progress);
+        std::memcpy(band_pixels, output_.data(), band_rows * row_bytes);
         if (progress && !progress(double(y0 + band_rows) / height)) throw RenderCancelled();
     }
-    return image;
 }
 
 }  // namespace lancer

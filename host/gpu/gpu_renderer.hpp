@@ -32,6 +32,13 @@ public:
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
     FloatImage render_hits(const Scene& scene) override;
 
+    // Progressive rendering (the viewer): traces samples [first, first + count) of every pixel's
+    // N x N grid, continuing `sums`, which holds what the passes before left (ignored, and
+    // resized, when first == 0). Between passes its pixels are unnormalised sums (rgb) and ray
+    // counts (a); the pass that reaches sample N * N leaves exactly the image render() returns.
+    void render_samples(const Scene& scene, std::uint32_t first, std::uint32_t count, FloatImage& sums,
+                        const ProgressFn& progress);
+
     const gpu::Context& context() const { return *context_; }
     const UploadStats& last_upload() const { return last_upload_; }
 
@@ -52,8 +59,13 @@ private:
     void select_pipeline(const gpu::PipelineVariant& variant);
     void ensure_output(std::size_t bytes);
     void update_descriptors();
-    FloatImage render_with(const Scene& scene, bool output_hits, const ProgressFn& progress);
-    void dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, double done, const ProgressFn& progress);
+    struct SampleRange {
+        std::uint32_t first, count;
+    };
+    // Renders `samples` of every pixel into `image`, which holds the sums so far when first > 0.
+    void render_with(const Scene& scene, bool output_hits, SampleRange samples, FloatImage& image,
+                     const ProgressFn& progress);
+    void dispatch_band(const gpu::BandParams& band, std::uint32_t width, double done, const ProgressFn& progress);
 
     std::unique_ptr<gpu::Context> context_;
     std::unique_ptr<gpu::TraceLayout> layout_;
