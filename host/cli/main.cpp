@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     std::vector<lancer::Subcommand> commands = {
         lancer::add_render_command(app),
         lancer::add_watch_command(app),
+        lancer::add_view_command(app),
     };
 
     try {

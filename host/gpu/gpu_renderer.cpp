@@ -252,7 +252,9 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
         throw std::logic_error("render_samples: the sums so far are not of the scene's size");
 
     std::size_t max_rows = std::max<std::size_t>(1, context_->limits().maxStorageBufferRange / row_bytes);
-    std::size_t rows = std::clamp<std::size_t>(kBandPixels / width, gpu::WORKGROUP_Y, height);
+    std::size_t band_pixels = kBandPixels;
+    if (max_dispatch_samples_) band_pixels = std::min(band_pixels, max_dispatch_samples_ / std::max<std::uint32_t>(1, samples.count));
+    std::size_t rows = std::clamp<std::size_t>(band_pixels / width, gpu::WORKGROUP_Y, height);
     rows = std::min(rows, max_rows);
 
     gpu::PipelineVariant variant = upload_scene(scene);

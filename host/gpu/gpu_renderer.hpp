@@ -38,6 +38,10 @@ public:
     // counts (a); the pass that reaches sample N * N leaves exactly the image render() returns.
     void render_samples(const Scene& scene, std::uint32_t first, std::uint32_t count, FloatImage& sums,
                         const ProgressFn& progress);
+    // Caps the camera samples of one dispatch (0: no cap, bands of about 128 K pixels). A cancel
+    // waits for the dispatch in flight, so the viewer, which cancels whenever the camera moves,
+    // asks for small ones.
+    void set_max_dispatch_samples(std::size_t samples) { max_dispatch_samples_ = samples; }
 
     const gpu::Context& context() const { return *context_; }
     const UploadStats& last_upload() const { return last_upload_; }
@@ -94,6 +98,7 @@ private:
     std::vector<gpu::Material> materials_shadow_;
     std::vector<gpu::Light> lights_shadow_;
     UploadStats last_upload_;
+    std::size_t max_dispatch_samples_ = 0;
 };
 
 }  // namespace lancer
