@@ -34,7 +34,15 @@ SdlDisplay::SdlDisplay(const std::string& title, int width, int height) : width_
         throw UserError("cannot open a window: SDL found no display it can use (DISPLAY=" +
                         std::string(std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "") + ")");
     }
-    window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, width, height,
+    // A picture larger than the screen gets a window that fits, showing it scaled down.
+    int window_w = width, window_h = height;
+    SDL_Rect usable;
+    if (SDL_GetDisplayUsableBounds(0, &usable) == 0 && usable.w > 0 && usable.h > 0) {
+        double fit = std::min({1.0, double(usable.w) / width, double(usable.h) / height});
+        window_w = std::max(1, int(width * fit));
+        window_h = std::max(1, int(height * fit));
+    }
+    window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED, window_w, window_h,
                                SDL_WINDOW_RESIZABLE);
     if (!window_) {
         std::string message = sdl_error("cannot open a window");
@@ -44,6 +52,18 @@ SdlDisplay::SdlDisplay(const std::string& title, int width, int height) : width_
     renderer_ = SDL_CreateRenderer(window_, -1, 0);
     if (!renderer_) {
         std::string message = sdl_error("cannot draw in the window (SDL_CreateRenderer)");
+        SDL_DestroyWindow(window_);
+        SDL_Quit();
+        throw UserError(message);
+    }
+    SDL_RendererInfo info{};
+    SDL_GetRendererInfo(renderer_, &info);
+    if ((info.max_texture_width && width > info.max_texture_width) ||
+        (info.max_texture_height && height > info.max_texture_height)) {
+        std::string message = "the picture is " + std::to_string(width) + "x" + std::to_string(height) +
+                              ", larger than the window can show (" + std::to_string(info.max_texture_width) + "x" +
+                              std::to_string(info.max_texture_height) + "); view it smaller with --width and --height";
+        SDL_DestroyRenderer(renderer_);
         SDL_DestroyWindow(window_);
         SDL_Quit();
         throw UserError(message);
@@ -77,9 +97,6 @@ void SdlDisplay::show(const Rgb8Image& image) {
         if (!picture_) throw std::runtime_error(sdl_error("SDL_CreateTexture"));
         picture_w_ = image.width;
         picture_h_ = image.height;
-        // Previews are smaller than the window: smooth them; the full picture is shown 1:1.
-        bool smaller = image.width < width_ || image.height < height_;
-        SDL_SetTextureScaleMode(picture_, smaller ? SDL_ScaleModeLinear : SDL_ScaleModeNearest);
     }
     SDL_UpdateTexture(picture_, nullptr, image.bytes.data(), image.width * 3);
     upload_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -112,7 +129,15 @@ void SdlDisplay::make_help_texture() {
 void SdlDisplay::draw() {
     SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
     SDL_RenderClear(renderer_);
-    if (picture_) SDL_RenderCopy(renderer_, picture_, nullptr, nullptr);
+    if (picture_) {
+        // Scaled pictures (previews, a resized window, one larger than the screen) are drawn
+        // smoothly; one shown 1:1 keeps its exact pixels.
+        int out_w = 0, out_h = 0;
+        SDL_GetRendererOutputSize(renderer_, &out_w, &out_h);
+        bool one_to_one = picture_w_ == out_w && picture_h_ == out_h;
+        SDL_SetTextureScaleMode(picture_, one_to_one ? SDL_ScaleModeNearest : SDL_ScaleModeLinear);
+        SDL_RenderCopy(renderer_, picture_, nullptr, nullptr);
+    }
     if (help_visible_) {
         SDL_Rect where{8, 8, std::min(help_w_, width_ - 8), std::min(help_h_, height_ - 8)};
         SDL_Rect part{0, 0, where.w, where.h};

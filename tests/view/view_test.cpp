@@ -137,6 +137,10 @@ protected:
         } catch (const std::exception& e) {
             FAIL() << e.what();  // never skipped: setup.sh installs Xvfb
         }
+        for (const char* tool : {"xdotool", "xwd"})
+            if (!test::have_program(tool))
+                FAIL() << tool << " is not installed: the viewer's tests need it (Debian packages xdotool, x11-apps; "
+                       << "./setup.sh installs them)";
         ::setenv("DISPLAY", x->display().c_str(), 1);  // the viewer and the X tools inherit it
         const auto* info = testing::UnitTest::GetInstance()->current_test_info();
         dir = fs::path(test::output_dir()) / (std::string("view-") + info->name());
