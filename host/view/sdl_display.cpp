@@ -21,18 +21,20 @@ SdlDisplay::SdlDisplay(const std::string& title, int width, int height) : width_
     // lancer handles SIGINT and SIGTERM itself (a signalfd in the file watcher); SDL's handlers
     // would race with it.
     SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
-    // Without a display SDL falls back to its offscreen driver: a window nobody sees, and a
-    // viewer that runs forever. Say so instead (SDL_VIDEODRIVER still chooses explicitly).
+    // Without a display SDL would fall back to its offscreen driver: a window nobody sees, and
+    // a viewer that runs forever. Say so instead (SDL_VIDEODRIVER still chooses explicitly).
     auto set = [](const char* name) { return std::getenv(name) && *std::getenv(name); };
     const bool driver_chosen = set("SDL_VIDEODRIVER");
     if (!driver_chosen && !set("DISPLAY") && !set("WAYLAND_DISPLAY"))
         throw UserError("cannot open a window: no display (neither DISPLAY nor WAYLAND_DISPLAY is set)");
-    if (SDL_Init(SDL_INIT_VIDEO) != 0) throw UserError(sdl_error("cannot open a window (SDL_Init)"));
-    const std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
-    if (!driver_chosen && (driver == "offscreen" || driver == "dummy")) {
-        SDL_Quit();
-        throw UserError("cannot open a window: SDL found no display it can use (DISPLAY=" +
-                        std::string(std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "") + ")");
+    // Only the display that is there: probing others (Wayland without a compositor) prints its
+    // own complaints, and SDL's last resort is an invisible window.
+    if (!driver_chosen) SDL_SetHint(SDL_HINT_VIDEODRIVER, set("WAYLAND_DISPLAY") ? "wayland,x11" : "x11");
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+        auto value = [&](const char* name) { return set(name) ? std::string(std::getenv(name)) : std::string(); };
+        std::string where = driver_chosen ? "with SDL_VIDEODRIVER=" + value("SDL_VIDEODRIVER")
+                                          : "on display '" + (set("DISPLAY") ? value("DISPLAY") : value("WAYLAND_DISPLAY")) + "'";
+        throw UserError(sdl_error("cannot open a window " + where));
     }
     // A picture larger than the screen gets a window that fits, showing it scaled down.
     int window_w = width, window_h = height;

@@ -439,6 +439,7 @@ void expect_user_error(const std::string& args, const std::string& env, const st
 TEST(ViewErrors, AreOneLineAndExitCode2) {
     std::string scene = test::source_path("scenes/seed.toml");
     expect_user_error("view " + scene, "DISPLAY= WAYLAND_DISPLAY=", "cannot open a window: no display");
+    expect_user_error("view " + scene, "DISPLAY=:65000 WAYLAND_DISPLAY=", "cannot open a window on display ':65000'");
     expect_user_error("view " + test::source_path("tests/data/bad/negative_radius.toml"), "DISPLAY=:0",
                       "sphere radius must be positive");
     expect_user_error("view " + scene + " --backend cpu", "", "GPU only");
