@@ -27,14 +27,12 @@ XServer::XServer() {
         throw std::runtime_error("Xvfb is not installed: the viewer's tests need it (Debian package xvfb; ./setup.sh installs it)");
     int fds[2];
     if (::pipe(fds) != 0) throw std::runtime_error("pipe failed");
+    log_ = output_dir() + "/xvfb-" + std::to_string(::getpid()) + ".log";
     pid_ = ::fork();
     if (pid_ == 0) {
         ::close(fds[0]);
-        // Its own process group, so that nothing it starts outlives the test.
-        ::setpgid(0, 0);
         std::string fd = std::to_string(fds[1]);
-        std::string log = output_dir() + "/xvfb-" + std::to_string(::getpid()) + ".log";
-        FILE* f = std::freopen(log.c_str(), "w", stderr);
+        FILE* f = std::freopen(log_.c_str(), "w", stderr);
         (void)f;
         ::execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1024x768x24", "-nolisten", "tcp", "-noreset",
                  static_cast<char*>(nullptr));
@@ -58,7 +56,7 @@ XServer::XServer() {
         ::kill(pid_, SIGKILL);
         ::waitpid(pid_, nullptr, 0);
         pid_ = -1;
-        throw std::runtime_error("Xvfb did not start (see build/test-output/xvfb-*.log)");
+        throw std::runtime_error("Xvfb did not start (see " + log_ + ")");
     }
     display_ = ":" + number;
 }
@@ -67,6 +65,7 @@ XServer::~XServer() {
     if (pid_ > 0) {
         ::kill(pid_, SIGTERM);
         ::waitpid(pid_, nullptr, 0);
+        std::remove(log_.c_str());  // only kept when Xvfb did not start
     }
 }
 

@@ -35,6 +35,7 @@ public:
 private:
     pid_t pid_ = -1;
     std::string display_;
+    std::string log_;  // Xvfb's messages
 };
 
 // Reads an XWD file (xwd's format: a big-endian header, a colour map, then the pixels) of a
