@@ -14,13 +14,18 @@ double FrameStats::median(std::vector<double> values) {
 }
 
 std::string FrameStats::summary(const std::string& renderer_name) const {
-    double slowest = responses_.empty() ? 0.0 : *std::max_element(responses_.begin(), responses_.end());
+    std::string moves = "view: the camera did not move";
+    if (!responses_.empty()) {
+        double slowest = *std::max_element(responses_.begin(), responses_.end());
+        moves = fmt::format("view: camera move to picture median {:.1f} ms (max {:.0f} ms); {} preview(s) (median {:.1f} "
+                            "ms, last at 1/{} size)",
+                            median(responses_), slowest, previews_.size(), median(previews_), last_divisor_);
+    }
     return fmt::format(
-        "view: camera move to picture median {:.1f} ms (max {:.0f} ms); {} preview(s) (median {:.1f} ms, last at 1/{} "
-        "size); {} refinement(s) (median {:.0f} ms; passes median {:.1f} ms, full-size to sRGB median {:.2f} ms); window "
+        "{}; {} refinement(s) (median {:.0f} ms; passes median {:.1f} ms, full-size to sRGB median {:.2f} ms); window "
         "(SDL renderer '{}'): upload median {:.2f} ms, draw and present median {:.2f} ms",
-        median(responses_), slowest, previews_.size(), median(previews_), last_divisor_, refinements_.size(),
-        median(refinements_), median(passes_), median(converts_), renderer_name, median(uploads_), median(presents_));
+        moves, refinements_.size(), median(refinements_), median(passes_), median(converts_), renderer_name,
+        median(uploads_), median(presents_));
 }
 
 }  // namespace lancer::view
