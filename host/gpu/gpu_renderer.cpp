@@ -253,7 +253,8 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
 
     std::size_t max_rows = std::max<std::size_t>(1, context_->limits().maxStorageBufferRange / row_bytes);
     std::size_t band_pixels = kBandPixels;
-    if (max_dispatch_samples_) band_pixels = std::min(band_pixels, max_dispatch_samples_ / std::max<std::uint32_t>(1, samples.count));
+    if (max_dispatch_samples_)
+        band_pixels = std::min(band_pixels, max_dispatch_samples_ / std::max<std::uint32_t>(1, samples.count));
     std::size_t rows = std::clamp<std::size_t>(band_pixels / width, gpu::WORKGROUP_Y, height);
     rows = std::min(rows, max_rows);
 
@@ -267,10 +268,10 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
     if (!continues) image = FloatImage(rs.width, rs.height);
     for (std::uint32_t y0 = 0; y0 < height; y0 += static_cast<std::uint32_t>(rows)) {
         auto band_rows = static_cast<std::uint32_t>(std::min<std::size_t>(rows, height - y0));
-        glm::vec4* band_pixels = &image.pixels[std::size_t(y0) * width];
-        if (continues) std::memcpy(output_.data(), band_pixels, band_rows * row_bytes);
+        glm::vec4* band_start = &image.pixels[std::size_t(y0) * width];
+        if (continues) std::memcpy(output_.data(), band_start, band_rows * row_bytes);
         dispatch_band({y0, band_rows, samples.first, samples.count}, width, double(y0) / height, progress);
-        std::memcpy(band_pixels, output_.data(), band_rows * row_bytes);
+        std::memcpy(band_start, output_.data(), band_rows * row_bytes);
         if (progress && !progress(double(y0 + band_rows) / height)) throw RenderCancelled();
     }
 }

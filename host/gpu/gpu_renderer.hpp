@@ -36,6 +36,7 @@ public:
     // N x N grid, continuing `sums`, which holds what the passes before left (ignored, and
     // resized, when first == 0). Between passes its pixels are unnormalised sums (rgb) and ray
     // counts (a); the pass that reaches sample N * N leaves exactly the image render() returns.
+    // A cancelled pass (RenderCancelled) leaves `sums` half advanced: start again from 0.
     void render_samples(const Scene& scene, std::uint32_t first, std::uint32_t count, FloatImage& sums,
                         const ProgressFn& progress);
     // Caps the camera samples of one dispatch (0: no cap, bands of about 128 K pixels). A cancel
