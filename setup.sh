@@ -21,6 +21,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg
+  libsdl2-dev xvfb xdotool x11-apps
 )
 
 missing=()

@@ -132,7 +132,10 @@ struct FrameParams {
 };
 
 // Push constants: which band of rows this dispatch renders, and which of each pixel's N x N
-// samples (row-major in the grid). The first pass of a band writes, later passes add.
+// grid samples it traces, in the order a whole render traces them (k = j * N + i, row by row).
+// A pass that does not start at sample 0 continues the sums the output buffer holds, and only
+// the pass that ends at sample N * N divides by N * N: passes add the same floats in the same
+// order as one full render, so progressive refinement ends on exactly that image.
 struct BandParams {
     uint y0;
     uint rows;

@@ -10,8 +10,9 @@
 layout(local_size_x = WORKGROUP_X, local_size_y = WORKGROUP_Y, local_size_z = 1) in;
 
 layout(push_constant) uniform BandBlock { BandParams band; };
-// rgb = the sum of the pixel's samples so far (linear), a = rays traced for it (camera, shadow,
-// reflection), or -1 when an invocation was cut short by the driver (see loop_limit_reached).
+// rgb = linear colour, a = number of rays traced for this pixel (camera + shadow + reflection).
+// Between the passes of a progressive render: rgb = the sum of the samples so far. a = -1 marks
+// an invocation the driver cut short (see loop_limit_reached).
 layout(std430, set = 0, binding = BINDING_OUTPUT) buffer OutputBlock { vec4 pixels[]; };
 
 #include "common.glsl"
@@ -87,14 +88,23 @@ void main() {
         return;
     }
 
-    uint n = frame.samples;
+    float n = float(frame.samples);
+    uint total = frame.samples * frame.samples;
+    uint last = min(band.sample_first + band.sample_count, total);
     vec3 sum = vec3(0.0);
     float rays = 0.0;
-    for (uint s = band.sample_first; s < band.sample_first + band.sample_count; ++s) {
-        vec2 offset = (vec2(s % n, s / n) + 0.5) / float(n);
-        sum += trace(camera_ray(vec2(pixel) + offset), rays);
+    if (band.sample_first > 0u) {  // continue the sums of the passes before (see BandParams)
+        sum = pixels[out_index].rgb;
+        rays = pixels[out_index].a;
     }
-    vec4 previous = band.sample_first == 0u ? vec4(0.0) : pixels[out_index];
-    bool cut_short = CHECK_LOOP_LIMIT && loop_limit_reached();
-    pixels[out_index] = previous.a < 0.0 || cut_short ? vec4(0.0, 0.0, 0.0, -1.0) : previous + vec4(sum, rays);
+    bool marked = rays < 0.0;  // an earlier pass was cut short
+    for (uint k = band.sample_first; k < last; ++k) {
+        uvec2 ij = uvec2(k % frame.samples, k / frame.samples);
+        sum += trace(camera_ray(vec2(pixel) + (vec2(ij) + 0.5) / n), rays);
+    }
+    if (marked || (CHECK_LOOP_LIMIT && loop_limit_reached())) {
+        pixels[out_index] = vec4(0.0, 0.0, 0.0, -1.0);
+        return;
+    }
+    pixels[out_index] = last == total ? vec4(sum / (n * n), rays) : vec4(sum, rays);
 }

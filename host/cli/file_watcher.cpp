@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include <poll.h>
+#include <sys/eventfd.h>
 #include <sys/inotify.h>
 #include <unistd.h>
 
@@ -27,10 +28,17 @@ bool ends_with_any(const std::string& name, const std::set<std::string>& suffixe
 FileWatcher::FileWatcher() {
     inotify_fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
     if (inotify_fd_ < 0) throw UserError(std::string("cannot watch files (inotify): ") + std::strerror(errno));
+    interrupt_fd_ = ::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
 }
 
 FileWatcher::~FileWatcher() {
     if (inotify_fd_ >= 0) ::close(inotify_fd_);
+    if (interrupt_fd_ >= 0) ::close(interrupt_fd_);
+}
+
+void FileWatcher::interrupt() {
+    std::uint64_t one = 1;
+    [[maybe_unused]] ssize_t n = ::write(interrupt_fd_, &one, sizeof(one));
 }
 
 void FileWatcher::add_dir(const fs::path& dir) {
@@ -62,12 +70,13 @@ FileWatcher::Result FileWatcher::wait(std::chrono::milliseconds quiet) {
     alignas(inotify_event) char buffer[16 * 1024];
     for (;;) {
         if (signal_pending()) return {Wake::Signal, {}};
-        pollfd fds[2] = {{inotify_fd_, POLLIN, 0}, {interrupts_.fd(), POLLIN, 0}};
+        pollfd fds[3] = {{inotify_fd_, POLLIN, 0}, {interrupts_.fd(), POLLIN, 0}, {interrupt_fd_, POLLIN, 0}};
         // Until something changed, wait indefinitely; then only for the quiet period.
         int timeout = result.changed.empty() ? -1 : static_cast<int>(quiet.count());
-        int ready = ::poll(fds, 2, timeout);
+        int ready = ::poll(fds, 3, timeout);
         if (ready < 0 && errno == EINTR) continue;
         if (ready == 0) return result;  // quiet long enough after a change
+        if (fds[2].revents & POLLIN) return {Wake::Interrupted, {}};
         if (fds[1].revents & POLLIN) continue;  // handled by signal_pending() above
         ssize_t n = ::read(inotify_fd_, buffer, sizeof(buffer));
         for (ssize_t offset = 0; n > 0 && offset < n;) {

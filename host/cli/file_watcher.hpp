@@ -26,7 +26,7 @@ public:
     // Forget the single files (the set a scene references changes when the scene does).
     void clear_files();
 
-    enum class Wake { Changed, Signal };
+    enum class Wake { Changed, Signal, Interrupted };
     struct Result {
         Wake wake;
         std::set<std::filesystem::path> changed;  // paths of changed watched files
@@ -38,11 +38,16 @@ public:
     // True if SIGINT or SIGTERM arrived (non-blocking; for cancelling a render in progress).
     bool signal_pending() const { return interrupts_.requested(); }
 
+    // From another thread: makes a wait() in progress, or the next one, return Wake::Interrupted
+    // (the viewer waits for changes on a thread of its own and stops it this way).
+    void interrupt();
+
 private:
     void add_dir(const std::filesystem::path& dir);
 
     int inotify_fd_ = -1;
     Interrupts interrupts_;
+    int interrupt_fd_ = -1;  // an eventfd: interrupt() from another thread
     std::map<int, std::filesystem::path> dirs_;  // watch descriptor -> directory
     std::map<std::filesystem::path, std::set<std::string>> trees_;  // root -> suffixes
     std::set<std::filesystem::path> files_;

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
         lancer::add_render_command(app),
         lancer::add_watch_command(app),
         lancer::add_diff_command(app),
+        lancer::add_view_command(app),
     };
 
     try {

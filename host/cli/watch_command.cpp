@@ -152,6 +152,8 @@ Subcommand add_watch_command(CLI::App& parent) {
     auto state = std::make_shared<WatchCommand>();
     CLI::App* cmd = parent.add_subcommand("watch", "Render, then re-render whenever the shaders or the scene change");
     add_render_options(*cmd, state->options);
+    cmd->get_option("--shaders")
+        ->description("Shader directory to compile and watch (default: ./shaders if present, else the built-in shaders)");
     cmd->add_option("--frame", state->frame, "Frame of an animated scene to preview (default 0)");
     return {cmd, [state] { return state->run(); }};
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <type_traits>
@@ -189,8 +190,8 @@ void GpuRenderer::update_descriptors() {
     descriptors_dirty_ = false;
 }
 
-void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, std::uint32_t samples,
-                                std::uint32_t per_pass, double done, const ProgressFn& progress) {
+void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_pass, std::uint32_t width, double done,
+                                const ProgressFn& progress) {
     VkDevice device = context_->device();
     VK_CHECK(vkResetCommandBuffer(command_buffer_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -199,20 +200,21 @@ void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint3
     vkCmdBindPipeline(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->handle());
     vkCmdBindDescriptorSets(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_->pipeline_layout(), 0, 1,
                             &descriptor_set_, 0, nullptr);
-    for (std::uint32_t first = 0; first < samples; first += per_pass) {
-        if (first > 0) {
-            // The next pass adds to what this one wrote.
+    const std::uint32_t end = band.sample_first + band.sample_count;
+    for (std::uint32_t first = band.sample_first; first < end; first += per_pass) {
+        if (first > band.sample_first) {
+            // The next pass continues the sums this one wrote.
             VkMemoryBarrier accumulate{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
             accumulate.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
             accumulate.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
             vkCmdPipelineBarrier(command_buffer_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &accumulate, 0, nullptr, 0, nullptr);
         }
-        gpu::BandParams band{y0, rows, first, std::min(per_pass, samples - first)};
-        vkCmdPushConstants(command_buffer_, layout_->pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(band),
-                           &band);
+        gpu::BandParams pass{band.y0, band.rows, first, std::min(per_pass, end - first)};
+        vkCmdPushConstants(command_buffer_, layout_->pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pass),
+                           &pass);
         vkCmdDispatch(command_buffer_, (width + gpu::WORKGROUP_X - 1) / gpu::WORKGROUP_X,
-                      (rows + gpu::WORKGROUP_Y - 1) / gpu::WORKGROUP_Y, 1);
+                      (band.rows + gpu::WORKGROUP_Y - 1) / gpu::WORKGROUP_Y, 1);
     }
     // Make the shader's writes visible to the host's read of the mapped output.
     VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -239,19 +241,38 @@ void GpuRenderer::dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint3
 }
 
 FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
-    return render_with(scene, false, progress);
+    FloatImage image;
+    auto all = static_cast<std::uint32_t>(scene.render.samples * scene.render.samples);
+    render_with(scene, false, {0, all}, image, progress);
+    return image;
 }
 
-FloatImage GpuRenderer::render_hits(const Scene& scene) { return render_with(scene, true, {}); }
+FloatImage GpuRenderer::render_hits(const Scene& scene) {
+    FloatImage image;
+    render_with(scene, true, {0, 1}, image, {});
+    return image;
+}
 
-FloatImage GpuRenderer::render_with(const Scene& scene, bool output_hits, const ProgressFn& progress) {
+void GpuRenderer::render_samples(const Scene& scene, std::uint32_t first, std::uint32_t count, FloatImage& sums,
+                                 const ProgressFn& progress) {
+    render_with(scene, false, {first, count}, sums, progress);
+}
+
+void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange samples, FloatImage& image,
+                              const ProgressFn& progress) {
     const RenderSettings& rs = scene.render;
     const auto width = static_cast<std::uint32_t>(rs.width);
     const auto height = static_cast<std::uint32_t>(rs.height);
     const std::size_t row_bytes = std::size_t(width) * sizeof(gpu::vec4);
+    const bool continues = samples.first > 0;
+    if (continues && (image.width != rs.width || image.height != rs.height))
+        throw std::logic_error("render_samples: the sums so far are not of the scene's size");
 
     std::size_t max_rows = std::max<std::size_t>(1, context_->limits().maxStorageBufferRange / row_bytes);
-    std::size_t rows = std::clamp<std::size_t>(kBandPixels / width, gpu::WORKGROUP_Y, height);
+    std::size_t band_pixels = kBandPixels;
+    if (max_dispatch_samples_)
+        band_pixels = std::min(band_pixels, max_dispatch_samples_ / std::max<std::uint32_t>(1, samples.count));
+    std::size_t rows = std::clamp<std::size_t>(band_pixels / width, gpu::WORKGROUP_Y, height);
     rows = std::min(rows, max_rows);
 
     gpu::PipelineVariant variant = upload_scene(scene);
@@ -261,37 +282,34 @@ FloatImage GpuRenderer::render_with(const Scene& scene, bool output_hits, const 
     ensure_output(rows * row_bytes);
     update_descriptors();
 
-    const auto samples = output_hits ? 1u : static_cast<std::uint32_t>(rs.samples * rs.samples);
-    FloatImage image(rs.width, rs.height);
+    if (!continues) image = FloatImage(rs.width, rs.height);
     for (std::uint32_t y0 = 0; y0 < height; y0 += static_cast<std::uint32_t>(rows)) {
         auto band_rows = static_cast<std::uint32_t>(std::min<std::size_t>(rows, height - y0));
+        glm::vec4* band_start = &image.pixels[std::size_t(y0) * width];
+        const std::size_t band_bytes = band_rows * row_bytes;
         const auto* band = static_cast<const gpu::vec4*>(output_.data());
-        const std::size_t band_pixels = std::size_t(band_rows) * width;
-        auto over_budget = [&] {
+        auto cut_short = [&] {
             return variant.check_loop_limit && !output_hits &&
-                   std::any_of(band, band + band_pixels, [](const gpu::vec4& p) { return p.a < 0.0f; });
+                   std::any_of(band, band + std::size_t(band_rows) * width, [](const gpu::vec4& p) { return p.a < 0.0f; });
         };
-        // All of a pixel's samples in one invocation is fastest (lavapipe: ~1.5x one per
+        const gpu::BandParams params{y0, band_rows, samples.first, samples.count};
+        if (continues) std::memcpy(output_.data(), band_start, band_bytes);
+        // All of the range's samples in one invocation is fastest (lavapipe: ~1.5x one per
         // invocation); where the driver's loop limit cut that short, one sample per pass.
-        dispatch_band(y0, band_rows, width, samples, samples, double(y0) / height, progress);
-        if (samples > 1 && over_budget()) {
+        dispatch_band(params, samples.count, width, double(y0) / height, progress);
+        if (samples.count > 1 && cut_short()) {
             ++bands_rerendered_;
-            dispatch_band(y0, band_rows, width, samples, 1, double(y0) / height, progress);
+            if (continues) std::memcpy(output_.data(), band_start, band_bytes);  // the sums before this range
+            dispatch_band(params, 1, width, double(y0) / height, progress);
         }
-        if (over_budget())
+        if (cut_short())
             throw UserError(fmt::format(
                 "a sample of this scene needs more loop iterations than the {} driver allows in one shader "
                 "invocation (65535); render with --backend cpu, or lower max_depth or the number of lights",
                 context_->info().name));
-        gpu::vec4* out = &image.pixels[std::size_t(y0) * width];
-        const float scale = 1.0f / float(samples);
-        for (std::size_t i = 0; i < band_pixels; ++i) {
-            const gpu::vec4& p = band[i];  // sums of samples, and the ray count
-            out[i] = output_hits ? p : gpu::vec4(p.x * scale, p.y * scale, p.z * scale, p.w);
-        }
+        std::memcpy(band_start, output_.data(), band_bytes);
         if (progress && !progress(double(y0 + band_rows) / height)) throw RenderCancelled();
     }
-    return image;
 }
 
 }  // namespace lancer

@@ -32,6 +32,18 @@ public:
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
     FloatImage render_hits(const Scene& scene) override;
 
+    // Progressive rendering (the viewer): traces samples [first, first + count) of every pixel's
+    // N x N grid, continuing `sums`, which holds what the passes before left (ignored, and
+    // resized, when first == 0). Between passes its pixels are unnormalised sums (rgb) and ray
+    // counts (a); the pass that reaches sample N * N leaves exactly the image render() returns.
+    // A cancelled pass (RenderCancelled) leaves `sums` half advanced: start again from 0.
+    void render_samples(const Scene& scene, std::uint32_t first, std::uint32_t count, FloatImage& sums,
+                        const ProgressFn& progress);
+    // Caps the camera samples of one dispatch (0: no cap, bands of about 128 K pixels). A cancel
+    // waits for the dispatch in flight, so the viewer, which cancels whenever the camera moves,
+    // asks for small ones.
+    void set_max_dispatch_samples(std::size_t samples) { max_dispatch_samples_ = samples; }
+
     const gpu::Context& context() const { return *context_; }
 
     // Bands rendered again with one sample per invocation because the driver's loop limit cut
@@ -56,11 +68,16 @@ private:
     void select_pipeline(const gpu::PipelineVariant& variant);
     void ensure_output(std::size_t bytes);
     void update_descriptors();
-    FloatImage render_with(const Scene& scene, bool output_hits, const ProgressFn& progress);
-    // Renders rows [y0, y0 + rows) into output_: `samples` samples per pixel, `per_pass` of them
+    struct SampleRange {
+        std::uint32_t first, count;
+    };
+    // Renders `samples` of every pixel into `image`, which holds the sums so far when first > 0.
+    void render_with(const Scene& scene, bool output_hits, SampleRange samples, FloatImage& image,
+                     const ProgressFn& progress);
+    // Renders band.sample_count samples from band.sample_first into output_, `per_pass` of them
     // per invocation (one dispatch per pass).
-    void dispatch_band(std::uint32_t y0, std::uint32_t rows, std::uint32_t width, std::uint32_t samples,
-                       std::uint32_t per_pass, double done, const ProgressFn& progress);
+    void dispatch_band(const gpu::BandParams& band, std::uint32_t per_pass, std::uint32_t width, double done,
+                       const ProgressFn& progress);
 
     std::unique_ptr<gpu::Context> context_;
     std::unique_ptr<gpu::TraceLayout> layout_;
@@ -90,6 +107,7 @@ private:
     std::vector<gpu::Light> lights_shadow_;
     UploadStats last_upload_;
     std::size_t bands_rerendered_ = 0;
+    std::size_t max_dispatch_samples_ = 0;
 };
 
 }  // namespace lancer

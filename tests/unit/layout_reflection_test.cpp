@@ -55,6 +55,10 @@ TEST(Layout, HostOffsetsMatchGlslangReflection) {
     EXPECT_OFFSET("materials.checker_size", Material, checker_size);
     EXPECT_OFFSET("lights.position", Light, position);
     EXPECT_OFFSET("lights.color", Light, color);
+    EXPECT_OFFSET("band.y0", BandParams, y0);
+    EXPECT_OFFSET("band.rows", BandParams, rows);
+    EXPECT_OFFSET("band.sample_first", BandParams, sample_first);
+    EXPECT_OFFSET("band.sample_count", BandParams, sample_count);
     EXPECT_GT(checked, 0);
 }
 

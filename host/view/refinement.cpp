@@ -1,0 +1,67 @@
+#include "view/refinement.hpp"
+
+#include <algorithm>
+
+namespace lancer::view {
+
+std::vector<SamplePass> refinement_passes(int samples_per_side) {
+    const auto total = static_cast<std::uint32_t>(samples_per_side * samples_per_side);
+    std::vector<SamplePass> passes;
+    std::uint32_t done = 0;
+    while (done < total) {
+        std::uint32_t count = std::max<std::uint32_t>(1, done);
+        // A tail smaller than this pass would be a pass of its own for little gain: take it now.
+        if (total - done - std::min(count, total - done) < count) count = total - done;
+        passes.push_back({done, count});
+        done += count;
+    }
+    return passes;
+}
+
+Scene preview_scene(const Scene& scene, int divisor) {
+    Scene s = scene;
+    s.render.width = std::max(1, scene.render.width / divisor);
+    s.render.height = std::max(1, scene.render.height / divisor);
+    s.render.samples = 1;
+    return s;
+}
+
+int preview_divisor_for(double full_size_ms, double budget_ms, int max_divisor) {
+    int d = 1;
+    while (d < max_divisor && full_size_ms / (double(d) * d) > budget_ms) d *= 2;
+    return d;
+}
+
+int next_preview_divisor(int divisor, double preview_ms, double budget_ms, int max_divisor) {
+    if (preview_ms > budget_ms) return std::min(divisor * 2, max_divisor);
+    // Four times the pixels at half the divisor: only when that still fits the budget well.
+    if (preview_ms * 4.0 < budget_ms * 0.5) return std::max(1, divisor / 2);
+    return divisor;
+}
+
+Rgb8Image display_image(const FloatImage& sums, std::uint32_t samples_done, bool final_pass) {
+    if (final_pass) return to_srgb8(sums);
+    return quick_srgb8(sums, 1.0f / float(std::max<std::uint32_t>(1, samples_done)));
+}
+
+Rgb8Image quick_srgb8(const FloatImage& image, float scale) {
+    // Linear [0, 1] in 65536 steps: the sRGB curve's steepest part (12.92 near black) moves
+    // 255 * 12.92 / 65535 = 0.05 of a level per step, so rounding stays within one level.
+    constexpr int kSteps = 65535;
+    static const std::vector<std::uint8_t> table = [] {
+        std::vector<std::uint8_t> t(kSteps + 1);
+        for (int i = 0; i <= kSteps; ++i) t[i] = encode_srgb8(float(i) / kSteps);
+        return t;
+    }();
+    Rgb8Image out{image.width, image.height, std::vector<std::uint8_t>(image.pixels.size() * 3)};
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            float v = image.pixels[i][c] * scale;
+            // NaN compares false both ways and lands on 0, as in encode_srgb8.
+            int index = v > 0.0f ? (v < 1.0f ? int(v * kSteps + 0.5f) : kSteps) : 0;
+            out.bytes[i * 3 + c] = table[index];
+        }
+    return out;
+}
+
+}  // namespace lancer::view

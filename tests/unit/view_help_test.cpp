@@ -1,0 +1,80 @@
+// The on-screen help: every key it lists is drawn with real glyphs, and the README's key table
+// names the same keys.
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "support/test_support.hpp"
+#include "view/bitmap_font.hpp"
+#include "view/key_bindings.hpp"
+#include "view/shown_frame.hpp"
+#include "view/status_text.hpp"
+
+namespace lancer::view {
+namespace {
+
+std::vector<std::string> split_keys(const std::string& keys) {
+    std::vector<std::string> out;
+    std::istringstream in(keys);
+    for (std::string word; in >> word;)
+        if (word != "/") out.push_back(word);
+    return out;
+}
+
+TEST(ViewHelp, EveryCharacterHasAGlyph) {
+    for (const auto& row : key_help())
+        for (char c : row.keys + row.action) EXPECT_TRUE(has_glyph(c)) << "'" << c << "' in " << row.action;
+}
+
+TEST(ViewHelp, TextIsDrawnInItsColourWithinItsBox) {
+    Canvas canvas(40, 12);
+    canvas.fill(0x000000ffu);
+    draw_text(canvas, 1, 1, "H", 1, 0xff0000ffu);
+    int ink = 0;
+    for (int y = 0; y < canvas.height; ++y)
+        for (int x = 0; x < canvas.width; ++x) {
+            const std::uint8_t* p = &canvas.rgba[(std::size_t(y) * canvas.width + x) * 4];
+            if (p[0] == 255 && p[1] == 0) {
+                ++ink;
+                EXPECT_TRUE(x >= 1 && x < 1 + kGlyphWidth && y >= 1 && y < 1 + kGlyphHeight) << x << "," << y;
+            }
+        }
+    EXPECT_EQ(ink, 5 + 5 + 7);  // H: two columns of 7, a bar of 3 between them
+    EXPECT_EQ(text_width("HH", 2), (2 * kGlyphAdvance - 1) * 2);
+    draw_text(canvas, 35, 8, "WWW", 3, 0xffffffffu);  // clipped, not out of bounds
+}
+
+TEST(ViewHelp, TheReadmeListsEveryKey) {
+    std::ifstream in(test::source_path("README.md"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string readme = text.str();
+    auto section = readme.find("## Viewing interactively");
+    ASSERT_NE(section, std::string::npos) << "README.md has no 'Viewing interactively' section";
+    std::string part = readme.substr(section, readme.find("\n## ", section + 1) - section);
+    for (const auto& row : key_help())
+        for (const std::string& key : split_keys(row.keys))
+            EXPECT_NE(part.find("`" + key + "`"), std::string::npos) << "README does not list `" << key << "`";
+}
+
+TEST(ViewStatus, TitleHasPositionFrameTimeAndRaysPerSecond) {
+    ShownFrame f;
+    f.kind = ShownFrame::Kind::Final;
+    f.camera.eye = {1.5, -2, 3.25};
+    f.samples = 3;
+    f.samples_done = 9;
+    f.view_ms = 250;
+    f.view_rays = 5e6;
+    EXPECT_EQ(window_title("seed.toml", f),
+              "lancer view | seed.toml | eye (1.50, -2.00, 3.25) | 9/9 samples in 250 ms | 20.0 Mrays/s");
+    f.kind = ShownFrame::Kind::Preview;
+    f.preview_divisor = 4;
+    f.render_ms = 10;
+    f.rays = 1e5;
+    EXPECT_EQ(window_title("seed.toml", f),
+              "lancer view | seed.toml | eye (1.50, -2.00, 3.25) | preview 1/4 size: 10 ms | 10.0 Mrays/s");
+}
+
+}  // namespace
+}  // namespace lancer::view

@@ -1,0 +1,452 @@
+// `lancer view` end to end: the viewer in a virtual X server (Xvfb), driven by xdotool like a
+// user, observed through what it writes (--dump-frame: the window's pixels after each finished
+// refinement; its log lines; the files p, f and l write) and through screenshots, with bounded
+// waits, never fixed sleeps. Every run is under the Vulkan validation layer.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <regex>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "image/diff.hpp"
+#include "scene/camera.hpp"
+#include "support/child_process.hpp"
+#include "support/test_support.hpp"
+#include "support/x_server.hpp"
+#include "view/camera_controller.hpp"
+#include "view/camera_text.hpp"
+
+namespace lancer {
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::seconds;
+
+// The image tests' metric (tests/render/backends_agree_test.cpp).
+constexpr double kMinPsnr = 40.0;
+constexpr double kMaxFractionOver = 0.001;
+constexpr int kThreshold = 4;
+
+// A small scene with what can go wrong in a moved picture: silhouettes, shadows, a mirror and a
+// checkerboard. The camera comes first, as an inline table, so tests can put any camera there.
+const char* kSceneBody = R"(
+[render]
+width = 96
+height = 54
+samples = 3
+background = [0.42, 0.56, 0.78]
+[[light]]
+position = [-6, 10, -6]
+color = [0.8, 0.8, 0.8]
+[[light]]
+position = [6, 8, -4]
+color = [0.4, 0.4, 0.4]
+[material.red]
+color = [0.9, 0.1, 0.1]
+specular = 0.5
+shininess = 30
+[material.mirror]
+color = [0.9, 0.9, 0.9]
+reflection = 0.7
+[material.floor]
+checker = { colors = [[1, 1, 1], [0.4, 0.4, 0.4]], size = 1.0 }
+[[object]]
+type = "sphere"
+center = [-1.2, 1, 0]
+radius = 1
+material = "red"
+[[object]]
+type = "sphere"
+center = [1.3, 1, 0.8]
+radius = 1
+material = "mirror"
+[[object]]
+type = "rectangle"
+corner = [-8, 0, -8]
+edge_u = [16, 0, 0]
+edge_v = [0, 0, 16]
+material = "floor"
+)";
+
+CameraSpec file_camera() {
+    CameraSpec c;
+    c.eye = {0.0, 3.0, -8.0};
+    c.look_at = {0.0, 0.8, 0.0};
+    c.up = {0.0, 1.0, 0.0};
+    c.fov_deg = 45.0;
+    return c;
+}
+
+std::string scene_text(const CameraSpec& camera) {
+    return "camera = { " + view::camera_toml(camera) + " }\n" + kSceneBody;
+}
+
+void write_file(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::trunc);
+    out << text;
+}
+
+std::string read_file(const fs::path& path) {
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+int count(const std::string& text, const std::string& what) {
+    int n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+dvec3 parse_vec(const std::string& text) {
+    dvec3 v;
+    std::sscanf(text.c_str(), "%lf, %lf, %lf", &v.x, &v.y, &v.z);
+    return v;
+}
+
+// The camera of the last line starting with `prefix` ("view: refined", "view: saved").
+std::optional<CameraSpec> last_camera(const std::string& log, const std::string& prefix) {
+    static const std::regex camera(R"(camera: eye = \[([^\]]*)\], look_at = \[([^\]]*)\], up = \[([^\]]*)\], fov = (\S+))");
+    std::optional<CameraSpec> found;
+    std::istringstream lines(log);
+    for (std::string line; std::getline(lines, line);) {
+        std::smatch m;
+        if (line.rfind(prefix, 0) != 0 || !std::regex_search(line, m, camera)) continue;
+        CameraSpec c;
+        c.eye = parse_vec(m[1]);
+        c.look_at = parse_vec(m[2]);
+        c.up = parse_vec(m[3]);
+        c.fov_deg = std::stod(m[4]);
+        found = c;
+    }
+    return found;
+}
+
+bool near(const dvec3& a, const dvec3& b, double tolerance) { return glm::length(a - b) <= tolerance; }
+
+class View : public testing::Test {
+protected:
+    void SetUp() override {
+        try {
+            x = std::make_unique<test::XServer>();
+        } catch (const std::exception& e) {
+            FAIL() << e.what();  // never skipped: setup.sh installs Xvfb
+        }
+        for (const char* tool : {"xdotool", "xwd"})
+            if (!test::have_program(tool))
+                FAIL() << tool << " is not installed: the viewer's tests need it (Debian packages xdotool, x11-apps; "
+                       << "./setup.sh installs them)";
+        ::setenv("DISPLAY", x->display().c_str(), 1);  // the viewer and the X tools inherit it
+        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+        dir = fs::path(test::output_dir()) / (std::string("view-") + info->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        write_file(dir / "scene.toml", scene_text(file_camera()));
+    }
+
+    void TearDown() override {
+        if (child && child->running()) {
+            child->interrupt();
+            EXPECT_EQ(child->wait_exit(), 0) << log();
+        }
+        if (child) {
+            EXPECT_EQ(log().find("validation"), std::string::npos) << log();
+        }
+    }
+
+    // Starts the viewer and waits for its first finished picture and its window.
+    void start(std::vector<std::string> extra = {}) {
+        std::vector<std::string> args = {"view", "scene.toml", "--dump-frame", "dump.png"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        child = std::make_unique<test::ChildProcess>(args, dir.string(), (dir / "log.txt").string());
+        ASSERT_TRUE(wait_for_count("view: refined", 1)) << log();
+        window = x->find_window("lancer");
+        ASSERT_FALSE(window.empty()) << "no lancer window on " << x->display();
+        // No window manager: keyboard focus follows the pointer, so the pointer goes in the window.
+        ASSERT_EQ(xdotool("windowfocus --sync " + window + " mousemove --sync --window " + window + " 3 3"), 0);
+    }
+
+    int xdotool(const std::string& args) { return x->run("timeout 30 xdotool " + args); }
+    void keys(const std::string& names) { ASSERT_EQ(xdotool("key --delay 20 " + names), 0); }
+
+    std::string log() const { return child ? child->log() : ""; }
+    bool wait_for_count(const std::string& what, int n, seconds timeout = seconds(60)) {
+        return test::ChildProcess::wait_until([&] { return count(log(), what) >= n; }, timeout);
+    }
+    // Waits until a finished refinement shows a camera whose eye is `eye`.
+    bool wait_for_refined_eye(const dvec3& eye) {
+        return test::ChildProcess::wait_until([&] {
+            auto c = last_camera(log(), "view: refined");
+            return c && near(c->eye, eye, 1e-9);
+        });
+    }
+
+    Rgb8Image dump() const { return read_png((dir / "dump.png").string()); }
+
+    // `lancer render` of the test scene with `camera`.
+    Rgb8Image render(const CameraSpec& camera, const std::string& name = "reference") {
+        fs::path scene = dir / (name + ".toml"), png = dir / (name + ".png");
+        write_file(scene, scene_text(camera));
+        auto r = test::run_lancer("render " + scene.string() + " -q -o " + png.string());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return read_png(png.string());
+    }
+
+    void expect_like(const Rgb8Image& shown, const Rgb8Image& rendered, const std::string& name) {
+        ImageDiff d = compare_images(shown, rendered, kThreshold);
+        if (d.psnr_db < kMinPsnr || d.fraction_over > kMaxFractionOver)
+            ADD_FAILURE() << name << ": PSNR " << d.psnr_db << " dB, " << d.fraction_over * 100 << "% of pixels off by more than "
+                          << kThreshold << "; images in " << test::save_comparison("view-" + name, shown, rendered);
+    }
+
+    std::unique_ptr<test::XServer> x;
+    fs::path dir;
+    std::unique_ptr<test::ChildProcess> child;
+    std::string window;
+};
+
+TEST_F(View, FirstPictureIsWhatLancerRenderMakesAndTheWindowShowsIt) {
+    start();
+    Rgb8Image shown = dump();
+    Rgb8Image rendered = render(file_camera());
+    expect_like(shown, rendered, "first");
+    // Refinement adds the same samples in the same order as one render: the same bytes.
+    EXPECT_EQ(shown.bytes, rendered.bytes) << test::save_comparison("view-first-exact", shown, rendered);
+    // The window really shows it (a screenshot of the X server, not what lancer says it drew).
+    Rgb8Image screen = x->screenshot(window);
+    write_png((dir / "screenshot.png").string(), screen);
+    EXPECT_EQ(screen.width, 96);
+    EXPECT_EQ(screen.height, 54);
+    expect_like(screen, shown, "screenshot");
+    std::string title;
+    ASSERT_EQ(x->run("xdotool getwindowname " + window, &title), 0);
+    EXPECT_EQ(title.rfind("lancer view | scene.toml | eye (0.00, 3.00, -8.00) | 9/9 samples in ", 0), 0u) << title;
+    EXPECT_NE(title.find(" Mrays/s"), std::string::npos) << title;
+}
+
+TEST_F(View, RightArrowNTimesMovesTheCameraByNSteps) {
+    start();
+    const int n = 4;
+    keys("Right Right Right Right");
+    // The documented step: 5% of the eye-look_at distance along the camera's right.
+    CameraSpec expected = file_camera();
+    CameraBasis basis = make_camera_basis(expected, 96, 54);
+    dvec3 step = glm::normalize(basis.right) * (n * 0.05 * glm::length(expected.look_at - expected.eye));
+    expected.eye += step;
+    expected.look_at += step;
+    ASSERT_TRUE(wait_for_refined_eye(expected.eye)) << log();
+    CameraSpec shown_camera = *last_camera(log(), "view: refined");
+    EXPECT_TRUE(near(shown_camera.look_at, expected.look_at, 1e-9));
+    Rgb8Image rendered = render(expected);
+    expect_like(dump(), rendered, "right");
+    EXPECT_NE(dump().bytes, render(file_camera(), "unmoved").bytes);  // it did move
+}
+
+TEST_F(View, PSavesThePngLancerRenderMakesOfThatView) {
+    start();
+    keys("Left Left q w");
+    keys("p");
+    ASSERT_TRUE(wait_for_count("view: saved", 1)) << log();
+    std::smatch m;
+    std::string text = log();
+    ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(view: saved (\S+) \(96x54, 9 rays/pixel\))"))) << text;
+    Rgb8Image saved = read_png((dir / m[1].str()).string());
+    EXPECT_EQ(m[1].str(), "scene-view-001.png");
+    // The camera it reports is the one the keys lead to...
+    CameraSpec expected = file_camera();
+    for (auto move : {view::CameraMove::Left, view::CameraMove::Left, view::CameraMove::OrbitLeft, view::CameraMove::RollLeft})
+        expected = view::apply_move(expected, move, {0, 1, 0});
+    CameraSpec reported = *last_camera(text, "view: saved");
+    EXPECT_TRUE(near(reported.eye, expected.eye, 1e-12));
+    EXPECT_TRUE(near(reported.up, expected.up, 1e-12));
+    // ...and the PNG is byte for byte `lancer render` of it (the reported camera reads back exactly).
+    Rgb8Image rendered = render(reported);
+    EXPECT_EQ(saved.bytes, rendered.bytes) << test::save_comparison("view-p", saved, rendered);
+    // A second p never overwrites the first.
+    keys("p");
+    ASSERT_TRUE(wait_for_count("view: saved", 2)) << log();
+    EXPECT_TRUE(fs::exists(dir / "scene-view-002.png"));
+}
+
+TEST_F(View, EscapeExitsZeroWithEveryVulkanObjectReleased) {
+    start();
+    keys("Right Escape");
+    EXPECT_EQ(child->wait_exit(), 0) << log();
+    EXPECT_EQ(log().find("validation"), std::string::npos) << log();
+}
+
+TEST_F(View, InterruptExitsZeroToo) {
+    start();
+    child->interrupt();
+    EXPECT_EQ(child->wait_exit(), 0) << log();
+}
+
+TEST_F(View, MouseDragOrbitsAndTheWheelDollies) {
+    start();
+    const CameraSpec home = file_camera();
+    const double d = glm::length(home.look_at - home.eye);
+    ASSERT_EQ(xdotool("mousemove --window " + window + " 40 27 mousedown 1 mousemove_relative --sync 12 0 mouseup 1"), 0);
+    ASSERT_TRUE(test::ChildProcess::wait_until([&] {
+        auto c = last_camera(log(), "view: refined");
+        return c && !near(c->eye, home.eye, 1e-6);
+    })) << log();
+    CameraSpec dragged = *last_camera(log(), "view: refined");
+    EXPECT_NEAR(glm::length(dragged.look_at - dragged.eye), d, 1e-9);
+    EXPECT_EQ(dragged.look_at, home.look_at);
+    EXPECT_LT(dragged.eye.x, home.eye.x) << "dragging right turns the scene right: the eye goes left";
+    EXPECT_NEAR(dragged.eye.y, home.eye.y, 1e-9);
+    EXPECT_NEAR(view::roll_degrees(dragged, {0, 1, 0}), 0.0, 1e-9);
+
+    keys("r");
+    ASSERT_TRUE(wait_for_refined_eye(home.eye)) << log();
+    EXPECT_EQ(dump().bytes, render(home).bytes);  // reset: the file's camera, exactly
+    ASSERT_EQ(xdotool("click --delay 20 --repeat 2 4"), 0);  // button 4: the wheel, away from the user
+    dvec3 two_in = home.look_at + (home.eye - home.look_at) * (0.9 * 0.9);  // the documented dolly step
+    ASSERT_TRUE(wait_for_refined_eye(two_in)) << log();
+}
+
+TEST_F(View, HShowsAndHidesTheHelp) {
+    start();
+    Rgb8Image picture = dump();
+    keys("h");
+    // Wait on the window's pixels: the help panel darkens its top-left corner.
+    Rgb8Image screen;
+    ASSERT_TRUE(test::ChildProcess::wait_until([&] {
+        screen = x->screenshot(window);
+        return screen.bytes != picture.bytes;
+    }, seconds(30)));
+    write_png((dir / "help.png").string(), screen);
+    const std::uint8_t* inside = screen.at(9, 9);
+    const std::uint8_t* under = picture.at(9, 9);
+    EXPECT_LT(inside[2], under[2]) << "the panel is a dark veil over the sky";
+    keys("h");
+    ASSERT_TRUE(test::ChildProcess::wait_until([&] { return x->screenshot(window).bytes == picture.bytes; }, seconds(30)));
+}
+
+// The bytes of frame k of an animation `lancer render` makes of the test scene plus `animation`.
+Rgb8Image render_frame(const fs::path& dir, const std::string& animation, int frame) {
+    fs::path scene = dir / "animated.toml", png = dir / ("animated-" + std::to_string(frame) + ".png");
+    write_file(scene, scene_text(file_camera()) + animation);
+    auto r = test::run_lancer("render " + scene.string() + " -q --frames " + std::to_string(frame) + " -o " + png.string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return read_png(png.string());
+}
+
+TEST_F(View, FRecordsTheOrbitThroughTheAnimationMachinery) {
+    start({"--record-frames", "3"});
+    keys("f");
+    ASSERT_TRUE(wait_for_count("view: recorded orbit", 1)) << log();
+    EXPECT_NE(log().find("view: recording orbit to scene-orbit-1/frame_%d.png: camera_orbit center [0, 0.8, 0]"),
+              std::string::npos) << log();
+    for (int k = 0; k < 3; ++k) EXPECT_TRUE(fs::exists(dir / ("scene-orbit-1/frame_" + std::to_string(k) + ".png")));
+    // The defaults of [animation.camera_orbit] start at the file's eye: the same sequence.
+    Rgb8Image expected = render_frame(dir, "[animation]\nframes = 3\ncyclic = true\n[animation.camera_orbit]\n", 1);
+    EXPECT_EQ(read_png((dir / "scene-orbit-1/frame_1.png").string()).bytes, expected.bytes);
+    if (test::have_program("ffmpeg")) {
+        EXPECT_TRUE(fs::exists(dir / "scene-orbit-1.mp4")) << log();
+    }
+    // Back to the interactive view afterwards: the window answers keys again.
+    keys("Right");
+    ASSERT_TRUE(wait_for_refined_eye(view::apply_move(file_camera(), view::CameraMove::Right, {0, 1, 0}).eye)) << log();
+}
+
+TEST_F(View, LRecordsTheMovingLight) {
+    start({"--record-frames", "2"});
+    keys("l");
+    ASSERT_TRUE(wait_for_count("view: recorded light", 1)) << log();
+    Rgb8Image expected = render_frame(
+        dir, "[animation]\nframes = 2\ncyclic = true\n[[animation.light_orbit]]\nlight = 0\ncenter = [0, 0.8, 0]\n", 1);
+    EXPECT_EQ(read_png((dir / "scene-light-1/frame_1.png").string()).bytes, expected.bytes);
+}
+
+TEST_F(View, FAgainStopsARecordingAndEscapeDuringOneQuitsCleanly) {
+    start({"--record-frames", "1000"});
+    keys("f");
+    ASSERT_TRUE(test::ChildProcess::wait_until([&] { return fs::exists(dir / "scene-orbit-1/frame_001.png"); })) << log();
+    keys("f");
+    ASSERT_TRUE(wait_for_count("view: recording orbit stopped after", 1)) << log();
+    keys("l");
+    ASSERT_TRUE(test::ChildProcess::wait_until([&] { return fs::exists(dir / "scene-light-1/frame_000.png"); })) << log();
+    keys("Escape");
+    EXPECT_EQ(child->wait_exit(), 0) << log();
+}
+
+TEST_F(View, SceneEditsReloadAndBrokenScenesKeepTheLastGoodPicture) {
+    start();
+    Rgb8Image before = dump();
+    CameraSpec moved = file_camera();
+    moved.eye.x = 2.0;
+    write_file(dir / "scene.toml", scene_text(moved));
+    ASSERT_TRUE(wait_for_count("scene reloaded", 1)) << log();
+    ASSERT_TRUE(wait_for_refined_eye(moved.eye)) << log();  // a changed camera in the file is shown
+    EXPECT_EQ(dump().bytes, render(moved).bytes);
+
+    write_file(dir / "scene.toml", scene_text(moved) + "\n[[object]]\ntype = \"sphere\"\nradius = -1\ncenter = [0, 0, 0]\n");
+    ASSERT_TRUE(wait_for_count("scene error", 1)) << log();
+    EXPECT_TRUE(std::regex_search(log(), std::regex(R"(scene\.toml:\d+:\d+: error: sphere radius must be positive)"))) << log();
+    EXPECT_TRUE(child->running());
+    // Still answering, with the last good scene.
+    keys("Right");
+    CameraSpec right = view::apply_move(moved, view::CameraMove::Right, {0, 1, 0});
+    ASSERT_TRUE(wait_for_refined_eye(right.eye)) << log();
+    expect_like(dump(), render(right), "reloaded-right");
+    EXPECT_NE(dump().bytes, before.bytes);
+}
+
+TEST_F(View, ShaderEditsReloadAndCompileErrorsKeepTheLastGoodPicture) {
+    fs::copy(test::source_path("shaders"), dir / "shaders", fs::copy_options::recursive);
+    start({"--shaders", "shaders"});
+    fs::path trace = dir / "shaders/trace.comp";
+    std::string source = read_file(trace);
+    const std::string miss = "color += weight * frame.background.rgb;";
+    ASSERT_NE(source.find(miss), std::string::npos) << "the test edits this line of trace.comp";
+    std::string magenta = source;
+    magenta.replace(magenta.find(miss), miss.size(), "color += weight * vec3(1.0, 0.0, 1.0);");
+    int refined = count(log(), "view: refined");
+    write_file(trace, magenta);
+    ASSERT_TRUE(wait_for_count("reload: shaders compiled", 1)) << log();
+    ASSERT_TRUE(wait_for_count("view: refined", refined + 1)) << log();
+    Rgb8Image img = dump();
+    EXPECT_EQ(img.at(0, 0)[0], 255);
+    EXPECT_EQ(img.at(0, 0)[1], 0);
+    EXPECT_EQ(img.at(0, 0)[2], 255);
+
+    fs::path shade = dir / "shaders/shade.glsl";
+    std::string good_shade = read_file(shade);
+    write_file(shade, good_shade + "this is not glsl(\n");
+    ASSERT_TRUE(wait_for_count("compile failed", 1)) << log();
+    EXPECT_NE(log().find("shaders/shade.glsl:"), std::string::npos) << log();
+    EXPECT_TRUE(child->running());
+    refined = count(log(), "view: refined");
+    keys("Right");  // still magenta: the last good shaders
+    ASSERT_TRUE(wait_for_count("view: refined", refined + 1)) << log();
+    EXPECT_EQ(dump().at(0, 0)[1], 0);
+}
+
+// Errors the viewer meets before it opens a window: one line, exit code 2.
+void expect_user_error(const std::string& args, const std::string& env, const std::string& message) {
+    auto r = test::run_lancer(args, env);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(count(r.err, "\n"), 1) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+}
+
+TEST(ViewErrors, AreOneLineAndExitCode2) {
+    std::string scene = test::source_path("scenes/seed.toml");
+    expect_user_error("view " + scene, "DISPLAY= WAYLAND_DISPLAY=", "cannot open a window: no display");
+    expect_user_error("view " + scene, "DISPLAY=:65000 WAYLAND_DISPLAY=", "cannot open a window on display ':65000'");
+    expect_user_error("view " + test::source_path("tests/data/bad/negative_radius.toml"), "DISPLAY=:0",
+                      "sphere radius must be positive");
+    expect_user_error("view " + scene + " --backend cpu", "", "GPU only");
+    expect_user_error("view " + scene + " --device nonexistent-gpu", "DISPLAY=", "no Vulkan device matches");
+    expect_user_error("view " + scene + " --dump-frame /nonexistent/dump.png", "", "does not exist");
+    expect_user_error("view " + scene + " --frame 2", "", "--frame: the scene has no [animation]");
+}
+
+}  // namespace
+}  // namespace lancer
