@@ -28,6 +28,7 @@ LANCER_CONST BINDING_OUTPUT = 4;      // buffer vec4[] (one band of the image)
 LANCER_CONST BINDING_NODES = 5;       // buffer BvhNode[]
 LANCER_CONST BINDING_PATCHES = 6;     // buffer PatchLeaf[]
 LANCER_CONST BINDING_SURFACES = 7;    // buffer SurfaceInfo[]
+LANCER_CONST BINDING_CELLS = 8;       // buffer ParametricCell[]
 
 // Specialization constant ids (scene.glsl).
 LANCER_CONST SPEC_HAS_BEZIER = 0;
@@ -46,8 +47,7 @@ LANCER_CONST SHAPE_PLANE = 1;      // p0 = (point, 0), p1 = (unit normal, 0)
 LANCER_CONST SHAPE_RECTANGLE = 2;  // p0 = (corner, 0), p1 = (edge_u, 0), p2 = (edge_v, 0)
 LANCER_CONST SHAPE_BOX = 3;        // p0 = (min, 0), p1 = (max, 0)
 LANCER_CONST SHAPE_BEZIER = 4;     // data = index of its PatchLeaf
-LANCER_CONST SHAPE_PARAMETRIC = 5; // data = surface index (its generated function), p0 = (u0, u1, v0, v1) of the cell,
-                                   // p1 = (centre of the cell's box, 0)
+LANCER_CONST SHAPE_PARAMETRIC = 5; // data = index of its ParametricCell
 
 // Material::pattern values.
 LANCER_CONST PATTERN_SOLID = 0;
@@ -79,6 +79,17 @@ struct SurfaceInfo {
     vec4 row1;
     vec4 row2;
     vec4 domain;  // (u0, u1, v0, v1) of the whole surface
+};
+
+// One cell of a parametric surface's domain: where Newton's method looks for roots. The corner
+// points give Newton a starting point near the root (where the ray meets the two triangles they
+// span), so one or two seeds suffice instead of a grid of them.
+struct ParametricCell {
+    vec4 domain;  // (u0, u1, v0, v1)
+    vec4 p00;     // xyz = S(u0, v0) in world space; w = the surface index (its generated function)
+    vec4 p10;     // S(u1, v0)
+    vec4 p01;     // S(u0, v1)
+    vec4 p11;     // S(u1, v1)
 };
 
 // A node of the bounding volume hierarchy over all bounded primitives (host/accel/bvh.hpp).
@@ -150,6 +161,7 @@ static_assert(sizeof(Light) == 32);
 static_assert(sizeof(BvhNode) == 48);
 static_assert(sizeof(PatchLeaf) == 288);
 static_assert(sizeof(SurfaceInfo) == 64);
+static_assert(sizeof(ParametricCell) == 80);
 static_assert(sizeof(FrameParams) == 144);
 static_assert(sizeof(BandParams) == 16);
 }  // namespace lancer::gpu

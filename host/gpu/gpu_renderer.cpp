@@ -30,7 +30,7 @@ GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration accele
       acceleration_(acceleration) {
     VkDevice device = context_->device();
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7}};
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 8}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = 2;
@@ -66,6 +66,7 @@ GpuRenderer::~GpuRenderer() {
     nodes_ = {};
     patches_ = {};
     surfaces_ = {};
+    cells_ = {};
     lights_ = {};
     materials_ = {};
     primitives_ = {};
@@ -154,6 +155,7 @@ gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
     upload(nodes_, nodes_shadow_, std::move(packed.nodes));
     upload(patches_, patches_shadow_, std::move(packed.patches));
     upload(surfaces_, surfaces_shadow_, std::move(packed.surfaces));
+    upload(cells_, cells_shadow_, std::move(packed.cells));
     upload(materials_, materials_shadow_, std::move(packed.materials));
     upload(lights_, lights_shadow_, std::move(packed.lights));
     frame_.write(&frame, sizeof(frame));
@@ -172,7 +174,7 @@ void GpuRenderer::update_descriptors() {
     const std::pair<std::uint32_t, const gpu::Buffer*> buffers[] = {
         {gpu::BINDING_FRAME, &frame_},   {gpu::BINDING_PRIMITIVES, &primitives_}, {gpu::BINDING_MATERIALS, &materials_},
         {gpu::BINDING_LIGHTS, &lights_}, {gpu::BINDING_OUTPUT, &output_},         {gpu::BINDING_NODES, &nodes_},
-        {gpu::BINDING_PATCHES, &patches_}, {gpu::BINDING_SURFACES, &surfaces_}};
+        {gpu::BINDING_PATCHES, &patches_}, {gpu::BINDING_SURFACES, &surfaces_}, {gpu::BINDING_CELLS, &cells_}};
     constexpr int kBindings = static_cast<int>(std::extent_v<decltype(buffers)>);
     VkDescriptorBufferInfo infos[kBindings];
     VkWriteDescriptorSet writes[kBindings];

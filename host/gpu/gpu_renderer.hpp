@@ -90,7 +90,7 @@ private:
     std::vector<std::uint32_t> spirv_;
     std::map<gpu::PipelineVariant, std::unique_ptr<gpu::ComputePipeline>> pipelines_;
     gpu::ComputePipeline* pipeline_ = nullptr;  // the one for the current render
-    gpu::Buffer frame_, primitives_, nodes_, patches_, surfaces_, materials_, lights_, output_;
+    gpu::Buffer frame_, primitives_, nodes_, patches_, surfaces_, cells_, materials_, lights_, output_;
     VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;
     VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;
@@ -103,6 +103,7 @@ private:
     std::vector<gpu::BvhNode> nodes_shadow_;
     std::vector<gpu::PatchLeaf> patches_shadow_;
     std::vector<gpu::SurfaceInfo> surfaces_shadow_;
+    std::vector<gpu::ParametricCell> cells_shadow_;
     std::vector<gpu::Material> materials_shadow_;
     std::vector<gpu::Light> lights_shadow_;
     UploadStats last_upload_;

@@ -9,7 +9,7 @@
 namespace lancer::gpu {
 
 TraceLayout::TraceLayout(const Context& context) : device_(context.device()) {
-    const std::array<std::pair<uint, VkDescriptorType>, 8> kinds = {{
+    const std::array<std::pair<uint, VkDescriptorType>, 9> kinds = {{
         {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
         {BINDING_PRIMITIVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
@@ -18,6 +18,7 @@ TraceLayout::TraceLayout(const Context& context) : device_(context.device()) {
         {BINDING_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {BINDING_PATCHES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {BINDING_SURFACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        {BINDING_CELLS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     }};
     std::array<VkDescriptorSetLayoutBinding, kinds.size()> bindings{};
     for (std::size_t i = 0; i < kinds.size(); ++i) {

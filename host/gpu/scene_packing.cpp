@@ -50,9 +50,13 @@ struct PrimitivePacker {
         info.domain = vec4(float(p.surface.u0), float(p.surface.u1), float(p.surface.v0), float(p.surface.v1));
         out.surfaces.push_back(info);
         for (const auto& cell : p.cells) {
-            vec4 domain(float(cell.u0), float(cell.u1), float(cell.v0), float(cell.v1));
-            add({SHAPE_PARAMETRIC, material, index, object, domain, v4(0.5 * (cell.lo + cell.hi)), {}},
-                Aabb{cell.lo, cell.hi});
+            auto corner = [&](double u, double v) { return v4(surface::evaluate_surface(p.surface, u, v).P, index); };
+            ParametricCell c{vec4(float(cell.u0), float(cell.u1), float(cell.v0), float(cell.v1)),
+                             corner(cell.u0, cell.v0), corner(cell.u1, cell.v0), corner(cell.u0, cell.v1),
+                             corner(cell.u1, cell.v1)};
+            auto cell_index = static_cast<uint>(out.cells.size());
+            out.cells.push_back(c);
+            add({SHAPE_PARAMETRIC, material, cell_index, object, {}, {}, {}}, Aabb{cell.lo, cell.hi});
         }
     }
 

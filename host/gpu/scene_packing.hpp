@@ -15,6 +15,7 @@ struct PackedScene {
     std::vector<BvhNode> nodes;
     std::vector<PatchLeaf> patches;
     std::vector<SurfaceInfo> surfaces;
+    std::vector<ParametricCell> cells;
     std::vector<Material> materials;
     std::vector<Light> lights;
     uint unbounded_count = 0;

@@ -14,7 +14,16 @@ namespace {
 
 std::map<std::string, int> reflected(bool strides = false) {
     std::map<std::string, int> values;
-    for (const auto& m : reflect_block_members(directory_tree(test::source_path("shaders")), "trace.comp"))
+    // With a parametric surface compiled in, so the blocks only its code uses are reflected too.
+    auto disk = directory_tree(test::source_path("shaders"));
+    ShaderTree tree = [disk](const std::string& name) -> std::optional<std::string> {
+        if (name == "surface_functions.glsl")
+            return std::string("#define LANCER_PARAMETRIC_SURFACES 1\n"
+                               "void surface_eval(uint s, vec2 uv, out vec3 P, out vec3 Pu, out vec3 Pv) {\n"
+                               "    P = vec3(uv, 0.0); Pu = vec3(1.0, 0.0, 0.0); Pv = vec3(0.0, 1.0, 0.0);\n}\n");
+        return disk(name);
+    };
+    for (const auto& m : reflect_block_members(tree, "trace.comp"))
         values[m.name] = strides ? m.top_level_stride : m.offset;
     return values;
 }
@@ -42,11 +51,32 @@ TEST(Layout, HostOffsetsMatchGlslangReflection) {
     EXPECT_OFFSET("frame.max_depth", FrameParams, max_depth);
     EXPECT_OFFSET("frame.primitive_count", FrameParams, primitive_count);
     EXPECT_OFFSET("frame.light_count", FrameParams, light_count);
+    EXPECT_OFFSET("frame.node_count", FrameParams, node_count);
+    EXPECT_OFFSET("frame.unbounded_count", FrameParams, unbounded_count);
+    EXPECT_OFFSET("frame.loop_probe", FrameParams, loop_probe);
     EXPECT_OFFSET("primitives.type", Primitive, type);
     EXPECT_OFFSET("primitives.material", Primitive, material);
     EXPECT_OFFSET("primitives.p0", Primitive, p0);
     EXPECT_OFFSET("primitives.p1", Primitive, p1);
     EXPECT_OFFSET("primitives.p2", Primitive, p2);
+    EXPECT_OFFSET("primitives.data", Primitive, data);
+    EXPECT_OFFSET("primitives.object", Primitive, object);
+    EXPECT_OFFSET("nodes.lo", BvhNode, lo);
+    EXPECT_OFFSET("nodes.hi", BvhNode, hi);
+    EXPECT_OFFSET("nodes.first", BvhNode, first);
+    EXPECT_OFFSET("nodes.count", BvhNode, count);
+    EXPECT_OFFSET("patch_leaves.points", PatchLeaf, points);
+    EXPECT_OFFSET("patch_leaves.origin", PatchLeaf, origin);
+    EXPECT_OFFSET("patch_leaves.domain", PatchLeaf, domain);
+    EXPECT_OFFSET("surfaces.row0", SurfaceInfo, row0);
+    EXPECT_OFFSET("surfaces.row1", SurfaceInfo, row1);
+    EXPECT_OFFSET("surfaces.row2", SurfaceInfo, row2);
+    EXPECT_OFFSET("surfaces.domain", SurfaceInfo, domain);
+    EXPECT_OFFSET("cells.domain", ParametricCell, domain);
+    EXPECT_OFFSET("cells.p00", ParametricCell, p00);
+    EXPECT_OFFSET("cells.p10", ParametricCell, p10);
+    EXPECT_OFFSET("cells.p01", ParametricCell, p01);
+    EXPECT_OFFSET("cells.p11", ParametricCell, p11);
     EXPECT_OFFSET("materials.color", Material, color);
     EXPECT_OFFSET("materials.color2", Material, color2);
     EXPECT_OFFSET("materials.phong", Material, phong);
@@ -67,6 +97,10 @@ TEST(Layout, ArrayStridesMatchHostSizes) {
     EXPECT_EQ(strides.at("primitives.p0"), static_cast<int>(sizeof(Primitive)));
     EXPECT_EQ(strides.at("materials.color"), static_cast<int>(sizeof(Material)));
     EXPECT_EQ(strides.at("lights.color"), static_cast<int>(sizeof(Light)));
+    EXPECT_EQ(strides.at("nodes.lo"), static_cast<int>(sizeof(BvhNode)));
+    EXPECT_EQ(strides.at("patch_leaves.origin"), static_cast<int>(sizeof(PatchLeaf)));
+    EXPECT_EQ(strides.at("surfaces.row0"), static_cast<int>(sizeof(SurfaceInfo)));
+    EXPECT_EQ(strides.at("cells.p00"), static_cast<int>(sizeof(ParametricCell)));
 }
 
 }  // namespace
