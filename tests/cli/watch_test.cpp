@@ -38,28 +38,10 @@ radius = 1
 material = "red"
 )";
 
-void write_file(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::trunc);
-    out << text;
-}
-
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::string scene_text(const std::string& sphere_x) {
     std::string s = kScene;
     s.replace(s.find("SPHERE_X"), 8, sphere_x);
     return s;
-}
-
-int count(const std::string& text, const std::string& what) {
-    int n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
 }
 
 ino_t inode(const fs::path& p) {
@@ -74,7 +56,7 @@ protected:
         fs::remove_all(dir);
         fs::create_directories(dir);
         fs::copy(test::source_path("shaders"), dir / "shaders", fs::copy_options::recursive);
-        write_file(dir / "scene.toml", scene_text("0"));
+        test::write_file(dir / "scene.toml", scene_text("0"));
         child = std::make_unique<test::ChildProcess>(
             std::vector<std::string>{"watch", "scene.toml", "-o", "out.png", "--shaders", "shaders"}, dir.string(),
             (dir / "log.txt").string());
@@ -89,7 +71,7 @@ protected:
         EXPECT_EQ(child->log().find("validation"), std::string::npos) << child->log();
     }
     bool wait_for_count(const std::string& what, int n) {
-        return test::ChildProcess::wait_until([&] { return count(child->log(), what) >= n; });
+        return test::ChildProcess::wait_until([&] { return test::count_occurrences(child->log(), what) >= n; });
     }
     Rgb8Image output() { return read_png((dir / "out.png").string()); }
 
@@ -100,12 +82,12 @@ protected:
 TEST_F(Watch, ShaderEditsRecompileAndErrorsKeepTheLastGoodImage) {
     // A changed background colour in the shader source reaches the PNG.
     fs::path trace = dir / "shaders/trace.comp";
-    std::string source = read_file(trace);
+    std::string source = test::read_file(trace);
     const std::string miss = "color += weight * frame.background.rgb;";
     ASSERT_NE(source.find(miss), std::string::npos) << "the test edits this line of trace.comp";
     std::string magenta = source;
     magenta.replace(magenta.find(miss), miss.size(), "color += weight * vec3(1.0, 0.0, 1.0);");
-    write_file(trace, magenta);
+    test::write_file(trace, magenta);
     ASSERT_TRUE(wait_for_count("reload: ", 1)) << child->log();
     Rgb8Image img = output();
     EXPECT_EQ(img.at(0, 0)[0], 255);
@@ -114,9 +96,9 @@ TEST_F(Watch, ShaderEditsRecompileAndErrorsKeepTheLastGoodImage) {
 
     // A syntax error in an included file names that file and line; image and process survive.
     fs::path shade = dir / "shaders/shade.glsl";
-    std::string good_shade = read_file(shade);
+    std::string good_shade = test::read_file(shade);
     int lines = static_cast<int>(std::count(good_shade.begin(), good_shade.end(), '\n'));
-    write_file(shade, good_shade + "this is not glsl(\n");
+    test::write_file(shade, good_shade + "this is not glsl(\n");
     ASSERT_TRUE(wait_for_count("compile failed", 1)) << child->log();
     std::string expected_location = "shaders/shade.glsl:" + std::to_string(lines + 1) + ": error:";
     EXPECT_NE(child->log().find(expected_location), std::string::npos) << child->log();
@@ -125,7 +107,7 @@ TEST_F(Watch, ShaderEditsRecompileAndErrorsKeepTheLastGoodImage) {
 
     // Fixing it renders again: a new file replaces the old one.
     ino_t before = inode(dir / "out.png");
-    write_file(shade, good_shade);
+    test::write_file(shade, good_shade);
     ASSERT_TRUE(wait_for_count("reload: ", 3)) << child->log();
     EXPECT_NE(inode(dir / "out.png"), before);
     EXPECT_EQ(output().at(0, 0)[1], 0);  // still magenta
@@ -133,12 +115,12 @@ TEST_F(Watch, ShaderEditsRecompileAndErrorsKeepTheLastGoodImage) {
 
 TEST_F(Watch, SceneEditsRerenderAndBrokenScenesKeepTheLastGoodImage) {
     Rgb8Image centred = output();
-    write_file(dir / "scene.toml", scene_text("1.5"));
+    test::write_file(dir / "scene.toml", scene_text("1.5"));
     ASSERT_TRUE(wait_for_count("reload: ", 1)) << child->log();
     Rgb8Image moved = output();
     EXPECT_NE(moved.bytes, centred.bytes);
 
-    write_file(dir / "scene.toml", scene_text("1.5") + "\n[[object]]\ntype = \"sphere\"\nradius = -1\ncenter = [0, 0, 0]\n");
+    test::write_file(dir / "scene.toml", scene_text("1.5") + "\n[[object]]\ntype = \"sphere\"\nradius = -1\ncenter = [0, 0, 0]\n");
     ASSERT_TRUE(wait_for_count("scene error", 1)) << child->log();
     EXPECT_TRUE(std::regex_search(child->log(), std::regex(R"(scene\.toml:\d+:\d+: error: sphere radius must be positive)")))
         << child->log();
@@ -148,13 +130,13 @@ TEST_F(Watch, SceneEditsRerenderAndBrokenScenesKeepTheLastGoodImage) {
 
 TEST_F(Watch, ABurstOfWritesIsOneReload) {
     fs::path common = dir / "shaders/common.glsl";
-    std::string text = read_file(common);
-    for (int i = 0; i < 5; ++i) write_file(common, text + "// save " + std::to_string(i) + "\n");
+    std::string text = test::read_file(common);
+    for (int i = 0; i < 5; ++i) test::write_file(common, text + "// save " + std::to_string(i) + "\n");
     ASSERT_TRUE(wait_for_count("common.glsl changed", 1)) << child->log();
     // A later scene edit is a sentinel: a second reload for the burst would come before it.
-    write_file(dir / "scene.toml", scene_text("0.5"));
+    test::write_file(dir / "scene.toml", scene_text("0.5"));
     ASSERT_TRUE(wait_for_count("scene.toml changed", 1)) << child->log();
-    EXPECT_EQ(count(child->log(), "common.glsl changed"), 1) << child->log();
+    EXPECT_EQ(test::count_occurrences(child->log(), "common.glsl changed"), 1) << child->log();
 }
 
 TEST_F(Watch, InterruptExitsCleanly) {
@@ -173,7 +155,7 @@ TEST(WatchFrame, PreviewsTheRequestedFrameOfAnAnimation) {
     fs::path dir = fs::path(test::output_dir()) / ("watch-frame-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
-    write_file(dir / "anim.toml", scene_text("0.5") + R"(
+    test::write_file(dir / "anim.toml", scene_text("0.5") + R"(
 [animation]
 frames = 8
 [animation.camera_orbit]

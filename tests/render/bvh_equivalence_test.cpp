@@ -46,15 +46,7 @@ TEST_P(BvhEquivalence, GpuBvhMatchesBruteForce) {
     if (d.max_abs) test::save_comparison("bvh-gpu-" + std::filesystem::path(GetParam()).stem().string(), bvh, brute);
 }
 
-std::vector<std::string> scene_files() {
-    std::vector<std::string> paths;
-    for (const auto& e : std::filesystem::directory_iterator(test::source_path("scenes")))
-        if (e.path().extension() == ".toml") paths.push_back(e.path().string());
-    std::sort(paths.begin(), paths.end());
-    return paths;
-}
-
-INSTANTIATE_TEST_SUITE_P(Scenes, BvhEquivalence, testing::ValuesIn(scene_files()), [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(Scenes, BvhEquivalence, testing::ValuesIn(test::scene_files()), [](const auto& info) {
     return std::filesystem::path(info.param).stem().string();
 });
 

@@ -1,5 +1,6 @@
 #include "support/test_support.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -40,22 +41,39 @@ std::string save_comparison(const std::string& name, const Rgb8Image& a, const R
     return dir;
 }
 
-namespace {
-std::string slurp(const std::string& path) {
+std::string read_file(const std::string& path) {
     std::ifstream in(path);
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
 }
-}  // namespace
+
+void write_file(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::trunc);
+    out << text;
+}
+
+int count_occurrences(const std::string& text, const std::string& what) {
+    int n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+std::vector<std::string> scene_files() {
+    std::vector<std::string> paths;
+    for (const auto& e : std::filesystem::directory_iterator(source_path("scenes")))
+        if (e.path().extension() == ".toml") paths.push_back(e.path().string());
+    std::sort(paths.begin(), paths.end());
+    return paths;
+}
 
 CommandResult run_lancer(const std::string& args, const std::string& env) {
     std::string base = output_dir() + "/cli-" + std::to_string(::getpid());
     // Every GPU run is validated: any validation message turns exit code 0 into 1.
     std::string command = "LANCER_VALIDATION=1 " + env + " " + LANCER_EXE + " " + args + " >" + base + ".out 2>" + base + ".err </dev/null";
     int status = std::system(command.c_str());
-    CommandResult r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(base + ".out"),
-                    slurp(base + ".err")};
+    CommandResult r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), read_file(base + ".out"),
+                    read_file(base + ".err")};
     std::filesystem::remove(base + ".out");
     std::filesystem::remove(base + ".err");
     return r;

@@ -34,5 +34,12 @@ struct CommandResult {
 CommandResult run_lancer(const std::string& args, const std::string& env = "");
 
 bool file_exists(const std::string& path);
+std::string read_file(const std::string& path);
+void write_file(const std::string& path, const std::string& text);  // replaces it
+// How many times `what` occurs in `text` (log lines, for instance).
+int count_occurrences(const std::string& text, const std::string& what);
+
+// Every scene shipped in scenes/, sorted, for tests that run on all of them.
+std::vector<std::string> scene_files();
 
 }  // namespace lancer::test

@@ -85,24 +85,6 @@ std::string scene_text(const CameraSpec& camera) {
     return "camera = { " + view::camera_toml(camera) + " }\n" + kSceneBody;
 }
 
-void write_file(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::trunc);
-    out << text;
-}
-
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-int count(const std::string& text, const std::string& what) {
-    int n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
-
 dvec3 parse_vec(const std::string& text) {
     dvec3 v;
     std::sscanf(text.c_str(), "%lf, %lf, %lf", &v.x, &v.y, &v.z);
@@ -146,7 +128,7 @@ protected:
         dir = fs::path(test::output_dir()) / (std::string("view-") + info->name());
         fs::remove_all(dir);
         fs::create_directories(dir);
-        write_file(dir / "scene.toml", scene_text(file_camera()));
+        test::write_file(dir / "scene.toml", scene_text(file_camera()));
     }
 
     void TearDown() override {
@@ -176,7 +158,7 @@ protected:
 
     std::string log() const { return child ? child->log() : ""; }
     bool wait_for_count(const std::string& what, int n, seconds timeout = seconds(60)) {
-        return test::ChildProcess::wait_until([&] { return count(log(), what) >= n; }, timeout);
+        return test::ChildProcess::wait_until([&] { return test::count_occurrences(log(), what) >= n; }, timeout);
     }
     // Waits until a finished refinement shows a camera whose eye is `eye`.
     bool wait_for_refined_eye(const dvec3& eye) {
@@ -191,7 +173,7 @@ protected:
     // `lancer render` of the test scene with `camera`.
     Rgb8Image render(const CameraSpec& camera, const std::string& name = "reference") {
         fs::path scene = dir / (name + ".toml"), png = dir / (name + ".png");
-        write_file(scene, scene_text(camera));
+        test::write_file(scene, scene_text(camera));
         auto r = test::run_lancer("render " + scene.string() + " -q -o " + png.string());
         EXPECT_EQ(r.exit_code, 0) << r.err;
         return read_png(png.string());
@@ -331,7 +313,7 @@ TEST_F(View, HShowsAndHidesTheHelp) {
 // The bytes of frame k of an animation `lancer render` makes of the test scene plus `animation`.
 Rgb8Image render_frame(const fs::path& dir, const std::string& animation, int frame) {
     fs::path scene = dir / "animated.toml", png = dir / ("animated-" + std::to_string(frame) + ".png");
-    write_file(scene, scene_text(file_camera()) + animation);
+    test::write_file(scene, scene_text(file_camera()) + animation);
     auto r = test::run_lancer("render " + scene.string() + " -q --frames " + std::to_string(frame) + " -o " + png.string());
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return read_png(png.string());
@@ -381,12 +363,12 @@ TEST_F(View, SceneEditsReloadAndBrokenScenesKeepTheLastGoodPicture) {
     Rgb8Image before = dump();
     CameraSpec moved = file_camera();
     moved.eye.x = 2.0;
-    write_file(dir / "scene.toml", scene_text(moved));
+    test::write_file(dir / "scene.toml", scene_text(moved));
     ASSERT_TRUE(wait_for_count("scene reloaded", 1)) << log();
     ASSERT_TRUE(wait_for_refined_eye(moved.eye)) << log();  // a changed camera in the file is shown
     EXPECT_EQ(dump().bytes, render(moved).bytes);
 
-    write_file(dir / "scene.toml", scene_text(moved) + "\n[[object]]\ntype = \"sphere\"\nradius = -1\ncenter = [0, 0, 0]\n");
+    test::write_file(dir / "scene.toml", scene_text(moved) + "\n[[object]]\ntype = \"sphere\"\nradius = -1\ncenter = [0, 0, 0]\n");
     ASSERT_TRUE(wait_for_count("scene error", 1)) << log();
     EXPECT_TRUE(std::regex_search(log(), std::regex(R"(scene\.toml:\d+:\d+: error: sphere radius must be positive)"))) << log();
     EXPECT_TRUE(child->running());
@@ -402,13 +384,13 @@ TEST_F(View, ShaderEditsReloadAndCompileErrorsKeepTheLastGoodPicture) {
     fs::copy(test::source_path("shaders"), dir / "shaders", fs::copy_options::recursive);
     start({"--shaders", "shaders"});
     fs::path trace = dir / "shaders/trace.comp";
-    std::string source = read_file(trace);
+    std::string source = test::read_file(trace);
     const std::string miss = "color += weight * frame.background.rgb;";
     ASSERT_NE(source.find(miss), std::string::npos) << "the test edits this line of trace.comp";
     std::string magenta = source;
     magenta.replace(magenta.find(miss), miss.size(), "color += weight * vec3(1.0, 0.0, 1.0);");
-    int refined = count(log(), "view: refined");
-    write_file(trace, magenta);
+    int refined = test::count_occurrences(log(), "view: refined");
+    test::write_file(trace, magenta);
     ASSERT_TRUE(wait_for_count("reload: shaders compiled", 1)) << log();
     ASSERT_TRUE(wait_for_count("view: refined", refined + 1)) << log();
     Rgb8Image img = dump();
@@ -417,12 +399,12 @@ TEST_F(View, ShaderEditsReloadAndCompileErrorsKeepTheLastGoodPicture) {
     EXPECT_EQ(img.at(0, 0)[2], 255);
 
     fs::path shade = dir / "shaders/shade.glsl";
-    std::string good_shade = read_file(shade);
-    write_file(shade, good_shade + "this is not glsl(\n");
+    std::string good_shade = test::read_file(shade);
+    test::write_file(shade, good_shade + "this is not glsl(\n");
     ASSERT_TRUE(wait_for_count("compile failed", 1)) << log();
     EXPECT_NE(log().find("shaders/shade.glsl:"), std::string::npos) << log();
     EXPECT_TRUE(child->running());
-    refined = count(log(), "view: refined");
+    refined = test::count_occurrences(log(), "view: refined");
     keys("Right");  // still magenta: the last good shaders
     ASSERT_TRUE(wait_for_count("view: refined", refined + 1)) << log();
     EXPECT_EQ(dump().at(0, 0)[1], 0);
@@ -432,7 +414,7 @@ TEST_F(View, ShaderEditsReloadAndCompileErrorsKeepTheLastGoodPicture) {
 void expect_user_error(const std::string& args, const std::string& env, const std::string& message) {
     auto r = test::run_lancer(args, env);
     EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_EQ(count(r.err, "\n"), 1) << r.err;
+    EXPECT_EQ(test::count_occurrences(r.err, "\n"), 1) << r.err;
     EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
 }
 
