@@ -19,6 +19,7 @@ struct RenderCommand {
 
     int run() const {
         if (list_devices) return lancer::list_devices();
+        if (options.scene.empty()) throw UserError("render: a scene file is required (see lancer render --help)");
         Scene scene = load_scene_with_overrides(options);
         if (scene.animation || animation.requested()) return run_animation(options, animation, scene);
         std::string output = output_path(options);
@@ -36,6 +37,8 @@ Subcommand add_render_command(CLI::App& parent) {
     add_render_options(*cmd, state->options);
     add_animation_options(*cmd, state->animation);
     cmd->add_flag("--list-devices", state->list_devices, "List the Vulkan devices and exit");
+    // `lancer render --list-devices` needs no scene; run() asks for one otherwise.
+    cmd->get_option("scene")->required(false);
     return {cmd, [state] { return state->run(); }};
 }
 

@@ -49,9 +49,14 @@ TEST(Cli, HelpVersionAndDevices) {
     auto version = test::run_lancer("--version");
     EXPECT_EQ(version.exit_code, 0);
     EXPECT_NE(version.out.find("lancer "), std::string::npos);
-    auto devices = test::run_lancer("--list-devices");
-    EXPECT_EQ(devices.exit_code, 0);
-    EXPECT_NE(devices.out.find("0: "), std::string::npos) << devices.out;
+    for (const char* args : {"--list-devices", "render --list-devices"}) {
+        auto devices = test::run_lancer(args);
+        EXPECT_EQ(devices.exit_code, 0) << args << ": " << devices.err;
+        EXPECT_NE(devices.out.find("0: "), std::string::npos) << args << ": " << devices.out;
+    }
+    auto no_scene = test::run_lancer("render -o x.png");
+    EXPECT_EQ(no_scene.exit_code, 2);
+    EXPECT_NE(no_scene.err.find("a scene file is required"), std::string::npos) << no_scene.err;
 }
 
 struct BadCase {
