@@ -22,6 +22,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg
   libsdl2-dev xvfb xdotool x11-apps
+  parallel
 )
 
 missing=()

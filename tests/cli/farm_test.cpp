@@ -1,0 +1,96 @@
+// The farm recipes of docs/farm.md, run as written: GNU parallel over "ssh" to two hosts (an
+// ssh stand-in that runs the jobs here) and the Slurm array script, task by task. Either way the
+// frames must be byte for byte those of one machine rendering the whole sequence.
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include "support/test_support.hpp"
+
+namespace lancer {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScene = test::source_path("tests/data/anim/small.toml");  // 6 frames, 48x27
+constexpr int kFrames = 6;
+
+std::string fresh_dir(const std::string& name) {
+    std::string dir = test::output_dir() + "/farm-" + name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+// Runs a shell command in `dir` (stdout and stderr to dir/log.txt); returns its exit code.
+int run_in(const std::string& dir, const std::string& command) {
+    std::string line = "cd '" + dir + "' && " + command + " >log.txt 2>&1 </dev/null";
+    int status = std::system(line.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// Every job's lancer runs under the validation layer: a message fails its job.
+std::string lancer_env() { return std::string("LANCER='") + LANCER_EXE + "' LANCER_VALIDATION=1 "; }
+
+// The whole sequence rendered by one machine, in dir/single.
+void render_on_one_machine(const std::string& dir) {
+    auto r = test::run_lancer("render " + kScene + " -q -o " + dir + "/single/f_%d.png");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+}
+
+void expect_same_frames(const std::string& dir, const std::string& sub) {
+    for (int k = 0; k < kFrames; ++k) {
+        std::string name = "/f_" + std::to_string(k) + ".png";
+        ASSERT_TRUE(test::file_exists(dir + "/" + sub + name)) << sub << name << "\n" << test::read_file(dir + "/log.txt");
+        EXPECT_EQ(test::read_file(dir + "/" + sub + name), test::read_file(dir + "/single" + name)) << sub << name;
+    }
+}
+
+TEST(Farm, GnuParallelOverSshToTwoHostsRendersTheSameFrames) {
+    std::string dir = fresh_dir("parallel");
+    render_on_one_machine(dir);
+    fs::create_directories(dir + "/farm");
+    // Chunks of 2 frames: three jobs over hostA and hostB, one job at a time on each.
+    std::string command = lancer_env() + "FAKE_SSH_LOG=ssh.log PARALLEL_SSH='" +
+                          test::source_path("tests/data/farm/fake-ssh") + "' '" +
+                          test::source_path("docs/farm/render-parallel.sh") + "' '" + kScene +
+                          "' farm/f_%d.png 6 1/hostA,1/hostB 2";
+    ASSERT_EQ(run_in(dir, command), 0) << test::read_file(dir + "/log.txt");
+    std::string hosts = test::read_file(dir + "/ssh.log");
+    EXPECT_GE(test::count_occurrences(hosts, "hostA"), 1) << hosts;
+    EXPECT_GE(test::count_occurrences(hosts, "hostB"), 1) << hosts;
+    EXPECT_EQ(test::count_occurrences(hosts, "host"), 3) << "one ssh per job: " << hosts;
+    expect_same_frames(dir, "farm");
+
+    // Run again after losing a frame: only that frame is rendered, the others are kept.
+    fs::remove(dir + "/farm/f_3.png");
+    auto before = fs::last_write_time(dir + "/farm/f_0.png");
+    ASSERT_EQ(run_in(dir, command), 0) << test::read_file(dir + "/log.txt");
+    expect_same_frames(dir, "farm");
+    EXPECT_EQ(fs::last_write_time(dir + "/farm/f_0.png"), before);
+}
+
+TEST(Farm, SlurmArrayTasksTogetherRenderTheSequence) {
+    std::string dir = fresh_dir("slurm");
+    render_on_one_machine(dir);
+    fs::create_directories(dir + "/farm");
+    std::string script = "'" + test::source_path("docs/farm/render-array.sbatch") + "' '" + kScene + "' farm/f_%d.png 6 4";
+    // Chunks of 4: task 0 renders 0-3, task 1 renders 4-5, task 2 finds nothing left.
+    for (int task = 0; task < 3; ++task) {
+        std::string env = lancer_env() + "SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " SLURM_CPUS_PER_TASK=2 ";
+        ASSERT_EQ(run_in(dir, env + script), 0) << "task " << task << ": " << test::read_file(dir + "/log.txt");
+        if (task == 2) {
+            EXPECT_NE(test::read_file(dir + "/log.txt").find("no frames left"), std::string::npos);
+        }
+    }
+    expect_same_frames(dir, "farm");
+
+    // Outside a job array the script says what is missing instead of guessing a task.
+    EXPECT_NE(run_in(dir, lancer_env() + script), 0);
+    EXPECT_NE(test::read_file(dir + "/log.txt").find("SLURM_ARRAY_TASK_ID"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lancer
