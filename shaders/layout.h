@@ -47,7 +47,7 @@ LANCER_CONST SHAPE_PLANE = 1;      // p0 = (point, 0), p1 = (unit normal, 0)
 LANCER_CONST SHAPE_RECTANGLE = 2;  // p0 = (corner, 0), p1 = (edge_u, 0), p2 = (edge_v, 0)
 LANCER_CONST SHAPE_BOX = 3;        // p0 = (min, 0), p1 = (max, 0)
 LANCER_CONST SHAPE_BEZIER = 4;     // data = index of its PatchLeaf
-LANCER_CONST SHAPE_PARAMETRIC = 5; // data = index of its ParametricCell
+LANCER_CONST SHAPE_PARAMETRIC = 5; // data = index of its ParametricCell, p0 = (box min, 0), p1 = (box max, 0)
 
 // Material::pattern values.
 LANCER_CONST PATTERN_SOLID = 0;

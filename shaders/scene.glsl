@@ -55,25 +55,6 @@ vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
     return vec3(0.0, 0.0, 1.0);
 }
 
-// Distance at which the ray enters the box, or INFINITY if it misses it within [0, t_max].
-float box_entry(vec3 lo, vec3 hi, vec3 origin, vec3 inv_dir, float t_max) {
-    vec3 t0 = (lo - origin) * inv_dir;
-    vec3 t1 = (hi - origin) * inv_dir;
-    vec3 tn = min(t0, t1);
-    vec3 tf = max(t0, t1);
-    float enter = max(max(tn.x, tn.y), max(tn.z, 0.0));
-    float leave = min(min(tf.x, tf.y), min(tf.z, t_max));
-    return enter <= leave ? enter : INFINITY;
-}
-
-// 1/d with zero components replaced by a huge finite value of the same sign: keeps the slab
-// test free of 0 * inf = NaN for axis-parallel rays.
-vec3 safe_inverse(vec3 d) {
-    const float tiny = 1e-30;
-    vec3 s = vec3(d.x < 0.0 ? -1.0 : 1.0, d.y < 0.0 ? -1.0 : 1.0, d.z < 0.0 ? -1.0 : 1.0);
-    return s / max(abs(d), vec3(tiny));
-}
-
 const int BVH_STACK_SIZE = 64;  // the builder bounds the tree depth by 60 (host/accel/bvh.cpp)
 
 const uint NO_PRIMITIVE = 0xffffffffu;

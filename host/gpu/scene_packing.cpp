@@ -20,6 +20,15 @@ constexpr std::size_t kMinPrimitivesForBvh = 16;
 
 vec4 v4(const dvec3& v, double w = 0.0) { return vec4(float(v.x), float(v.y), float(v.z), float(w)); }
 
+// A box for the shader's slab test, rounded outward to float and padded by a few float ulps of
+// its coordinates: the slab test has rounding errors of its own, and a ray aimed exactly at a
+// box's edge (a patch corner, which is a control point and so on the box) must not slip past it.
+void pack_box(const Aabb& box, vec4& lo, vec4& hi) {
+    double pad = 1e-6 * std::max({1.0, glm::length(box.lo), glm::length(box.hi)});
+    lo = vec4(round_down(box.lo.x - pad), round_down(box.lo.y - pad), round_down(box.lo.z - pad), 0.0f);
+    hi = vec4(round_up(box.hi.x + pad), round_up(box.hi.y + pad), round_up(box.hi.z + pad), 0.0f);
+}
+
 // Turns each object into primitives (one, or many for patch sets), each with its box if bounded.
 struct PrimitivePacker {
     PackedScene& out;
@@ -56,7 +65,9 @@ struct PrimitivePacker {
                              corner(cell.u1, cell.v1)};
             auto cell_index = static_cast<uint>(out.cells.size());
             out.cells.push_back(c);
-            add({SHAPE_PARAMETRIC, material, cell_index, object, {}, {}, {}}, Aabb{cell.lo, cell.hi});
+            Primitive prim{SHAPE_PARAMETRIC, material, cell_index, object, {}, {}, {}};
+            pack_box(Aabb{cell.lo, cell.hi}, prim.p0, prim.p1);
+            add(prim, Aabb{cell.lo, cell.hi});
         }
     }
 
@@ -132,13 +143,8 @@ PackedScene pack_scene(const Scene& scene, Acceleration acceleration) {
     packed.primitives.insert(packed.primitives.end(), unbounded.begin(), unbounded.end());
     packed.unbounded_count = static_cast<uint>(unbounded.size());
     for (const lancer::BvhNode& n : bvh.nodes) {
-        // Padded by a few float ulps of the coordinates: the shader's slab test has rounding
-        // errors of its own, and a ray aimed exactly at a box's edge (a patch corner, which is
-        // a control point and so on the box) must not slip past it.
-        double pad = 1e-6 * std::max({1.0, glm::length(n.box.lo), glm::length(n.box.hi)});
         gpu::BvhNode g{};
-        g.lo = vec4(round_down(n.box.lo.x - pad), round_down(n.box.lo.y - pad), round_down(n.box.lo.z - pad), 0.0f);
-        g.hi = vec4(round_up(n.box.hi.x + pad), round_up(n.box.hi.y + pad), round_up(n.box.hi.z + pad), 0.0f);
+        pack_box(n.box, g.lo, g.hi);
         g.first = n.first;
         g.count = n.count;
         packed.nodes.push_back(g);

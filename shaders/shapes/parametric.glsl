@@ -74,6 +74,9 @@ bool newton(uint surface, vec4 cell, vec2 size, vec3 origin, vec3 n1, vec3 n2, i
 }
 
 bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit) {
+    // The cell's own proved box first (p0, p1): a BVH leaf holds several cells, and a slab test
+    // costs far less than Newton's method.
+    if (box_entry(prim.p0.xyz, prim.p1.xyz, ray.origin, safe_inverse(ray.dir), t_max) == INFINITY) return false;
     ParametricCell c = cells[prim.data];
     uint surface = uint(c.p00.w);
     vec4 cell = c.domain;  // (u0, u1, v0, v1)
