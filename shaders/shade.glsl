@@ -1,6 +1,6 @@
 // Phong shading at a hit: ambient + per unshadowed light (diffuse + specular).
-// The CPU reference writes the same model in host/cpu/shading.cpp; the README's scene
-// reference states it as a formula.
+// The CPU reference writes the same model in host/cpu/tracer.cpp; docs/scene-format.md
+// ("Shading model") states it as a formula.
 #ifndef LANCER_SHADE_GLSL
 #define LANCER_SHADE_GLSL
 

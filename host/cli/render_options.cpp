@@ -1,5 +1,6 @@
 #include "cli/render_options.hpp"
 
+#include <cctype>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -15,11 +16,25 @@
 
 namespace lancer {
 
+namespace {
+
+// lancer writes PNG files only: a name without .png (or an empty one) would be a surprise later.
+std::string check_png_name(std::string& name) {
+    if (name.empty()) return "the output file name is empty";
+    std::string ext = std::filesystem::path(name).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png") return "'" + name + "': lancer writes PNG images, so the name must end in .png";
+    return {};
+}
+
+}  // namespace
+
 void add_render_options(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("scene", o.scene, "Scene file (TOML)")->required();
     cmd.add_option("-o,--output", o.output,
                    "Output PNG, or for an animation a frame pattern such as NAME_%03d.png "
-                   "(default: the scene's name, here)");
+                   "(default: the scene's name, here)")
+        ->check(CLI::Validator(check_png_name, "FILE.png"));
     cmd.add_option("--width", o.width, "Image width in pixels (overrides [render] width)")
         ->check(CLI::Range(1, limits::kMaxImageSide));
     cmd.add_option("--height", o.height, "Image height in pixels (overrides [render] height)")

@@ -32,7 +32,7 @@ Tracer::Tracer(const Scene& scene, Acceleration acceleration) : scene_(scene) {
     std::vector<Aabb> boxes;
     for (const Object& object : scene.objects) {
         std::optional<Aabb> box;
-        if (acceleration == Acceleration::Bvh) box = shape_bounds(object.shape);
+        if (acceleration != Acceleration::BruteForce) box = shape_bounds(object.shape);
         if (box) {
             bounded_.push_back(&object);
             boxes.push_back(*box);

@@ -127,7 +127,8 @@ PackedScene pack_scene(const Scene& scene, Acceleration acceleration) {
     }
     std::size_t bounded_count = 0;
     for (const auto& [p, box] : prims) bounded_count += box.has_value();
-    bool use_bvh = acceleration == Acceleration::Bvh && bounded_count >= kMinPrimitivesForBvh;
+    bool use_bvh = acceleration == Acceleration::BvhAlways ||
+                   (acceleration == Acceleration::Bvh && bounded_count >= kMinPrimitivesForBvh);
     std::vector<Primitive> bounded, unbounded;
     std::vector<Aabb> boxes;
     for (const auto& [p, box] : prims) {

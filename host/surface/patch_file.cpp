@@ -128,20 +128,19 @@ std::vector<BezierPatch> parse_patch_text(std::string_view text, const std::stri
 std::vector<BezierPatch> read_patch_file(const std::string& path) {
     std::error_code ec;
     auto status = std::filesystem::status(path, ec);
-    if (ec) throw SceneError({path, 0, 0}, "cannot read patch file: " + ec.message());
-    if (std::filesystem::is_directory(status))
-        throw SceneError({path, 0, 0}, "cannot read patch file: it is a directory");
-    if (!std::filesystem::is_regular_file(status))
-        throw SceneError({path, 0, 0}, "cannot read patch file: not a regular file");
+    // Line 0: the file as a whole; the scene loader puts these reasons after the file's name.
+    if (ec) throw SceneError({path, 0, 0}, ec.message());
+    if (std::filesystem::is_directory(status)) throw SceneError({path, 0, 0}, "it is a directory");
+    if (!std::filesystem::is_regular_file(status)) throw SceneError({path, 0, 0}, "not a regular file");
     auto size = std::filesystem::file_size(path, ec);
     if (!ec && size > static_cast<std::uintmax_t>(kMaxPatchFileBytes))
         throw SceneError({path, 0, 0},
-                         cat("patch file is larger than the limit of ", kMaxPatchFileBytes >> 20, " MiB"));
+                         cat("it is larger than the limit of ", kMaxPatchFileBytes >> 20, " MiB"));
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw SceneError({path, 0, 0}, std::string("cannot read patch file: ") + std::strerror(errno));
+    if (!in) throw SceneError({path, 0, 0}, std::strerror(errno));
     std::ostringstream text;
     text << in.rdbuf();
-    if (in.bad()) throw SceneError({path, 0, 0}, "cannot read patch file: read error");
+    if (in.bad()) throw SceneError({path, 0, 0}, "read error");
     return parse_patch_text(text.str(), path);
 }
 

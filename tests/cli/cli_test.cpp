@@ -41,14 +41,43 @@ TEST(Cli, CpuBackendAndOverridesWork) {
     EXPECT_EQ(read_png(out).width, 20);
 }
 
+// --samples and --max-depth give exactly the picture of a scene file whose [render] table says
+// the same, and differ from the file's own values (seed.toml: 3 samples, 5 bounces, mirrors).
+TEST(Cli, SamplesAndMaxDepthOverrideTheRenderTable) {
+    std::string seed = test::read_file(test::source_path("scenes/seed.toml"));
+    auto replace = [&](const std::string& from, const std::string& to) {
+        ASSERT_NE(seed.find(from), std::string::npos) << from;
+        seed.replace(seed.find(from), from.size(), to);
+    };
+    replace("samples = 3", "samples = 2");
+    replace("max_depth = 5", "max_depth = 1");
+    std::string edited = test::output_dir() + "/cli-seed-2-1.toml";
+    test::write_file(edited, seed);
+    const std::string size = " --width 48 --height 27 -q -o ";
+    std::string by_file = out_path("by-file"), by_options = out_path("by-options"), plain = out_path("plain");
+    ASSERT_EQ(test::run_lancer("render " + edited + size + by_file).exit_code, 0);
+    auto r = test::run_lancer("render " + test::source_path("scenes/seed.toml") + " --samples 2 --max-depth 1" + size +
+                              by_options);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    ASSERT_EQ(test::run_lancer("render " + test::source_path("scenes/seed.toml") + size + plain).exit_code, 0);
+    EXPECT_EQ(read_png(by_options).bytes, read_png(by_file).bytes);
+    EXPECT_NE(read_png(by_options).bytes, read_png(plain).bytes);
+    // The final line states the rays per pixel the options asked for.
+    auto line = test::run_lancer("render " + test::source_path("scenes/seed.toml") + " --samples 2 --width 8 --height 8 -o " +
+                                 out_path("line"));
+    EXPECT_NE(line.err.find("4 rays/pixel"), std::string::npos) << line.err;
+}
+
 TEST(Cli, HelpVersionAndDevices) {
     auto help = test::run_lancer("render --help");
     EXPECT_EQ(help.exit_code, 0);
     for (const char* option : {"--width", "--height", "--samples", "--max-depth", "--backend", "--device", "--quiet"})
         EXPECT_NE(help.out.find(option), std::string::npos) << option;
-    auto version = test::run_lancer("--version");
-    EXPECT_EQ(version.exit_code, 0);
-    EXPECT_NE(version.out.find("lancer "), std::string::npos);
+    for (const char* args : {"--version", "render --version"}) {
+        auto version = test::run_lancer(args);
+        EXPECT_EQ(version.exit_code, 0) << args;
+        EXPECT_NE(version.out.find("lancer "), std::string::npos) << args;
+    }
     for (const char* args : {"--list-devices", "render --list-devices"}) {
         auto devices = test::run_lancer(args);
         EXPECT_EQ(devices.exit_code, 0) << args << ": " << devices.err;
@@ -67,6 +96,13 @@ struct BadCase {
 };
 
 void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
+// A directory whose name ends in .png, in the way of an output file.
+std::string directory_named_png() {
+    std::string dir = test::output_dir() + "/cli-a-directory.png";
+    fs::create_directories(dir);
+    return dir;
+}
 
 class CliRejects : public testing::TestWithParam<BadCase> {};
 
@@ -92,11 +128,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"scene_is_directory", "render " + test::source_path("scenes") + " -o OUT", "", "lancer: error: cannot read scene file '" + test::source_path("scenes") + "': it is a directory"},
         BadCase{"output_dir_missing", "render " + test::source_path("scenes/seed.toml") + kSmall + "-o /nonexistent-dir/x.png", "",
                 "lancer: error: cannot write '/nonexistent-dir/x.png': directory '/nonexistent-dir' does not exist"},
-        BadCase{"output_is_directory", "render " + test::source_path("scenes/seed.toml") + kSmall + "-o /tmp", "",
-                "lancer: error: cannot write '/tmp': it is a directory"},
+        BadCase{"output_is_directory", "render " + test::source_path("scenes/seed.toml") + kSmall + "-o " + directory_named_png(), "",
+                "lancer: error: cannot write '" + directory_named_png() + "': it is a directory"},
         // /proc accepts no new files even from root: the failure comes at the final write.
         BadCase{"output_unwritable", "render " + test::source_path("scenes/seed.toml") + kSmall + "--backend cpu -q -o /proc/lancer.png", "",
                 "lancer: error: cannot write '/proc/lancer.png'"},
+        BadCase{"output_not_png", "render " + test::source_path("scenes/seed.toml") + kSmall + "-o " + test::output_dir() + "/cli-x.jpg", "",
+                "lancer: error: --output: '" + test::output_dir() + "/cli-x.jpg': lancer writes PNG images, so the name must end in .png"},
+        BadCase{"output_empty", "render " + test::source_path("scenes/seed.toml") + kSmall + "-o ''", "",
+                "lancer: error: --output: the output file name is empty"},
         BadCase{"too_large", "render " + test::source_path("scenes/seed.toml") + " --width 16384 --height 16384 -o OUT", "",
                 "lancer: error: 16384x16384 exceeds the limit of 67108864 pixels"},
         BadCase{"bad_option", "render " + test::source_path("scenes/seed.toml") + " --samples 0 -o OUT", "", "lancer: error: --samples: Value 0 not in range"},

@@ -1,6 +1,7 @@
 // The BVH only changes which objects are tested, never the answer: on every scene, each backend
 // renders the same bytes with its BVH as with brute force.
 #include <filesystem>
+#include <memory>
 
 #include <gtest/gtest.h>
 
@@ -11,7 +12,22 @@
 namespace lancer {
 namespace {
 
-class BvhEquivalence : public testing::TestWithParam<std::string> {};
+class BvhEquivalence : public testing::TestWithParam<std::string> {
+protected:
+    // Created once for the suite, destroyed before the validation layer's messages are counted.
+    static void SetUpTestSuite() {
+        bvh_renderer = std::make_unique<GpuRenderer>(gpu::ContextOptions{"", true}, Acceleration::BvhAlways);
+        brute_renderer = std::make_unique<GpuRenderer>(gpu::ContextOptions{"", true}, Acceleration::BruteForce);
+    }
+    static void TearDownTestSuite() {
+        bvh_renderer.reset();
+        brute_renderer.reset();
+    }
+    static std::unique_ptr<GpuRenderer> bvh_renderer;  // a tree even over a handful of primitives
+    static std::unique_ptr<GpuRenderer> brute_renderer;
+};
+std::unique_ptr<GpuRenderer> BvhEquivalence::bvh_renderer;
+std::unique_ptr<GpuRenderer> BvhEquivalence::brute_renderer;
 
 Scene small(const std::string& path) {
     Scene scene = load_scene(path);
@@ -23,24 +39,23 @@ Scene small(const std::string& path) {
 
 TEST_P(BvhEquivalence, CpuBvhMatchesBruteForce) {
     Scene scene = small(GetParam());
-    Rgb8Image bvh = to_srgb8(CpuRenderer(0, Acceleration::Bvh).render(scene, {}));
+    Rgb8Image bvh = to_srgb8(CpuRenderer(0, Acceleration::BvhAlways).render(scene, {}));
     Rgb8Image brute = to_srgb8(CpuRenderer(0, Acceleration::BruteForce).render(scene, {}));
     EXPECT_EQ(bvh.bytes, brute.bytes);
 }
 
 TEST_P(BvhEquivalence, GpuBvhMatchesBruteForce) {
     Scene scene = small(GetParam());
-    static GpuRenderer brute_renderer(gpu::ContextOptions{"", true}, Acceleration::BruteForce);
     Rgb8Image brute;
     try {
-        brute = to_srgb8(brute_renderer.render(scene, {}));
+        brute = to_srgb8(brute_renderer->render(scene, {}));
     } catch (const UserError& e) {
         // Testing every one of thousands of parametric cells for every camera, shadow and
         // reflection ray exceeds lavapipe's 65535 loop iterations per invocation; lancer reports
         // that instead of a wrong image. Camera rays alone fit: the first hit of every pixel
         // (t, u, v, patch) must then be the same, bit for bit.
-        FloatImage bvh_hits = test::gpu_renderer().render_hits(scene);
-        FloatImage brute_hits = brute_renderer.render_hits(scene);
+        FloatImage bvh_hits = bvh_renderer->render_hits(scene);
+        FloatImage brute_hits = brute_renderer->render_hits(scene);
         ASSERT_EQ(bvh_hits.pixels.size(), brute_hits.pixels.size());
         int differ = 0, hits = 0;
         for (std::size_t i = 0; i < bvh_hits.pixels.size(); ++i) {
@@ -51,7 +66,7 @@ TEST_P(BvhEquivalence, GpuBvhMatchesBruteForce) {
         EXPECT_GT(hits, 0);
         return;
     }
-    Rgb8Image bvh = to_srgb8(test::gpu_renderer().render(scene, {}));
+    Rgb8Image bvh = to_srgb8(bvh_renderer->render(scene, {}));
     ImageDiff d = compare_images(bvh, brute, 0);
     EXPECT_EQ(d.max_abs, 0) << d.fraction_over * bvh.width * bvh.height << " pixels differ";
     if (d.max_abs) test::save_comparison("bvh-gpu-" + std::filesystem::path(GetParam()).stem().string(), bvh, brute);
