@@ -13,6 +13,7 @@
 #include "scene/limits.hpp"
 #include "scene/parse_animation.hpp"
 #include "scene/parse_shapes.hpp"
+#include "scene/string_position.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace lancer {
@@ -151,6 +152,7 @@ void for_each_table(const toml::array& array, const std::string& file, const std
 }  // namespace
 
 Scene parse_scene(std::string_view text, const std::string& path) {
+    SourceTextScope source(path, text);  // for messages pointing inside strings (expressions)
     toml::table root;
     try {
         root = toml::parse(text, path);

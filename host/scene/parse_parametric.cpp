@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "scene/parse_surfaces.hpp"
+#include "scene/string_position.hpp"
 #include "scene/transform.hpp"
 #include "surface/expr/domain_check.hpp"
 #include "surface/expr/evaluate.hpp"
@@ -14,12 +15,9 @@
 namespace lancer {
 namespace {
 
-// Where character `column` (0-based) of a single-line TOML string value is in the file: after
-// the opening quote. (Escape sequences before it would shift it; expressions have none.)
+// Where byte `column` (0-based) of a TOML string value's text is in the file.
 SourceLocation column_in_string(const toml::node& node, const std::string& file, int column) {
-    SourceLocation at = location_of(node, file);
-    at.column += 1 + column;
-    return at;
+    return position_in_string(source_text(file), location_of(node, file), static_cast<std::size_t>(column));
 }
 
 surface::Expr parse_string(const toml::node& node, const std::string& file, const std::string& what,
