@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include "scene/load_scene.hpp"
@@ -39,6 +40,18 @@ std::string save_comparison(const std::string& name, const Rgb8Image& a, const R
     write_png(dir + "/b.png", b);
     write_png(dir + "/diff.png", difference_image(a, b));
     return dir;
+}
+
+void expect_same_picture(const std::string& name, const Rgb8Image& a, const Rgb8Image& b) {
+    constexpr double kMinPsnr = 40.0;
+    constexpr double kMaxFractionOver = 0.001;
+    constexpr int kThreshold = 4;
+    ImageDiff d = compare_images(a, b, kThreshold);
+    testing::Test::RecordProperty(name + "_psnr_db", std::to_string(d.psnr_db));
+    if (d.psnr_db >= kMinPsnr && d.fraction_over <= kMaxFractionOver) return;
+    std::string dir = save_comparison(name, a, b);
+    ADD_FAILURE() << name << ": PSNR " << d.psnr_db << " dB, " << d.fraction_over * 100 << "% of pixels off by more than "
+                  << kThreshold << "/255 (largest " << d.max_abs << "/255); images in " << dir;
 }
 
 std::string read_file(const std::string& path) {
