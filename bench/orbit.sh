@@ -33,7 +33,7 @@ read -r fmin fmax < <(grep -E ': frame [0-9]+ \(' <<<"$log" | tail -n +2 | sed -
                       sort -g | awk 'NR==1{min=$1} {max=$1} END{print min, max}')
 awk -v w="$t0" -v e="$t1" -v n="$frames" -v s="$startup" -v f="$first" -v p="$per_frame" -v lo="$fmin" -v hi="$fmax" 'BEGIN{
   printf "one process, %d frames:   %.3f s wall\n", n, e - w
-  printf "  start-up (device + pipeline, once): %.3f s\n", s
+  printf "  start-up (device, buffers, pipeline and its compile; once): %.3f s\n", s
   printf "  first frame:                        %.3f s\n", f
   printf "  frames 2..%d:                       %.3f s/frame (min %.3f, max %.3f)\n", n, p, lo, hi
 }'

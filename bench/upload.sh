@@ -3,8 +3,9 @@
 # A generated scene of N spheres is rendered at 1x1 pixel (so tracing costs ~nothing) twice:
 #   camera  - only the camera orbits: the primitive buffer is the same every frame and is skipped
 #   object  - one sphere also moves: all N primitives (64 bytes each) are re-uploaded every frame
-# The difference per frame is the upload that skipping avoids. Both runs still pack the scene
-# every frame (that is how unchanged contents are recognised).
+# The difference per frame is the upload that skipping avoids, plus building the BVH again (a
+# renderer keeps its last tree while the primitives' boxes stay the same). Both runs still pack
+# the primitives every frame (that is how unchanged contents are recognised).
 #
 #   bench/upload.sh [spheres=100000] [frames=24]
 set -euo pipefail

@@ -29,6 +29,7 @@ struct Aabb {
         glm::dvec3 e = extent();
         return 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
     }
+    friend bool operator==(const Aabb&, const Aabb&) = default;
     bool contains(const Aabb& b) const {
         return b.lo.x >= lo.x && b.lo.y >= lo.y && b.lo.z >= lo.z && b.hi.x <= hi.x && b.hi.y <= hi.y && b.hi.z <= hi.z;
     }

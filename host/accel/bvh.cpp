@@ -128,4 +128,12 @@ Bvh build_bvh(std::span<const Aabb> boxes, const BvhOptions& options) {
     return std::move(b.bvh);
 }
 
+const Bvh& BvhCache::build(std::span<const Aabb> boxes) {
+    if (builds_ > 0 && std::equal(boxes.begin(), boxes.end(), boxes_.begin(), boxes_.end())) return bvh_;
+    bvh_ = build_bvh(boxes);
+    boxes_.assign(boxes.begin(), boxes.end());
+    ++builds_;
+    return bvh_;
+}
+
 }  // namespace lancer

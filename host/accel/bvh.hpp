@@ -29,4 +29,18 @@ struct BvhOptions {
 
 Bvh build_bvh(std::span<const Aabb> boxes, const BvhOptions& options = {});
 
+// The last tree built, for a renderer that draws frame after frame: static geometry gives the
+// same boxes, and then the same tree without building it again. Boxes are compared exactly,
+// so any change at all rebuilds.
+class BvhCache {
+public:
+    const Bvh& build(std::span<const Aabb> boxes);
+    std::size_t builds() const { return builds_; }  // trees built so far (for tests)
+
+private:
+    std::vector<Aabb> boxes_;
+    Bvh bvh_;
+    std::size_t builds_ = 0;
+};
+
 }  // namespace lancer

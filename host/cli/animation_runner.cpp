@@ -94,6 +94,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
 
         auto start = Clock::now();
         std::unique_ptr<Renderer> renderer = make_renderer(options);
+        renderer->prepare(scene_at(scene, frame_time(animation, todo.front())));
         double startup = seconds_since(start);
         std::vector<double> times;
         double rays = 0.0;

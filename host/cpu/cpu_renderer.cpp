@@ -24,7 +24,7 @@ std::string CpuRenderer::description() const {
 
 FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     const RenderSettings& rs = scene.render;
-    const cpu::Tracer tracer(scene, acceleration_);
+    const cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
     const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
     FloatImage image(rs.width, rs.height);
 
@@ -67,7 +67,7 @@ FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
 
 FloatImage CpuRenderer::render_hits(const Scene& scene) {
     const RenderSettings& rs = scene.render;
-    const cpu::Tracer tracer(scene, acceleration_);
+    const cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
     const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
     FloatImage image(rs.width, rs.height);
     for (int y = 0; y < rs.height; ++y) {

@@ -1,4 +1,5 @@
 #pragma once
+#include "accel/bvh.hpp"
 #include "render/renderer.hpp"
 
 namespace lancer {
@@ -12,9 +13,12 @@ public:
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
     FloatImage render_hits(const Scene& scene) override;
 
+    std::size_t bvh_builds() const { return bvh_cache_.builds(); }  // trees built so far (for tests)
+
 private:
     unsigned threads_;
     Acceleration acceleration_;
+    BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
 };
 
 }  // namespace lancer

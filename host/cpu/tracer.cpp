@@ -28,7 +28,7 @@ dvec3 pigment_at(const Material& m, const dvec3& p) {
     return parity == 0 ? m.checker->color_a : m.checker->color_b;
 }
 
-Tracer::Tracer(const Scene& scene, Acceleration acceleration) : scene_(scene) {
+Tracer::Tracer(const Scene& scene, Acceleration acceleration, BvhCache* cache) : scene_(scene) {
     std::vector<Aabb> boxes;
     for (const Object& object : scene.objects) {
         std::optional<Aabb> box;
@@ -40,11 +40,12 @@ Tracer::Tracer(const Scene& scene, Acceleration acceleration) : scene_(scene) {
             unbounded_.push_back(&object);
         }
     }
-    Bvh bvh = build_bvh(boxes);
+    Bvh built;
+    const Bvh& bvh = cache ? cache->build(boxes) : (built = build_bvh(boxes));
     std::vector<const Object*> ordered;
     for (std::uint32_t i : bvh.order) ordered.push_back(bounded_[i]);
     bounded_ = std::move(ordered);
-    nodes_ = std::move(bvh.nodes);
+    nodes_ = bvh.nodes;
 }
 
 namespace {

@@ -21,7 +21,8 @@ struct Hit {
 
 class Tracer {
 public:
-    explicit Tracer(const Scene& scene, Acceleration acceleration = Acceleration::Bvh);
+    // With a cache, a BVH over the same boxes as the last one is not built again (animations).
+    explicit Tracer(const Scene& scene, Acceleration acceleration = Acceleration::Bvh, BvhCache* cache = nullptr);
 
     // Colour seen along `ray`, following mirror reflections; adds every ray traced to `rays`.
     dvec3 trace(Ray ray, double& rays) const;

@@ -147,7 +147,7 @@ void GpuRenderer::upload(gpu::Buffer& buffer, std::vector<T>& shadow, std::vecto
 
 gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
     last_upload_ = {};
-    gpu::PackedScene packed = gpu::pack_scene(scene, acceleration_);
+    gpu::PackedScene packed = gpu::pack_scene(scene, acceleration_, &bvh_cache_);
     gpu::FrameParams frame = gpu::pack_frame(scene, packed);
     gpu::PipelineVariant variant{!packed.patches.empty(), !packed.nodes.empty()};
     variant.check_loop_limit = context_->info().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
@@ -247,6 +247,14 @@ FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     auto all = static_cast<std::uint32_t>(scene.render.samples * scene.render.samples);
     render_with(scene, false, {0, all}, image, progress);
     return image;
+}
+
+void GpuRenderer::prepare(const Scene& scene) {
+    // A 1x1 render of the scene: the same pipeline variant (it depends on the scene's contents,
+    // not its size), compiled by the driver at this first dispatch, and the scene's buffers.
+    Scene tiny = scene;
+    tiny.render.width = tiny.render.height = tiny.render.samples = 1;
+    render(tiny, {});
 }
 
 FloatImage GpuRenderer::render_hits(const Scene& scene) {

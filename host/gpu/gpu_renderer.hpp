@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "accel/bvh.hpp"
 #include "gpu/buffer.hpp"
 #include "gpu/context.hpp"
 #include "gpu/layout.hpp"
@@ -31,6 +32,7 @@ public:
     std::string description() const override;
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
     FloatImage render_hits(const Scene& scene) override;
+    void prepare(const Scene& scene) override;
 
     // Progressive rendering (the viewer): traces samples [first, first + count) of every pixel's
     // N x N grid, continuing `sums`, which holds what the passes before left (ignored, and
@@ -50,6 +52,7 @@ public:
     // the first attempt short (lavapipe; see shaders/trace.comp), since this renderer was made.
     std::size_t bands_rerendered() const { return bands_rerendered_; }
     const UploadStats& last_upload() const { return last_upload_; }
+    std::size_t bvh_builds() const { return bvh_cache_.builds(); }  // trees built so far (for tests)
 
     // Rebuilds the tracer from GLSL sources at run time (same entry point, same defines as the
     // embedded SPIR-V): the hot-reload path. Throws ShaderCompileError and keeps the current
@@ -107,6 +110,7 @@ private:
     std::vector<gpu::Material> materials_shadow_;
     std::vector<gpu::Light> lights_shadow_;
     UploadStats last_upload_;
+    BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
     std::size_t bands_rerendered_ = 0;
     std::size_t max_dispatch_samples_ = 0;
 };

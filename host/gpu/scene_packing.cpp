@@ -118,7 +118,7 @@ float round_up(double x) {
     return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-PackedScene pack_scene(const Scene& scene, Acceleration acceleration) {
+PackedScene pack_scene(const Scene& scene, Acceleration acceleration, BvhCache* cache) {
     PackedScene packed;
     std::vector<std::pair<Primitive, std::optional<Aabb>>> prims;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
@@ -139,7 +139,8 @@ PackedScene pack_scene(const Scene& scene, Acceleration acceleration) {
             unbounded.push_back(p);
         }
     }
-    Bvh bvh = build_bvh(boxes);
+    Bvh built;
+    const Bvh& bvh = cache ? cache->build(boxes) : (built = build_bvh(boxes));
     for (std::uint32_t index : bvh.order) packed.primitives.push_back(bounded[index]);
     packed.primitives.insert(packed.primitives.end(), unbounded.begin(), unbounded.end());
     packed.unbounded_count = static_cast<uint>(unbounded.size());

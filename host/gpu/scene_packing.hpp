@@ -4,6 +4,7 @@
 // Pure data conversion, no Vulkan.
 #include <vector>
 
+#include "accel/bvh.hpp"
 #include "gpu/layout.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -21,7 +22,8 @@ struct PackedScene {
     uint unbounded_count = 0;
 };
 
-PackedScene pack_scene(const Scene& scene, Acceleration acceleration = Acceleration::Bvh);
+// With a cache, a BVH over the same boxes as the last one is not built again (animations).
+PackedScene pack_scene(const Scene& scene, Acceleration acceleration = Acceleration::Bvh, BvhCache* cache = nullptr);
 FrameParams pack_frame(const Scene& scene, const PackedScene& packed);
 
 // float(x) rounded toward -inf / +inf, so float boxes contain their double originals.

@@ -264,6 +264,35 @@ TEST(GpuUpload, WritesOnlyTheBuffersThatChanged) {
     EXPECT_EQ(gpu.last_upload().bytes_written, frame + primitives);
 }
 
+// Frames that move only the camera and lights reuse the BVH; moving an object builds it again,
+// and the picture is then exactly that of a fresh renderer (no stale tree), on both backends.
+TEST(BvhReuse, StaticGeometryIsNotBuiltAgainFrameAfterFrame) {
+    std::string text = std::string(kStill);
+    for (int i = 0; i < 20; ++i)  // enough bounded objects for the GPU to use its BVH
+        text += fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, 0.2, 2]\nradius = 0.15\n", -2.0 + 0.2 * i);
+    Scene scene = test::scene_from_text(text);
+    scene.render.width = 32;
+    scene.render.height = 18;
+    GpuRenderer gpu(gpu::ContextOptions{"", true});
+    CpuRenderer cpu;
+    auto builds = [&] { return std::pair{gpu.bvh_builds(), cpu.bvh_builds()}; };
+    auto render_both = [&](const Scene& s) { return std::pair{gpu.render(s, {}), cpu.render(s, {})}; };
+
+    render_both(scene);
+    EXPECT_EQ(builds(), std::pair(std::size_t{1}, std::size_t{1}));
+    scene.camera.eye.x += 0.5;
+    scene.lights[0].position.y += 1;
+    render_both(scene);
+    EXPECT_EQ(builds(), std::pair(std::size_t{1}, std::size_t{1})) << "camera and lights moved, geometry did not";
+
+    std::get<Sphere>(scene.objects.back().shape).center.y += 0.3;
+    auto [g, c] = render_both(scene);
+    EXPECT_EQ(builds(), std::pair(std::size_t{2}, std::size_t{2})) << "an object moved";
+    GpuRenderer fresh_gpu(gpu::ContextOptions{"", true});
+    EXPECT_TRUE(identical(g, fresh_gpu.render(scene, {})));
+    EXPECT_TRUE(identical(c, CpuRenderer().render(scene, {})));
+}
+
 // Skipping must never leave stale data: B after A equals B after B, and A really differs.
 TEST(GpuUpload, AlternatingScenesRenderAsFreshOnes) {
     Scene a = test::scene_from_text(kStill);
