@@ -9,7 +9,8 @@
 # Columns: wall time of the whole process, render time alone (lancer's final line; POV's
 # "Trace Time"), rays per second of render time (all rays: camera, shadow, reflection; POV's
 # "Rays" plus "Shadow Ray Tests"), peak memory, and POV's wall time over this one's.
-# Images land in bench/out/: SCENE-lancer.png, SCENE-pov.png and SCENE-side.png (lancer | POV |
+# POV-Ray renders the twins kept in bench/pov/ (checked against the converter first). Images
+# land in bench/out/: SCENE-lancer.png, SCENE-pov.png and SCENE-side.png (lancer | POV |
 # difference x 8) with their PSNR, so anyone can see they are the same picture.
 #
 # Installs POV-Ray (and GNU time) with apt-get when missing: the benchmark's own setup, not the
@@ -45,9 +46,9 @@ run_lancer() {  # scene width height backend
   rm -f "$log" "$log.time"
 }
 
-run_pov() {  # pov width height
+run_pov() {  # pov width height name
   local log; log=$(mktemp)
-  /usr/bin/time -f "%e %M" -o "$log.time" povray +I"$1" +O"$out/$(basename "$1" .pov)-pov.png" +W"$2" +H"$3" \
+  /usr/bin/time -f "%e %M" -o "$log.time" povray +I"$1" +O"$out/$4-pov.png" +W"$2" +H"$3" \
     +A0.0 +AM1 +R3 -J +WT2 -D +FN >"$log" 2>&1
   local render rays shadow
   render=$(sed -nE 's/.*Trace Time:.*\(([0-9.]+) seconds\).*/\1/p' "$log" | tail -n 1)
@@ -77,15 +78,28 @@ row() {  # scene size spp name "wall render rays mib" pov_wall
   printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$1" "$2" "$3" "$4" "$wall" "$render" "$mrays" "$mib" "$ratio"
 }
 
+# The POV-Ray twins are kept in bench/pov/ (torus: one per torus form); they must be what the
+# converter makes of the scene today, so that both renderers draw the same picture.
+pov_twin() {  # name variant
+  local twin=bench/pov/$1.pov
+  [ "$1" = torus ] && twin=bench/pov/torus-$2.pov
+  python3 bench/toml_to_pov.py "scenes/$1.toml" --torus-as "$2" >"$out/$(basename "$twin")"
+  if ! cmp -s "$twin" "$out/$(basename "$twin")"; then
+    echo "$twin is out of date with scenes/$1.toml: python3 bench/toml_to_pov.py scenes/$1.toml --torus-as $2 > $twin" >&2
+    exit 1
+  fi
+  echo "$twin"
+}
+
 bench_scene() {  # scene width height cpu_width cpu_height [pov_variant]
   local name=$1 w=$2 h=$3 cw=$4 ch=$5 variant=${6:-parametric}
-  local toml=scenes/$name.toml pov=$out/$name.pov
-  python3 bench/toml_to_pov.py "$toml" --torus-as "$variant" >"$pov"
+  local toml=scenes/$name.toml pov
+  pov=$(pov_twin "$name" "$variant")
   build/lancer render "$toml" --width 64 --height 36 -q -o "$out/warm.png"  # warm-up: Mesa's shader cache
   povray +I"$pov" +O"$out/warm.png" +W64 +H36 -D +FN >/dev/null 2>&1 || true
   local gpu cpu pov
   gpu=$(measure run_lancer "$toml" "$w" "$h" gpu)
-  pov=$(measure run_pov "$pov" "$w" "$h")
+  pov=$(measure run_pov "$pov" "$w" "$h" "$name")
   local pov_wall; pov_wall=$(awk '{print $1}' <<<"$pov")
   row "$name" "${w}x$h" 9 "lancer gpu" "$gpu" "$pov_wall"
   if [ "$cw" = "$w" ]; then
