@@ -85,7 +85,9 @@ struct WatchCommand {
 
         double compile_ms = 0.0, render_ms = 0.0;
         std::string first;
-        if (shaders.empty()) {
+        if (!gpu) {
+            append(first, "cpu backend");
+        } else if (shaders.empty()) {
             append(first, "built-in shaders");
         } else if (compile(compile_ms)) {
             append(first, fmt::format("{}/ compiled in {:.0f} ms", shaders, compile_ms));

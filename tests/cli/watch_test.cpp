@@ -39,6 +39,9 @@ radius = 1
 material = "red"
 )";
 
+// The end of the line `lancer watch` prints once the first image is written (or the scene failed).
+const char* const kStarted = "; watching ";
+
 std::string scene_text(const std::string& sphere_x) {
     std::string s = kScene;
     s.replace(s.find("SPHERE_X"), 8, sphere_x);
@@ -79,15 +82,29 @@ protected:
         }
         EXPECT_EQ(child->log().find("validation"), std::string::npos) << child->log();
     }
-    // Runs `lancer watch ARGS -o out.png` in the directory and waits for its first line.
+    // Runs `lancer watch ARGS -o out.png` in the directory and waits until it has started.
     void start(std::vector<std::string> args) {
         args.insert(args.begin(), "watch");
         args.insert(args.end(), {"-o", "out.png"});
         child = std::make_unique<test::ChildProcess>(args, dir.string(), (dir / "log.txt").string());
-        ASSERT_TRUE(test::ChildProcess::wait_until([&] { return child->log().find("watch: ") != std::string::npos; }))
+        ASSERT_TRUE(test::ChildProcess::wait_until([&] { return child->log().find(kStarted) != std::string::npos; }))
             << child->log();
     }
     void copy_shaders() { fs::copy(test::source_path("shaders"), dir / "shaders", fs::copy_options::recursive); }
+    // Edits the copy's trace.comp: rays that miss everything see magenta, not the background.
+    void paint_the_background_magenta() {
+        fs::path trace = dir / "shaders/trace.comp";
+        std::string source = test::read_file(trace);
+        const std::string miss = "color += weight * frame.background.rgb;";
+        ASSERT_NE(source.find(miss), std::string::npos) << "the test edits this line of trace.comp";
+        source.replace(source.find(miss), miss.size(), "color += weight * vec3(1.0, 0.0, 1.0);");
+        test::write_file(trace, source);
+    }
+    static void expect_magenta_corner(const Rgb8Image& img) {
+        EXPECT_EQ(img.at(0, 0)[0], 255);
+        EXPECT_EQ(img.at(0, 0)[1], 0);
+        EXPECT_EQ(img.at(0, 0)[2], 255);
+    }
     bool wait_for_count(const std::string& what, int n) {
         return test::ChildProcess::wait_until([&] { return test::count_occurrences(child->log(), what) >= n; });
     }
@@ -127,18 +144,10 @@ protected:
 
 TEST_F(Watch, ShaderEditsRecompileAndErrorsKeepTheLastGoodImage) {
     // A changed background colour in the shader source reaches the PNG.
-    fs::path trace = dir / "shaders/trace.comp";
-    std::string source = test::read_file(trace);
-    const std::string miss = "color += weight * frame.background.rgb;";
-    ASSERT_NE(source.find(miss), std::string::npos) << "the test edits this line of trace.comp";
-    std::string magenta = source;
-    magenta.replace(magenta.find(miss), miss.size(), "color += weight * vec3(1.0, 0.0, 1.0);");
-    test::write_file(trace, magenta);
+    ASSERT_NO_FATAL_FAILURE(paint_the_background_magenta());
     ASSERT_TRUE(wait_for_count("reload: ", 1)) << child->log();
     Rgb8Image img = output();
-    EXPECT_EQ(img.at(0, 0)[0], 255);
-    EXPECT_EQ(img.at(0, 0)[1], 0);
-    EXPECT_EQ(img.at(0, 0)[2], 255);
+    expect_magenta_corner(img);
 
     // A syntax error in an included file names that file and line; image and process survive.
     fs::path shade = dir / "shaders/shade.glsl";
@@ -257,18 +266,10 @@ TEST_F(WatchTest, ABrokenFirstCompileIsReportedAndTheBuiltInShadersDraw) {
     EXPECT_EQ(output().bytes, render("scene.toml").bytes);
 
     // Fixed, with a magenta background: the watched sources draw from now on.
-    fs::path trace = dir / "shaders/trace.comp";
-    std::string source = test::read_file(trace);
-    const std::string miss = "color += weight * frame.background.rgb;";
-    ASSERT_NE(source.find(miss), std::string::npos) << "the test edits this line of trace.comp";
-    source.replace(source.find(miss), miss.size(), "color += weight * vec3(1.0, 0.0, 1.0);");
-    test::write_file(trace, source);
+    ASSERT_NO_FATAL_FAILURE(paint_the_background_magenta());
     test::write_file(shade, good_shade);
     ASSERT_TRUE(wait_for_count("changed: compiled in", 1)) << child->log();
-    Rgb8Image img = output();
-    EXPECT_EQ(img.at(0, 0)[0], 255);
-    EXPECT_EQ(img.at(0, 0)[1], 0);
-    EXPECT_EQ(img.at(0, 0)[2], 255);
+    expect_magenta_corner(output());
 }
 
 TEST_F(Watch, InterruptExitsCleanly) {
@@ -297,7 +298,7 @@ height = 1
 )");
     test::ChildProcess child({"watch", "anim.toml", "-o", "watched.png", "--frame", "3"}, dir.string(),
                              (dir / "log.txt").string());
-    ASSERT_TRUE(test::ChildProcess::wait_until([&] { return child.log().find("watch: ") != std::string::npos; }))
+    ASSERT_TRUE(test::ChildProcess::wait_until([&] { return child.log().find(kStarted) != std::string::npos; }))
         << child.log();
     child.interrupt();
     EXPECT_EQ(child.wait_exit(), 0) << child.log();

@@ -172,6 +172,17 @@ protected:
 
     Rgb8Image dump() const { return read_png((dir / "dump.png").string()); }
 
+    // Presses h and waits on the window's pixels until the help is over `picture`; `screen`
+    // is then the screenshot (also saved as help.png, to look at).
+    void show_help(const Rgb8Image& picture, Rgb8Image& screen) {
+        keys("h");
+        ASSERT_TRUE(test::ChildProcess::wait_until([&] {
+            screen = x->screenshot(window);
+            return screen.bytes != picture.bytes;
+        }, seconds(30)));
+        write_png((dir / "help.png").string(), screen);
+    }
+
     // `lancer render` of the test scene with `camera`.
     Rgb8Image render(const CameraSpec& camera, const std::string& name = "reference") {
         fs::path scene = dir / (name + ".toml"), png = dir / (name + ".png");
@@ -297,14 +308,9 @@ TEST_F(View, MouseDragOrbitsAndTheWheelDollies) {
 TEST_F(View, HShowsAndHidesTheHelp) {
     start();
     Rgb8Image picture = dump();
-    keys("h");
-    // Wait on the window's pixels: the help panel darkens its top-left corner.
     Rgb8Image screen;
-    ASSERT_TRUE(test::ChildProcess::wait_until([&] {
-        screen = x->screenshot(window);
-        return screen.bytes != picture.bytes;
-    }, seconds(30)));
-    write_png((dir / "help.png").string(), screen);
+    ASSERT_NO_FATAL_FAILURE(show_help(picture, screen));
+    // The panel is a veil over the window's top-left corner.
     const std::uint8_t* inside = screen.at(9, 9);
     const std::uint8_t* under = picture.at(9, 9);
     EXPECT_LT(inside[2], under[2]) << "the panel is a dark veil over the sky";
@@ -473,13 +479,8 @@ TEST_F(View, TheHelpFitsASmallWindow) {
     start({"--width", "160", "--height", "90"});
     Rgb8Image picture = dump();
     ASSERT_EQ(picture.width, 160);
-    keys("h");
     Rgb8Image screen;
-    ASSERT_TRUE(test::ChildProcess::wait_until([&] {
-        screen = x->screenshot(window);
-        return screen.bytes != picture.bytes;
-    }, seconds(30)));
-    write_png((dir / "help.png").string(), screen);
+    ASSERT_NO_FATAL_FAILURE(show_help(picture, screen));
     ASSERT_EQ(screen.width, 160);
     ASSERT_EQ(screen.height, 90);
     // The panel is where the screen differs from the picture: all of it, with its four edges,
