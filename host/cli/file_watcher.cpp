@@ -1,5 +1,6 @@
 #include "cli/file_watcher.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -23,6 +24,11 @@ bool ends_with_any(const std::string& name, const std::set<std::string>& suffixe
     return false;
 }
 
+// `path` is `root` or below it (compared by components: /a/shaders2 is not within /a/shaders).
+bool within(const fs::path& root, const fs::path& path) {
+    return std::mismatch(root.begin(), root.end(), path.begin(), path.end()).first == root.end();
+}
+
 }  // namespace
 
 FileWatcher::FileWatcher() {
@@ -41,6 +47,14 @@ void FileWatcher::interrupt() {
     [[maybe_unused]] ssize_t n = ::write(interrupt_fd_, &one, sizeof(one));
 }
 
+fs::path FileWatcher::identity(const fs::path& path) {
+    std::error_code ec;
+    fs::path absolute = fs::absolute(path, ec);
+    if (ec) return path.lexically_normal();
+    fs::path resolved = fs::weakly_canonical(absolute, ec);
+    return ec ? absolute.lexically_normal() : resolved;
+}
+
 void FileWatcher::add_dir(const fs::path& dir) {
     for (const auto& [wd, path] : dirs_)
         if (path == dir) return;
@@ -49,21 +63,40 @@ void FileWatcher::add_dir(const fs::path& dir) {
     dirs_[wd] = dir;
 }
 
+bool FileWatcher::in_tree(const fs::path& path) const {
+    for (const auto& [root, suffixes] : trees_)
+        if (within(root, path)) return true;
+    return false;
+}
+
 void FileWatcher::watch_tree(const fs::path& dir, const std::set<std::string>& suffixes) {
-    fs::path root = fs::absolute(dir).lexically_normal();
+    fs::path root = identity(dir);
+    std::lock_guard lock(mutex_);
     trees_[root] = suffixes;
     add_dir(root);
     for (const auto& entry : fs::recursive_directory_iterator(root))
         if (entry.is_directory()) add_dir(entry.path());
 }
 
-void FileWatcher::watch_file(const fs::path& file) {
-    fs::path path = fs::absolute(file).lexically_normal();
-    files_.insert(path);
-    add_dir(path.parent_path());
+void FileWatcher::watch_files(const std::set<fs::path>& files) {
+    std::set<fs::path> wanted, dirs;
+    for (const auto& f : files) {
+        fs::path id = identity(f);
+        dirs.insert(id.parent_path());
+        wanted.insert(std::move(id));
+    }
+    std::lock_guard lock(mutex_);
+    files_ = std::move(wanted);
+    for (auto it = dirs_.begin(); it != dirs_.end();) {
+        if (in_tree(it->second) || dirs.count(it->second)) {
+            ++it;
+        } else {
+            ::inotify_rm_watch(inotify_fd_, it->first);
+            it = dirs_.erase(it);
+        }
+    }
+    for (const auto& dir : dirs) add_dir(dir);
 }
-
-void FileWatcher::clear_files() { files_.clear(); }
 
 FileWatcher::Result FileWatcher::wait(std::chrono::milliseconds quiet) {
     Result result{Wake::Changed, {}};
@@ -82,17 +115,17 @@ FileWatcher::Result FileWatcher::wait(std::chrono::milliseconds quiet) {
         for (ssize_t offset = 0; n > 0 && offset < n;) {
             auto* event = reinterpret_cast<inotify_event*>(buffer + offset);
             offset += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+            std::lock_guard lock(mutex_);
             auto dir = dirs_.find(event->wd);
             if (dir == dirs_.end() || event->len == 0) continue;
             fs::path path = dir->second / event->name;
             if ((event->mask & IN_ISDIR) && (event->mask & (IN_CREATE | IN_MOVED_TO))) {
-                for (const auto& [root, suffixes] : trees_)
-                    if (path.string().rfind(root.string(), 0) == 0) add_dir(path);
+                if (in_tree(path)) add_dir(path);
                 continue;
             }
             bool interesting = files_.count(path) > 0;
             for (const auto& [root, suffixes] : trees_)
-                if (path.string().rfind(root.string() + "/", 0) == 0 && ends_with_any(path.filename().string(), suffixes))
+                if (path != root && within(root, path) && ends_with_any(path.filename().string(), suffixes))
                     interesting = true;
             if (interesting) result.changed.insert(path);
         }

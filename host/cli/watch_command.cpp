@@ -1,83 +1,57 @@
 // `lancer watch`: render, then re-render whenever the shaders or the scene change. The loop for
 // people who work on the renderer itself: a shader edit recompiles the tracer at run time (the
 // glslang library, the same sources and defines as the embedded SPIR-V) and rebuilds only the
-// pipeline; a scene edit only re-uploads the scene. Errors are printed and the last good
-// pipeline, scene and image are kept.
+// pipeline; an edit of the scene or of a file it references only reloads and re-uploads the
+// scene. Errors are printed and the last good pipeline and scene are kept.
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
 #include "cli/file_watcher.hpp"
+#include "cli/hot_reload.hpp"
 #include "cli/render_options.hpp"
 #include "gpu/context.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "gpu/shader_compiler.hpp"
-#include "scene/animation.hpp"
 
 namespace lancer {
 namespace {
 
-namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Everything a reload line reports: "scene.toml changed: compiled in 143 ms, rendered in 210 ms".
-std::string describe_changes(const std::set<fs::path>& changed) {
-    std::string names;
-    for (const auto& p : changed) names += (names.empty() ? "" : ", ") + p.filename().string();
-    return names + " changed";
-}
+// One reload line's parts, in order: "compiled in 143 ms", "scene reloaded", "rendered in ...".
+void append(std::string& line, const std::string& part) { line += (line.empty() ? "" : "; ") + part; }
 
 struct WatchCommand {
     RenderOptions options;  // options.shader_dir: the directory to watch
     std::optional<int> frame;  // of an animated scene
 
-    // The shader directory to watch: --shaders, else ./shaders when it exists (running from the
-    // repository), else none (only the scene is watched; the embedded shaders are used).
-    std::string resolve_shader_dir() const {
-        if (!options.shader_dir.empty()) {
-            if (!fs::is_directory(options.shader_dir))
-                throw UserError("--shaders: '" + options.shader_dir + "' is not a directory");
-            return options.shader_dir;
-        }
-        if (fs::exists("shaders/trace.comp")) return "shaders";
-        return "";
-    }
-
     int run() {
         std::string output = output_path(options);
         check_output_writable(output);
-        std::string shaders = resolve_shader_dir();
         FileWatcher watcher;  // also turns Ctrl-C into a clean exit
         RenderOptions without_shaders = options;
         without_shaders.shader_dir.clear();  // compiled below, where errors are kept, not fatal
         auto renderer = make_renderer(without_shaders);
         auto* gpu = dynamic_cast<GpuRenderer*>(renderer.get());
-        if (!shaders.empty() && !gpu) throw UserError("--shaders needs the gpu backend");
+        if (!gpu && !options.shader_dir.empty()) throw UserError("--shaders needs the gpu backend");
+        const std::string shaders = gpu ? resolve_shader_dir(options.shader_dir) : "";
 
         if (!shaders.empty()) watcher.watch_tree(shaders, {".comp", ".glsl", ".h"});
-        watcher.watch_file(options.scene);
+        SceneFiles scene_files(watcher, options.scene);
 
         std::optional<Scene> scene;
         auto load = [&]() -> bool {
             try {
-                Scene loaded = load_scene_with_overrides(options);
-                if (loaded.animation) {
-                    int n = loaded.animation->frames;
-                    int f = frame.value_or(0);
-                    if (f < 0 || f >= n)
-                        throw UserError(fmt::format("--frame {} is outside the animation's frames 0-{}", f, n - 1));
-                    loaded = scene_at(loaded, frame_time(*loaded.animation, f));
-                } else if (frame) {
-                    throw UserError("--frame: the scene has no [animation]");
-                }
+                Scene loaded = load_scene_at_frame(options, frame);
+                scene_files.watch(loaded);
                 scene = std::move(loaded);
                 return true;
             } catch (const UserError& e) {
@@ -85,6 +59,7 @@ struct WatchCommand {
                 return false;
             }
         };
+        // On failure the renderer keeps the shaders it had: the last good ones, or the built-in ones.
         auto compile = [&](double& ms) -> bool {
             auto start = Clock::now();
             try {
@@ -109,34 +84,62 @@ struct WatchCommand {
         };
 
         double compile_ms = 0.0, render_ms = 0.0;
-        bool compiled = shaders.empty() || compile(compile_ms);
-        bool loaded = load();
-        if (loaded && render(render_ms))
-            std::fprintf(stderr, "watch: %s -> %s (compiled in %.0f ms, rendered in %.0f ms); watching %s%s\n",
-                         options.scene.c_str(), output.c_str(), compile_ms, render_ms,
-                         shaders.empty() ? "" : (shaders + "/ and ").c_str(), options.scene.c_str());
-        (void)compiled;
+        std::string first;
+        if (!gpu) {
+            append(first, "cpu backend");
+        } else if (shaders.empty()) {
+            append(first, "built-in shaders");
+        } else if (compile(compile_ms)) {
+            append(first, fmt::format("{}/ compiled in {:.0f} ms", shaders, compile_ms));
+        } else {
+            std::fprintf(stderr, "watch: %s/ does not compile; using the built-in shaders until it does\n", shaders.c_str());
+            append(first, fmt::format("built-in shaders until {}/ compiles", shaders));
+        }
+        if (!load()) {
+            append(first, "no image until the scene loads");
+        } else {
+            if (!render(render_ms)) return finish(std::move(renderer));  // interrupted
+            append(first, fmt::format("rendered in {:.0f} ms -> {}", render_ms, output));
+        }
+        std::string referenced = scene_files.references() == 0 ? ""
+                                 : fmt::format(" and the {} file(s) it references", scene_files.references());
+        std::fprintf(stderr, "watch: %s (%s); watching %s%s%s\n", options.scene.c_str(), first.c_str(),
+                     shaders.empty() ? "" : (shaders + "/ and ").c_str(), options.scene.c_str(), referenced.c_str());
 
+        // A burst may change shaders and scene together: each is reloaded on its own, and
+        // whatever succeeded is rendered with whatever is good of the other (a scene edit shows
+        // even while the shaders are broken, with the last good ones), so the image is always
+        // the newest that works and a later fix of either starts from the other's latest state.
         for (;;) {
             FileWatcher::Result wake = watcher.wait(std::chrono::milliseconds(100));
             if (wake.wake == FileWatcher::Wake::Signal) break;
-            bool shader_changed = false, scene_changed = false;
-            for (const auto& p : wake.changed) (p.extension() == ".toml" ? scene_changed : shader_changed) = true;
-            std::string what = describe_changes(wake.changed);
-            compile_ms = 0.0;
-            if (shader_changed && !compile(compile_ms)) {
-                std::fprintf(stderr, "reload: %s: compile failed, keeping the last good shaders and image\n", what.c_str());
-                continue;
+            Changes changes = classify(wake.changed, scene_files);
+            std::string line;
+            bool renew = false;
+            if (changes.shaders) {
+                bool ok = compile(compile_ms);
+                append(line, ok ? fmt::format("compiled in {:.0f} ms", compile_ms) : "compile failed, keeping the last good shaders");
+                renew |= ok;
             }
-            if (scene_changed && !load()) {
-                std::fprintf(stderr, "reload: %s: scene error, keeping the last good scene and image\n", what.c_str());
-                continue;
+            if (changes.scene) {
+                bool ok = load();
+                append(line, ok ? "scene reloaded" : "scene error, keeping the last good scene");
+                renew |= ok;
             }
-            if (!scene) continue;  // no good scene yet
-            if (!render(render_ms)) break;  // interrupted
-            std::fprintf(stderr, "reload: %s: compiled in %.0f ms, rendered in %.0f ms -> %s\n", what.c_str(), compile_ms,
-                         render_ms, output.c_str());
+            if (!scene) {
+                append(line, "no image until the scene loads");
+            } else if (!renew) {
+                append(line, "image unchanged");
+            } else {
+                if (!render(render_ms)) break;  // interrupted
+                append(line, fmt::format("rendered in {:.0f} ms -> {}", render_ms, output));
+            }
+            std::fprintf(stderr, "reload: %s changed: %s\n", changes.names.c_str(), line.c_str());
         }
+        return finish(std::move(renderer));
+    }
+
+    static int finish(std::unique_ptr<Renderer> renderer) {
         renderer.reset();  // every Vulkan object released before the validation count
         if (std::uint32_t n = gpu::validation_message_count()) {
             std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);

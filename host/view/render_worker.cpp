@@ -147,9 +147,13 @@ void RenderWorker::run() {
         try {
             if (reload_) {
                 std::string dir = *std::exchange(reload_, std::nullopt);
-                refined_ = 0;  // the view is drawn again with the new code
+                std::uint64_t refined = std::exchange(refined_, 0);  // the view is drawn again with the new code
                 lock.unlock();
-                run_reload(dir);
+                if (!run_reload(dir)) {
+                    // Nothing new to draw, unless a new view (a reloaded scene) came meanwhile.
+                    lock.lock();
+                    refined_ = refined;
+                }
             } else if (recording_ && !recording_active_) {
                 recording_active_ = true;
                 RecordingJob job = *recording_;
@@ -268,15 +272,15 @@ void RenderWorker::run_save(const SaveJob& job) {
                  r.samples * r.samples, camera_toml(job.scene.camera).c_str());
 }
 
-void RenderWorker::run_reload(const std::string& shader_dir) {
+bool RenderWorker::run_reload(const std::string& shader_dir) {
     auto start = Clock::now();
     try {
         renderer_->use_shaders(gpu::directory_tree(shader_dir), shader_dir);
         std::fprintf(stderr, "reload: shaders compiled in %.0f ms\n", ms_since(start));
+        return true;
     } catch (const gpu::ShaderCompileError& e) {
-        std::fprintf(stderr, "%s\nreload: compile failed, keeping the last good shaders and picture\n", e.what());
-        std::lock_guard lock(mutex_);
-        refined_ = generation_;  // nothing new to draw
+        std::fprintf(stderr, "%s\nreload: compile failed, keeping the last good shaders\n", e.what());
+        return false;
     }
 }
 

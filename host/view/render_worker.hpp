@@ -67,7 +67,7 @@ private:
     void refine(const Scene& scene, std::uint64_t generation, bool moving);
     void run_save(const SaveJob& job);
     void run_recording(const RecordingJob& job);
-    void run_reload(const std::string& shader_dir);
+    bool run_reload(const std::string& shader_dir);  // false: did not compile
     void publish(ShownFrame frame);
     // For the renderer's progress callback: true while nothing newer has been asked for.
     bool still_wanted(std::uint64_t generation) const;

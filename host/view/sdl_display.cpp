@@ -7,8 +7,7 @@
 #include <SDL.h>
 
 #include "core/error.hpp"
-#include "view/bitmap_font.hpp"
-#include "view/key_bindings.hpp"
+#include "view/help_panel.hpp"
 
 namespace lancer::view {
 namespace {
@@ -71,7 +70,6 @@ SdlDisplay::SdlDisplay(const std::string& title, int width, int height) : width_
         throw UserError(message);
     }
     SDL_RenderSetLogicalSize(renderer_, width, height);
-    make_help_texture();
 }
 
 SdlDisplay::~SdlDisplay() {
@@ -104,28 +102,31 @@ void SdlDisplay::show(const Rgb8Image& image) {
     upload_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void SdlDisplay::make_help_texture() {
-    const auto& rows = key_help();
-    std::size_t key_chars = 0, line_chars = 0;
-    for (const auto& r : rows) key_chars = std::max(key_chars, r.keys.size());
-    for (const auto& r : rows) line_chars = std::max(line_chars, key_chars + 2 + r.action.size());
-    // Twice the font's size where it fits, else its own size (small windows).
-    int scale = int(line_chars) * kGlyphAdvance * 2 + 16 <= width_ ? 2 : 1;
-    int margin = 4 * scale;
-    help_w_ = int(line_chars) * kGlyphAdvance * scale + 2 * margin;
-    help_h_ = int(rows.size()) * kLineAdvance * scale + 2 * margin;
-    Canvas canvas(help_w_, help_h_);
-    canvas.fill(0x000000c0u);  // translucent black
-    int y = margin;
-    for (const auto& r : rows) {
-        draw_text(canvas, margin, y, r.keys, scale, 0xffd070ffu);
-        draw_text(canvas, margin + int(key_chars + 2) * kGlyphAdvance * scale, y, r.action, scale, 0xffffffffu);
-        y += kLineAdvance * scale;
+void SdlDisplay::draw_help() {
+    int out_w = 0, out_h = 0;
+    SDL_GetRendererOutputSize(renderer_, &out_w, &out_h);
+    if (help_for_w_ != out_w || help_for_h_ != out_h) {
+        if (help_) SDL_DestroyTexture(help_);
+        help_ = nullptr;
+        help_for_w_ = out_w;
+        help_for_h_ = out_h;
+        HelpPanel panel = help_panel(out_w, out_h);
+        help_x_ = panel.x;
+        help_y_ = panel.y;
+        help_w_ = panel.canvas.width;
+        help_h_ = panel.canvas.height;
+        if (help_w_ == 0) return;  // not even the note fits
+        help_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_STATIC, help_w_, help_h_);
+        if (!help_) throw std::runtime_error(sdl_error("SDL_CreateTexture"));
+        SDL_UpdateTexture(help_, nullptr, panel.canvas.rgba.data(), help_w_ * 4);
+        SDL_SetTextureBlendMode(help_, SDL_BLENDMODE_BLEND);
     }
-    help_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_ABGR8888, SDL_TEXTUREACCESS_STATIC, help_w_, help_h_);
-    if (!help_) throw std::runtime_error(sdl_error("SDL_CreateTexture"));
-    SDL_UpdateTexture(help_, nullptr, canvas.rgba.data(), help_w_ * 4);
-    SDL_SetTextureBlendMode(help_, SDL_BLENDMODE_BLEND);
+    if (!help_) return;
+    // In window pixels, not the picture's: readable however the picture is scaled.
+    SDL_RenderSetLogicalSize(renderer_, 0, 0);
+    SDL_Rect where{help_x_, help_y_, help_w_, help_h_};
+    SDL_RenderCopy(renderer_, help_, nullptr, &where);
+    SDL_RenderSetLogicalSize(renderer_, width_, height_);
 }
 
 void SdlDisplay::draw() {
@@ -140,11 +141,7 @@ void SdlDisplay::draw() {
         SDL_SetTextureScaleMode(picture_, one_to_one ? SDL_ScaleModeNearest : SDL_ScaleModeLinear);
         SDL_RenderCopy(renderer_, picture_, nullptr, nullptr);
     }
-    if (help_visible_) {
-        SDL_Rect where{8, 8, std::min(help_w_, width_ - 8), std::min(help_h_, height_ - 8)};
-        SDL_Rect part{0, 0, where.w, where.h};
-        SDL_RenderCopy(renderer_, help_, &part, &where);
-    }
+    if (help_visible_) draw_help();
 }
 
 Rgb8Image SdlDisplay::read_pixels() {

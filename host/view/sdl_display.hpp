@@ -1,6 +1,7 @@
 #pragma once
 // The viewer's window: an SDL2 window whose renderer scales the latest picture (uploaded to a
-// streaming texture) to the window, with the help panel drawn over it. The image keeps the
+// streaming texture) to the window, with the help panel (view/help_panel.hpp) drawn over it in
+// the window's own pixels. The image keeps the
 // scene's size and aspect ratio; a resized window scales it, with black bars if needed.
 #include <cstdint>
 #include <string>
@@ -38,7 +39,7 @@ public:
     double last_upload_ms() const { return upload_ms_; }
 
 private:
-    void make_help_texture();
+    void draw_help();
 
     SDL_Window* window_ = nullptr;
     SDL_Renderer* renderer_ = nullptr;
@@ -46,7 +47,8 @@ private:
     SDL_Texture* help_ = nullptr;
     int width_, height_;            // the scene's image size: the renderer's logical size
     int picture_w_ = 0, picture_h_ = 0;
-    int help_w_ = 0, help_h_ = 0;
+    int help_for_w_ = 0, help_for_h_ = 0;  // the window size help_ was made for
+    int help_x_ = 0, help_y_ = 0, help_w_ = 0, help_h_ = 0;  // where it goes, in window pixels
     bool help_visible_ = false;
     double upload_ms_ = 0.0;
 };

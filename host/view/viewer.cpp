@@ -12,10 +12,10 @@
 
 #include "cli/file_watcher.hpp"
 #include "cli/frame_pattern.hpp"
+#include "cli/hot_reload.hpp"
 #include "cli/video.hpp"
 #include "gpu/context.hpp"
 #include "gpu/gpu_renderer.hpp"
-#include "scene/animation.hpp"
 #include "view/camera_controller.hpp"
 #include "view/frame_stats.hpp"
 #include "view/recordings.hpp"
@@ -29,30 +29,6 @@ namespace {
 namespace fs = std::filesystem;
 
 void print_error(const std::exception& e) { std::fprintf(stderr, "%s\n", format_error(e).c_str()); }
-
-// --shaders, else ./shaders when it exists (running from the repository), else none: the
-// embedded shaders are used and only the scene is watched. As `lancer watch` does.
-std::string resolve_shader_dir(const std::string& given) {
-    if (!given.empty()) {
-        if (!fs::is_directory(given)) throw UserError("--shaders: '" + given + "' is not a directory");
-        return given;
-    }
-    return fs::exists("shaders/trace.comp") ? "shaders" : "";
-}
-
-// The static scene to view: the file, with the command line's overrides, at --frame (default 0)
-// when it is animated.
-Scene load_view_scene(const ViewerOptions& o) {
-    Scene loaded = load_scene_with_overrides(o.render);
-    if (loaded.animation) {
-        int n = loaded.animation->frames;
-        int f = o.frame.value_or(0);
-        if (f < 0 || f >= n) throw UserError(fmt::format("--frame {} is outside the animation's frames 0-{}", f, n - 1));
-        return scene_at(loaded, frame_time(*loaded.animation, f));
-    }
-    if (o.frame) throw UserError("--frame: the scene has no [animation]");
-    return loaded;
-}
 
 std::optional<CameraMove> camera_move_for(SDL_Keycode key) {
     switch (key) {
@@ -114,7 +90,7 @@ public:
     explicit Viewer(const ViewerOptions& options)
         : options_(options),
           shader_dir_(resolve_shader_dir(options.render.shader_dir)),
-          scene_(load_view_scene(options)),
+          scene_(load_scene_at_frame(options.render, options.frame)),
           controller_(scene_.camera),
           scene_name_(fs::path(options.render.scene).filename().string()),
           stem_(fs::path(options.render.scene).stem().string()) {
@@ -137,7 +113,8 @@ public:
             }
             watcher.watch_tree(shader_dir_, {".comp", ".glsl", ".h"});
         }
-        watcher.watch_file(options_.render.scene);
+        scene_files_.emplace(watcher, options_.render.scene);
+        scene_files_->watch(scene_);
         std::string device = renderer->description();
 
         SdlDisplay display("lancer view: " + scene_name_, scene_.render.width, scene_.render.height);
@@ -286,28 +263,27 @@ private:
         }
     }
 
+    // Shaders and scene are reloaded independently: a scene edit in the same burst as a broken
+    // shader still shows, drawn with the last good shaders.
     void reload(const std::set<fs::path>& changed) {
-        bool shaders = false, scene = false;
-        std::string names;
-        for (const auto& p : changed) {
-            (p.extension() == ".toml" ? scene : shaders) = true;
-            names += (names.empty() ? "" : ", ") + p.filename().string();
-        }
-        if (shaders) {
-            say("reload: " + names + " changed: compiling");
+        Changes changes = classify(changed, *scene_files_);
+        if (changes.shaders && !shader_dir_.empty()) {
+            say("reload: " + changes.names + " changed: compiling");
             worker_->reload_shaders(shader_dir_);
         }
-        if (!scene) return;
+        if (!changes.scene) return;
         try {
-            Scene loaded = load_view_scene(options_);
+            Scene loaded = load_scene_at_frame(options_.render, options_.frame);
+            scene_files_->watch(loaded);
             scene_ = std::move(loaded);
             controller_.set_home(scene_.camera);
             display_->set_image_size(scene_.render.width, scene_.render.height);
             generation_ = worker_->show(view_scene(), false);
-            say("reload: " + names + " changed: scene reloaded");
+            say("reload: " + changes.names + " changed: scene reloaded");
         } catch (const UserError& e) {
             print_error(e);
-            std::fprintf(stderr, "reload: %s: scene error, keeping the last good scene and picture\n", names.c_str());
+            std::fprintf(stderr, "reload: %s changed: scene error, keeping the last good scene and picture\n",
+                         changes.names.c_str());
         }
     }
 
@@ -354,6 +330,7 @@ private:
     ViewerOptions options_;
     std::string shader_dir_;
     Scene scene_;  // static, as loaded: the camera comes from controller_
+    std::optional<SceneFiles> scene_files_;  // from run(): the files watched as the scene's
     CameraController controller_;
     std::string scene_name_, stem_;
     SdlDisplay* display_ = nullptr;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 
 #include <sys/stat.h>
 
@@ -38,6 +39,9 @@ radius = 1
 material = "red"
 )";
 
+// The end of the line `lancer watch` prints once the first image is written (or the scene failed).
+const char* const kStarted = "; watching ";
+
 std::string scene_text(const std::string& sphere_x) {
     std::string s = kScene;
     s.replace(s.find("SPHERE_X"), 8, sphere_x);
@@ -49,50 +53,101 @@ ino_t inode(const fs::path& p) {
     return ::stat(p.c_str(), &st) == 0 ? st.st_ino : 0;
 }
 
-class Watch : public testing::Test {
+// One flat bicubic patch in the plane z = 0, a `size` square from (x, y): a .bpt file.
+std::string square_patch(double x, double y, double size) {
+    std::string s = "1\n3 3\n";
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) s += std::to_string(x + size * i / 3.0) + " " + std::to_string(y + size * j / 3.0) + " 0\n";
+    return s;
+}
+
+std::string patch_scene(const std::string& patch_file) {
+    return scene_text("-20") + "[[object]]\ntype = \"bezier\"\nfile = \"" + patch_file + "\"\nmaterial = \"red\"\n";
+}
+
+// A watcher in a directory of its own, started by each test as it needs.
+class WatchTest : public testing::Test {
 protected:
     void SetUp() override {
-        dir = fs::path(test::output_dir()) / ("watch-" + std::to_string(::getpid()));
+        std::string name = testing::UnitTest::GetInstance()->current_test_info()->name();
+        dir = fs::path(test::output_dir()) / ("watch-" + name + "-" + std::to_string(::getpid()));
         fs::remove_all(dir);
         fs::create_directories(dir);
-        fs::copy(test::source_path("shaders"), dir / "shaders", fs::copy_options::recursive);
-        test::write_file(dir / "scene.toml", scene_text("0"));
-        child = std::make_unique<test::ChildProcess>(
-            std::vector<std::string>{"watch", "scene.toml", "-o", "out.png", "--shaders", "shaders"}, dir.string(),
-            (dir / "log.txt").string());
-        ASSERT_TRUE(test::ChildProcess::wait_until([&] { return child->log().find("watch: ") != std::string::npos; }))
-            << child->log();
     }
     void TearDown() override {
+        if (!child) return;
         if (child->running()) {
             child->interrupt();
             EXPECT_EQ(child->wait_exit(), 0) << child->log();
         }
         EXPECT_EQ(child->log().find("validation"), std::string::npos) << child->log();
     }
+    // Runs `lancer watch ARGS -o out.png` in the directory and waits until it has started.
+    void start(std::vector<std::string> args) {
+        args.insert(args.begin(), "watch");
+        args.insert(args.end(), {"-o", "out.png"});
+        child = std::make_unique<test::ChildProcess>(args, dir.string(), (dir / "log.txt").string());
+        ASSERT_TRUE(test::ChildProcess::wait_until([&] { return child->log().find(kStarted) != std::string::npos; }))
+            << child->log();
+    }
+    void copy_shaders() { fs::copy(test::source_path("shaders"), dir / "shaders", fs::copy_options::recursive); }
+    // Edits the copy's trace.comp: rays that miss everything see magenta, not the background.
+    void paint_the_background_magenta() {
+        fs::path trace = dir / "shaders/trace.comp";
+        std::string source = test::read_file(trace);
+        const std::string miss = "color += weight * frame.background.rgb;";
+        ASSERT_NE(source.find(miss), std::string::npos) << "the test edits this line of trace.comp";
+        source.replace(source.find(miss), miss.size(), "color += weight * vec3(1.0, 0.0, 1.0);");
+        test::write_file(trace, source);
+    }
+    static void expect_magenta_corner(const Rgb8Image& img) {
+        EXPECT_EQ(img.at(0, 0)[0], 255);
+        EXPECT_EQ(img.at(0, 0)[1], 0);
+        EXPECT_EQ(img.at(0, 0)[2], 255);
+    }
     bool wait_for_count(const std::string& what, int n) {
         return test::ChildProcess::wait_until([&] { return test::count_occurrences(child->log(), what) >= n; });
     }
+    bool wait_for_output_unlike(const Rgb8Image& image) {
+        return test::ChildProcess::wait_until([&] { return output().bytes != image.bytes; });
+    }
     Rgb8Image output() { return read_png((dir / "out.png").string()); }
+    // `lancer render` of a scene of the directory (the built-in shaders).
+    Rgb8Image render(const std::string& scene) {
+        auto r = test::run_lancer("render " + (dir / scene).string() + " -q -o " + (dir / "rendered.png").string());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return read_png((dir / "rendered.png").string());
+    }
+    // The reload lines that name `file` among the changed files.
+    int reloads_naming(const std::string& file) {
+        std::istringstream lines(child->log());
+        int n = 0;
+        for (std::string line; std::getline(lines, line);)
+            if (line.rfind("reload: ", 0) == 0 && line.substr(0, line.find(" changed")).find(file) != std::string::npos) ++n;
+        return n;
+    }
 
     fs::path dir;
     std::unique_ptr<test::ChildProcess> child;
 };
 
+// The issue's set-up: a copy of shaders/ and a scene with a sphere.
+class Watch : public WatchTest {
+protected:
+    void SetUp() override {
+        WatchTest::SetUp();
+        copy_shaders();
+        test::write_file(dir / "scene.toml", scene_text("0"));
+        start({"scene.toml", "--shaders", "shaders"});
+    }
+};
+
 TEST_F(Watch, ShaderEditsRecompileAndErrorsKeepTheLastGoodImage) {
     // A changed background colour in the shader source reaches the PNG.
-    fs::path trace = dir / "shaders/trace.comp";
-    std::string source = test::read_file(trace);
-    const std::string miss = "color += weight * frame.background.rgb;";
-    ASSERT_NE(source.find(miss), std::string::npos) << "the test edits this line of trace.comp";
-    std::string magenta = source;
-    magenta.replace(magenta.find(miss), miss.size(), "color += weight * vec3(1.0, 0.0, 1.0);");
-    test::write_file(trace, magenta);
+    ASSERT_NO_FATAL_FAILURE(paint_the_background_magenta());
     ASSERT_TRUE(wait_for_count("reload: ", 1)) << child->log();
     Rgb8Image img = output();
-    EXPECT_EQ(img.at(0, 0)[0], 255);
-    EXPECT_EQ(img.at(0, 0)[1], 0);
-    EXPECT_EQ(img.at(0, 0)[2], 255);
+    expect_magenta_corner(img);
 
     // A syntax error in an included file names that file and line; image and process survive.
     fs::path shade = dir / "shaders/shade.glsl";
@@ -139,6 +194,84 @@ TEST_F(Watch, ABurstOfWritesIsOneReload) {
     EXPECT_EQ(test::count_occurrences(child->log(), "common.glsl changed"), 1) << child->log();
 }
 
+// A burst that breaks a shader and edits the scene: the scene is reloaded all the same, drawn
+// with the last good shaders; fixing the shader then draws the new scene, not the old one.
+TEST_F(Watch, ABrokenShaderInTheSameBurstAsASceneEditStillAppliesTheScene) {
+    Rgb8Image centred = output();
+    fs::path shade = dir / "shaders/shade.glsl";
+    std::string good_shade = test::read_file(shade);
+    test::write_file(shade, good_shade + "this is not glsl(\n");
+    test::write_file(dir / "scene.toml", scene_text("1.5"));
+    ASSERT_TRUE(wait_for_count("compile failed", 1)) << child->log();
+    ASSERT_TRUE(wait_for_output_unlike(centred)) << child->log();
+    EXPECT_EQ(output().bytes, render("scene.toml").bytes);
+
+    test::write_file(shade, good_shade);
+    ASSERT_TRUE(wait_for_count("changed: compiled in", 1)) << child->log();
+    EXPECT_EQ(output().bytes, render("scene.toml").bytes) << child->log();
+    EXPECT_TRUE(child->running());
+}
+
+// A file the scene references is part of the scene: editing it reloads the scene. Once the scene
+// no longer references it, its edits are ignored.
+TEST_F(WatchTest, ReferencedFilesAreWatchedForAsLongAsTheSceneReferencesThem) {
+    test::write_file(dir / "a.bpt", square_patch(-2, -1, 1.5));
+    test::write_file(dir / "b.bpt", square_patch(0.5, -1, 1.5));
+    test::write_file(dir / "scene.toml", patch_scene("a.bpt"));
+    start({"scene.toml"});
+    EXPECT_NE(child->log().find("and the 1 file(s) it references"), std::string::npos) << child->log();
+    Rgb8Image first = output();
+
+    test::write_file(dir / "a.bpt", square_patch(-1, 0, 1.5));
+    ASSERT_TRUE(wait_for_count("reload: a.bpt changed", 1)) << child->log();
+    EXPECT_NE(output().bytes, first.bytes);
+    EXPECT_EQ(output().bytes, render("scene.toml").bytes);
+
+    test::write_file(dir / "scene.toml", patch_scene("b.bpt"));
+    ASSERT_TRUE(wait_for_count("reload: scene.toml changed", 1)) << child->log();
+    test::write_file(dir / "a.bpt", square_patch(-2, -1, 1.5));
+    // b's edit is a sentinel: a reload for the earlier edit of a would come before it.
+    test::write_file(dir / "b.bpt", square_patch(0, 0, 1));
+    ASSERT_TRUE(wait_for_count("b.bpt", 1)) << child->log();
+    EXPECT_EQ(reloads_naming("a.bpt"), 1) << child->log();
+    EXPECT_EQ(output().bytes, render("scene.toml").bytes);
+}
+
+// A scene is whatever file the scene argument names (`render` accepts any name), not a .toml.
+TEST_F(WatchTest, ASceneFileNotNamedTomlReloadsOnEdit) {
+    test::write_file(dir / "sphere.scene", scene_text("0"));
+    start({"sphere.scene"});
+    Rgb8Image centred = output();
+    test::write_file(dir / "sphere.scene", scene_text("1.5"));
+    ASSERT_TRUE(wait_for_count("reload: sphere.scene changed", 1)) << child->log();
+    EXPECT_EQ(child->log().find("compile"), std::string::npos) << child->log();
+    EXPECT_NE(output().bytes, centred.bytes);
+    EXPECT_EQ(output().bytes, render("sphere.scene").bytes);
+}
+
+// Shader sources broken from the start: the compiler's messages, a clear word that the built-in
+// shaders draw until they compile, and the watch goes on.
+TEST_F(WatchTest, ABrokenFirstCompileIsReportedAndTheBuiltInShadersDraw) {
+    copy_shaders();
+    fs::path shade = dir / "shaders/shade.glsl";
+    std::string good_shade = test::read_file(shade);
+    int lines = static_cast<int>(std::count(good_shade.begin(), good_shade.end(), '\n'));
+    test::write_file(shade, good_shade + "this is not glsl(\n");
+    test::write_file(dir / "scene.toml", scene_text("0"));
+    start({"scene.toml", "--shaders", "shaders"});
+    std::string log = child->log();
+    EXPECT_NE(log.find("shaders/shade.glsl:" + std::to_string(lines + 1) + ": error:"), std::string::npos) << log;
+    EXPECT_NE(log.find("watch: shaders/ does not compile; using the built-in shaders until it does"), std::string::npos) << log;
+    EXPECT_EQ(log.find("compiled in"), std::string::npos) << log;
+    EXPECT_EQ(output().bytes, render("scene.toml").bytes);
+
+    // Fixed, with a magenta background: the watched sources draw from now on.
+    ASSERT_NO_FATAL_FAILURE(paint_the_background_magenta());
+    test::write_file(shade, good_shade);
+    ASSERT_TRUE(wait_for_count("changed: compiled in", 1)) << child->log();
+    expect_magenta_corner(output());
+}
+
 TEST_F(Watch, InterruptExitsCleanly) {
     child->interrupt();
     EXPECT_EQ(child->wait_exit(), 0) << child->log();
@@ -165,7 +298,7 @@ height = 1
 )");
     test::ChildProcess child({"watch", "anim.toml", "-o", "watched.png", "--frame", "3"}, dir.string(),
                              (dir / "log.txt").string());
-    ASSERT_TRUE(test::ChildProcess::wait_until([&] { return child.log().find("watch: ") != std::string::npos; }))
+    ASSERT_TRUE(test::ChildProcess::wait_until([&] { return child.log().find(kStarted) != std::string::npos; }))
         << child.log();
     child.interrupt();
     EXPECT_EQ(child.wait_exit(), 0) << child.log();

@@ -7,6 +7,7 @@
 
 #include "support/test_support.hpp"
 #include "view/bitmap_font.hpp"
+#include "view/help_panel.hpp"
 #include "view/key_bindings.hpp"
 #include "view/shown_frame.hpp"
 #include "view/status_text.hpp"
@@ -43,6 +44,58 @@ TEST(ViewHelp, TextIsDrawnInItsColourWithinItsBox) {
     EXPECT_EQ(ink, 5 + 5 + 7);  // H: two columns of 7, a bar of 3 between them
     EXPECT_EQ(text_width("HH", 2), (2 * kGlyphAdvance - 1) * 2);
     draw_text(canvas, 35, 8, "WWW", 3, 0xffffffffu);  // clipped, not out of bounds
+}
+
+// Counts the pixels of `panel` that are not the veil: its text.
+int ink(const HelpPanel& panel) {
+    int n = 0;
+    for (std::size_t i = 0; i < panel.canvas.rgba.size(); i += 4) n += panel.canvas.rgba[i + 3] == 255;
+    return n;
+}
+
+TEST(ViewHelp, TheKeyTableWhereItFitsLargerWhereThereIsRoom) {
+    HelpPanel big = help_panel(1280, 720), medium = help_panel(320, 180);
+    for (const HelpPanel* p : {&big, &medium}) {
+        EXPECT_FALSE(p->note);
+        ASSERT_EQ(p->lines.size(), key_help().size());
+        for (std::size_t k = 0; k < key_help().size(); ++k) {
+            EXPECT_EQ(p->lines[k].rfind(key_help()[k].keys, 0), 0u) << p->lines[k];
+            EXPECT_NE(p->lines[k].find(key_help()[k].action), std::string::npos) << p->lines[k];
+        }
+        EXPECT_GT(ink(*p), 0);
+    }
+    EXPECT_EQ(big.scale, 2);
+    EXPECT_EQ(medium.scale, 1);
+}
+
+TEST(ViewHelp, ASmallWindowGetsANoteInstead) {
+    for (auto [w, h] : {std::pair{160, 90}, std::pair{96, 54}}) {
+        HelpPanel p = help_panel(w, h);
+        EXPECT_TRUE(p.note) << w << "x" << h;
+        std::string text;
+        for (const auto& line : p.lines) text += (text.empty() ? "" : " ") + line;
+        EXPECT_EQ(text, kHelpTooSmall) << w << "x" << h;
+        EXPECT_GT(ink(p), 0);
+    }
+    HelpPanel tiny = help_panel(20, 10);  // not even the note: nothing at all
+    EXPECT_EQ(tiny.canvas.width * tiny.canvas.height, 0);
+}
+
+// Whatever the window's size, the panel lies wholly inside it, never touching an edge, and
+// every line of its text fits the panel.
+TEST(ViewHelp, ThePanelIsAlwaysWhollyInsideTheWindow) {
+    for (int w = 1; w <= 700; w += 9)
+        for (int h = 1; h <= 400; h += 11) {
+            HelpPanel p = help_panel(w, h);
+            if (p.canvas.width == 0) continue;
+            ASSERT_GT(p.x, 0);
+            ASSERT_GT(p.y, 0);
+            ASSERT_LT(p.x + p.canvas.width, w) << w << "x" << h;
+            ASSERT_LT(p.y + p.canvas.height, h) << w << "x" << h;
+            for (const auto& line : p.lines) ASSERT_LT(text_width(line, p.scale), p.canvas.width) << line;
+            ASSERT_LT(int(p.lines.size()) * kLineAdvance * p.scale - (kLineAdvance - kGlyphHeight) * p.scale,
+                      p.canvas.height);
+        }
 }
 
 TEST(ViewHelp, TheReadmeListsEveryKey) {

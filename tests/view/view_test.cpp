@@ -2,6 +2,7 @@
 // user, observed through what it writes (--dump-frame: the window's pixels after each finished
 // refinement; its log lines; the files p, f and l write) and through screenshots, with bounded
 // waits, never fixed sleeps. Every run is under the Vulkan validation layer.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -142,8 +143,8 @@ protected:
     }
 
     // Starts the viewer and waits for its first finished picture and its window.
-    void start(std::vector<std::string> extra = {}) {
-        std::vector<std::string> args = {"view", "scene.toml", "--dump-frame", "dump.png"};
+    void start(std::vector<std::string> extra = {}, const std::string& scene = "scene.toml") {
+        std::vector<std::string> args = {"view", scene, "--dump-frame", "dump.png"};
         args.insert(args.end(), extra.begin(), extra.end());
         child = std::make_unique<test::ChildProcess>(args, dir.string(), (dir / "log.txt").string());
         ASSERT_TRUE(wait_for_count("view: refined", 1)) << log();
@@ -153,6 +154,7 @@ protected:
         ASSERT_EQ(xdotool("windowfocus --sync " + window + " mousemove --sync --window " + window + " 3 3"), 0);
     }
 
+    void copy_shaders() { fs::copy(test::source_path("shaders"), dir / "shaders", fs::copy_options::recursive); }
     int xdotool(const std::string& args) { return x->run("timeout 30 xdotool " + args); }
     void keys(const std::string& names) { ASSERT_EQ(xdotool("key --delay 20 " + names), 0); }
 
@@ -169,6 +171,17 @@ protected:
     }
 
     Rgb8Image dump() const { return read_png((dir / "dump.png").string()); }
+
+    // Presses h and waits on the window's pixels until the help is over `picture`; `screen`
+    // is then the screenshot (also saved as help.png, to look at).
+    void show_help(const Rgb8Image& picture, Rgb8Image& screen) {
+        keys("h");
+        ASSERT_TRUE(test::ChildProcess::wait_until([&] {
+            screen = x->screenshot(window);
+            return screen.bytes != picture.bytes;
+        }, seconds(30)));
+        write_png((dir / "help.png").string(), screen);
+    }
 
     // `lancer render` of the test scene with `camera`.
     Rgb8Image render(const CameraSpec& camera, const std::string& name = "reference") {
@@ -295,14 +308,9 @@ TEST_F(View, MouseDragOrbitsAndTheWheelDollies) {
 TEST_F(View, HShowsAndHidesTheHelp) {
     start();
     Rgb8Image picture = dump();
-    keys("h");
-    // Wait on the window's pixels: the help panel darkens its top-left corner.
     Rgb8Image screen;
-    ASSERT_TRUE(test::ChildProcess::wait_until([&] {
-        screen = x->screenshot(window);
-        return screen.bytes != picture.bytes;
-    }, seconds(30)));
-    write_png((dir / "help.png").string(), screen);
+    ASSERT_NO_FATAL_FAILURE(show_help(picture, screen));
+    // The panel is a veil over the window's top-left corner.
     const std::uint8_t* inside = screen.at(9, 9);
     const std::uint8_t* under = picture.at(9, 9);
     EXPECT_LT(inside[2], under[2]) << "the panel is a dark veil over the sky";
@@ -381,7 +389,7 @@ TEST_F(View, SceneEditsReloadAndBrokenScenesKeepTheLastGoodPicture) {
 }
 
 TEST_F(View, ShaderEditsReloadAndCompileErrorsKeepTheLastGoodPicture) {
-    fs::copy(test::source_path("shaders"), dir / "shaders", fs::copy_options::recursive);
+    copy_shaders();
     start({"--shaders", "shaders"});
     fs::path trace = dir / "shaders/trace.comp";
     std::string source = test::read_file(trace);
@@ -408,6 +416,86 @@ TEST_F(View, ShaderEditsReloadAndCompileErrorsKeepTheLastGoodPicture) {
     keys("Right");  // still magenta: the last good shaders
     ASSERT_TRUE(wait_for_count("view: refined", refined + 1)) << log();
     EXPECT_EQ(dump().at(0, 0)[1], 0);
+}
+
+// One flat bicubic patch standing on the floor, facing the camera, `size` wide from x: a .bpt file.
+std::string standing_patch(double x, double size) {
+    std::string s = "1\n3 3\n";
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            s += std::to_string(x + size * i / 3.0) + " " + std::to_string(size * j / 3.0) + " -2\n";
+    return s;
+}
+
+// The scene is its file, whatever its name, and the files it references: editing either
+// reloads it (here with a shader directory, so that nothing is taken for a shader).
+TEST_F(View, EditsOfTheSceneAndOfTheFilesItReferencesReloadIt) {
+    copy_shaders();
+    const std::string patch = "[[object]]\ntype = \"bezier\"\nfile = \"panel.bpt\"\nmaterial = \"red\"\n";
+    test::write_file(dir / "panel.bpt", standing_patch(-3, 1.5));
+    test::write_file(dir / "panel.scene", scene_text(file_camera()) + patch);
+    start({"--shaders", "shaders"}, "panel.scene");
+    Rgb8Image before = dump();
+    auto rendered = [&] {
+        auto r = test::run_lancer("render " + (dir / "panel.scene").string() + " -q -o " + (dir / "panel.png").string());
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return read_png((dir / "panel.png").string());
+    };
+
+    int refined = test::count_occurrences(log(), "view: refined");
+    test::write_file(dir / "panel.bpt", standing_patch(0.5, 2));
+    ASSERT_TRUE(wait_for_count("reload: panel.bpt changed: scene reloaded", 1)) << log();
+    ASSERT_TRUE(wait_for_count("view: refined", refined + 1)) << log();
+    EXPECT_NE(dump().bytes, before.bytes);
+    EXPECT_EQ(dump().bytes, rendered().bytes);
+
+    CameraSpec moved = file_camera();
+    moved.eye.x = 2.0;
+    test::write_file(dir / "panel.scene", scene_text(moved) + patch);
+    ASSERT_TRUE(wait_for_count("reload: panel.scene changed: scene reloaded", 1)) << log();
+    ASSERT_TRUE(wait_for_refined_eye(moved.eye)) << log();
+    EXPECT_EQ(dump().bytes, rendered().bytes);
+    EXPECT_EQ(log().find("compil"), std::string::npos) << log();
+}
+
+// A burst that breaks a shader and edits the scene: the new scene is shown all the same, drawn
+// with the last good shaders.
+TEST_F(View, ABrokenShaderInTheSameBurstAsASceneEditStillShowsTheScene) {
+    copy_shaders();
+    start({"--shaders", "shaders"});
+    fs::path shade = dir / "shaders/shade.glsl";
+    CameraSpec moved = file_camera();
+    moved.eye.x = 2.0;
+    test::write_file(shade, test::read_file(shade) + "this is not glsl(\n");
+    test::write_file(dir / "scene.toml", scene_text(moved));
+    ASSERT_TRUE(wait_for_count("compile failed", 1)) << log();
+    ASSERT_TRUE(wait_for_count("scene reloaded", 1)) << log();
+    ASSERT_TRUE(wait_for_refined_eye(moved.eye)) << log();
+    EXPECT_EQ(dump().bytes, render(moved).bytes);
+}
+
+// In a window too small for the key table, the help is a note that fits, not a table cut off.
+TEST_F(View, TheHelpFitsASmallWindow) {
+    start({"--width", "160", "--height", "90"});
+    Rgb8Image picture = dump();
+    ASSERT_EQ(picture.width, 160);
+    Rgb8Image screen;
+    ASSERT_NO_FATAL_FAILURE(show_help(picture, screen));
+    ASSERT_EQ(screen.width, 160);
+    ASSERT_EQ(screen.height, 90);
+    // The panel is where the screen differs from the picture: all of it, with its four edges,
+    // inside the window.
+    int min_x = screen.width, min_y = screen.height, max_x = -1, max_y = -1;
+    for (int y = 0; y < screen.height; ++y)
+        for (int x0 = 0; x0 < screen.width; ++x0)
+            if (!std::equal(screen.at(x0, y), screen.at(x0, y) + 3, picture.at(x0, y))) {
+                min_x = std::min(min_x, x0), max_x = std::max(max_x, x0);
+                min_y = std::min(min_y, y), max_y = std::max(max_y, y);
+            }
+    EXPECT_GT(min_x, 0);
+    EXPECT_GT(min_y, 0);
+    EXPECT_LT(max_x, screen.width - 1) << "the panel runs off the window's right edge";
+    EXPECT_LT(max_y, screen.height - 1) << "the panel runs off the window's bottom edge";
 }
 
 // Errors the viewer meets before it opens a window: one line, exit code 2.

@@ -1,0 +1,53 @@
+#pragma once
+// What `lancer watch` and `lancer view` share about reloading: which shader directory to compile
+// and watch, the scene at --frame, and which files make up the scene: its file and the files it
+// references (Scene::dependencies: patch files, textures, ...). An edit to any of them reloads
+// the scene; every other file the watcher reports is a shader.
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "cli/file_watcher.hpp"
+#include "cli/render_options.hpp"
+#include "scene/scene.hpp"
+
+namespace lancer {
+
+// --shaders (which must be a directory), else ./shaders when it holds the tracer (running from
+// the repository), else "": the built-in shaders are used and only the scene is watched.
+std::string resolve_shader_dir(const std::string& given);
+
+// The static scene to show: the file with the command line's overrides, at `frame` (default 0)
+// of its animation. --frame for a scene without [animation] is an error.
+Scene load_scene_at_frame(const RenderOptions& options, std::optional<int> frame);
+
+// Keeps `watcher` on exactly the files of the scene last loaded. Until a scene loads, that is
+// the scene file alone; a scene that fails to load changes nothing.
+class SceneFiles {
+public:
+    SceneFiles(FileWatcher& watcher, const std::string& scene_file);
+
+    // After each successful load: watch the scene file and `scene.dependencies`, and stop
+    // watching files it no longer references.
+    void watch(const Scene& scene);
+    // Whether a path the watcher reported is one of the scene's files.
+    bool contains(const std::filesystem::path& changed) const { return files_.count(changed) > 0; }
+    // How many files the scene references besides itself.
+    std::size_t references() const { return files_.size() - 1; }
+
+private:
+    FileWatcher& watcher_;
+    std::string scene_file_;
+    std::set<std::filesystem::path> files_;  // FileWatcher::identity() of each
+};
+
+// A burst of changed files, sorted into what has to be redone.
+struct Changes {
+    bool scene = false;    // the scene file or a file it references
+    bool shaders = false;  // anything else the watcher reports: files under the shader directory
+    std::string names;     // "scene.toml, teapot.bpt": the changed files' names, for messages
+};
+Changes classify(const std::set<std::filesystem::path>& changed, const SceneFiles& scene_files);
+
+}  // namespace lancer
