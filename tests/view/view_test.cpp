@@ -27,11 +27,6 @@ namespace {
 namespace fs = std::filesystem;
 using std::chrono::seconds;
 
-// The image tests' metric (tests/render/backends_agree_test.cpp).
-constexpr double kMinPsnr = 40.0;
-constexpr double kMaxFractionOver = 0.001;
-constexpr int kThreshold = 4;
-
 // A small scene with what can go wrong in a moved picture: silhouettes, shadows, a mirror and a
 // checkerboard. The camera comes first, as an inline table, so tests can put any camera there.
 const char* kSceneBody = R"(
@@ -193,10 +188,7 @@ protected:
     }
 
     void expect_like(const Rgb8Image& shown, const Rgb8Image& rendered, const std::string& name) {
-        ImageDiff d = compare_images(shown, rendered, kThreshold);
-        if (d.psnr_db < kMinPsnr || d.fraction_over > kMaxFractionOver)
-            ADD_FAILURE() << name << ": PSNR " << d.psnr_db << " dB, " << d.fraction_over * 100 << "% of pixels off by more than "
-                          << kThreshold << "; images in " << test::save_comparison("view-" + name, shown, rendered);
+        test::expect_same_picture("view-" + name, shown, rendered);
     }
 
     std::unique_ptr<test::XServer> x;
