@@ -1,16 +1,14 @@
-// Benchmark (not a test): the parametric-surface pieces on the classic surfaces. For each
-// surface: the GPU cells (count, time to build), the CPU reference's box tree (time to build),
-// and the CPU intersector's speed on random rays through the surface's neighbourhood (best of 3
-// runs, one thread), with the average and largest number of parameter boxes a ray examined.
+// Benchmark (not a test): the parametric-surface pieces on the classic surfaces, with Google
+// Benchmark. For each surface: building the GPU's cells (and how many), building the CPU
+// reference's box tree, and the CPU intersector on random rays through the surface's
+// neighbourhood (one thread), with the share of hits and the parameter boxes a ray examined.
 //
-//   build/bench/lancer_parametric_bench [rays=20000]
+//   build/bench/lancer_parametric_bench [--benchmark_filter=torus] [--benchmark_repetitions=3]
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <random>
 #include <vector>
 
+#include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
 
 #include "cpu/shapes/parametric_tree.hpp"
@@ -21,9 +19,6 @@
 namespace {
 
 using namespace lancer;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Rays from a sphere around the surface towards random points of its bounding box.
 std::vector<cpu::Ray> random_rays(const surface::ParametricSurface& s, int count) {
@@ -47,36 +42,51 @@ std::vector<cpu::Ray> random_rays(const surface::ParametricSurface& s, int count
     return rays;
 }
 
+void cells(benchmark::State& state, const test::SurfaceSpec& spec) {
+    surface::ParametricSurface s = test::make_surface(spec);
+    std::size_t count = 0;
+    for (auto _ : state) count = surface::subdivide_surface(s).size();
+    state.counters["cells"] = double(count);
+}
+
+void tree(benchmark::State& state, const test::SurfaceSpec& spec) {
+    const surface::ParametricSurface s = test::make_surface(spec);
+    for (auto _ : state) {
+        surface::ParametricSurface fresh = s;  // a copy starts without the tree
+        cpu::parametric_tree(fresh);
+    }
+}
+
+void intersect(benchmark::State& state, const test::SurfaceSpec& spec) {
+    const surface::ParametricSurface s = test::make_surface(spec);
+    const std::vector<cpu::Ray> rays = random_rays(s, 4096);
+    cpu::parametric_tree(s);  // built once, outside the timing
+    std::size_t next = 0;
+    long hits = 0, boxes = 0;
+    int most = 0;
+    for (auto _ : state) {
+        const cpu::Ray& r = rays[next++ % rays.size()];
+        hits += cpu::intersect(s, r, 1e-9, 1e30).has_value();
+        boxes += cpu::last_parametric_boxes();
+        most = std::max(most, cpu::last_parametric_boxes());
+    }
+    state.SetItemsProcessed(state.iterations());  // items/s = rays/s
+    state.counters["hits"] = benchmark::Counter(double(hits), benchmark::Counter::kAvgIterations);
+    state.counters["boxes/ray"] = benchmark::Counter(double(boxes), benchmark::Counter::kAvgIterations);
+    state.counters["max boxes"] = double(most);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    const int count = argc > 1 ? std::max(1, std::atoi(argv[1])) : 20000;
-    std::printf("%-8s %7s %9s %9s %12s %9s %6s %9s %9s\n", "surface", "cells", "cells ms", "tree ms", "rays/s",
-                "us/ray", "hits", "boxes/ray", "max boxes");
     for (const auto& spec : test::classic_surfaces()) {
-        surface::ParametricSurface s = test::make_surface(spec);
-        auto start = Clock::now();
-        std::size_t cells = surface::subdivide_surface(s).size();
-        double cells_ms = 1e3 * seconds_since(start);
-        start = Clock::now();
-        cpu::parametric_tree(s);
-        double tree_ms = 1e3 * seconds_since(start);
-
-        std::vector<cpu::Ray> rays = random_rays(s, count);
-        double best = 1e300;
-        long hits = 0, boxes = 0;
-        int most = 0;
-        for (int run = 0; run < 3; ++run) {
-            hits = boxes = most = 0;
-            start = Clock::now();
-            for (const cpu::Ray& r : rays) {
-                hits += cpu::intersect(s, r, 1e-9, 1e30).has_value();
-                boxes += cpu::last_parametric_boxes();
-                most = std::max(most, cpu::last_parametric_boxes());
-            }
-            best = std::min(best, seconds_since(start));
-        }
-        std::printf("%-8s %7zu %9.1f %9.1f %12.0f %9.2f %5.0f%% %9.1f %9d\n", spec.name.c_str(), cells, cells_ms, tree_ms,
-                    count / best, 1e6 * best / count, 100.0 * hits / count, double(boxes) / count, most);
+        benchmark::RegisterBenchmark(("cells/" + spec.name).c_str(), cells, spec)->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("cpu_tree/" + spec.name).c_str(), tree, spec)->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("cpu_intersect/" + spec.name).c_str(), intersect, spec)->Unit(benchmark::kMicrosecond);
     }
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
 }
