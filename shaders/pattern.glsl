@@ -1,0 +1,81 @@
+// Procedural patterns: a scalar function f of the position (noise, turbulence, marble, wood),
+// with its gradient, shown through a colour ramp or used as a bump. The rules are in
+// docs/scene-format.md ("Patterns"). Twin of host/cpu/pattern.cpp.
+#ifndef LANCER_PATTERN_GLSL
+#define LANCER_PATTERN_GLSL
+
+#include "noise.glsl"
+
+layout(std430, set = 0, binding = BINDING_PATTERNS) readonly buffer PatternBlock { PatternInfo patterns[]; };
+
+// Perlin's turbulence: the sum over octaves i of omega^i |noise(lambda^i q)|, as (gradient, value).
+vec4 pattern_turbulence(PatternInfo pat, vec3 q) {
+    vec4 sum = vec4(0.0);
+    float amplitude = 1.0, frequency = 1.0;
+    for (uint i = 0u; i < pat.octaves; ++i) {
+        vec4 n = perlin_noise(frequency * q);
+        float sign_n = n.w < 0.0 ? -1.0 : 1.0;
+        sum += vec4(amplitude * frequency * sign_n * n.xyz, amplitude * abs(n.w));
+        amplitude *= pat.params.y;
+        frequency *= pat.params.z;
+    }
+    return sum;
+}
+
+// f at pattern-space point q, with its gradient there: (gradient, value).
+vec4 pattern_value(PatternInfo pat, vec3 q) {
+    const float TWO_PI = 6.28318530717959;
+    if (pat.type == PATTERN_NOISE) return 0.5 * perlin_noise(q) + vec4(0.0, 0.0, 0.0, 0.5);
+    vec4 t = pattern_turbulence(pat, q);
+    if (pat.type == PATTERN_TURBULENCE) return t;
+    float turbulence = pat.params.x;
+    if (pat.type == PATTERN_MARBLE) {
+        // Bands across x, one period per unit, bent by turbulence.
+        float phase = TWO_PI * (q.x + turbulence * t.w);
+        vec3 dphase = TWO_PI * (vec3(1.0, 0.0, 0.0) + turbulence * t.xyz);
+        return vec4(0.5 * cos(phase) * dphase, 0.5 + 0.5 * sin(phase));
+    }
+    // Wood: rings around the z axis, one per unit of radius, as a triangle wave.
+    float radius = length(q.xy);
+    vec3 dradius = radius > 0.0 ? vec3(q.xy / radius, 0.0) : vec3(0.0);
+    float r = radius + turbulence * t.w;
+    vec3 dr = dradius + turbulence * t.xyz;
+    float fraction = fract(r);
+    return vec4((fraction < 0.5 ? 2.0 : -2.0) * dr, 1.0 - 2.0 * abs(fraction - 0.5));
+}
+
+vec3 pattern_space(PatternInfo pat, vec3 p) {
+    return vec3(dot(pat.row0.xyz, p) + pat.row0.w, dot(pat.row1.xyz, p) + pat.row1.w, dot(pat.row2.xyz, p) + pat.row2.w);
+}
+
+// The ramp's colour at t: the first colour below the first stop, the last above the last.
+vec3 ramp_color(PatternInfo pat, float t) {
+    vec3 color = pat.colors[0].rgb;
+    for (uint i = 1u; i < pat.color_count; ++i) {
+        vec4 a = pat.colors[i - 1u];
+        vec4 b = pat.colors[i];
+        if (t >= b.w) {
+            color = b.rgb;
+        } else {
+            if (t > a.w) color = mix(a.rgb, b.rgb, (t - a.w) / (b.w - a.w));
+            break;
+        }
+    }
+    return color;
+}
+
+vec3 pattern_color(uint index, vec3 p) {
+    PatternInfo pat = patterns[index];
+    return ramp_color(pat, pattern_value(pat, pattern_space(pat, p)).w);
+}
+
+// n (unit, facing the viewer) tilted by the gradient of the bump's pattern, taken in world space
+// and multiplied by the pattern's mean scale (so scaling a bump keeps its depth).
+vec3 bumped_normal(uint index, vec3 p, vec3 n) {
+    PatternInfo pat = patterns[index];
+    vec3 g = pattern_value(pat, pattern_space(pat, p)).xyz;
+    vec3 world = g.x * pat.row0.xyz + g.y * pat.row1.xyz + g.z * pat.row2.xyz;
+    return normalize(n - pat.params.w * (world - dot(world, n) * n));
+}
+
+#endif
