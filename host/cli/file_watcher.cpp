@@ -50,6 +50,7 @@ void FileWatcher::add_dir(const fs::path& dir) {
 }
 
 void FileWatcher::watch_tree(const fs::path& dir, const std::set<std::string>& suffixes) {
+    std::lock_guard lock(mutex_);
     fs::path root = fs::absolute(dir).lexically_normal();
     trees_[root] = suffixes;
     add_dir(root);
@@ -57,13 +58,32 @@ void FileWatcher::watch_tree(const fs::path& dir, const std::set<std::string>& s
         if (entry.is_directory()) add_dir(entry.path());
 }
 
-void FileWatcher::watch_file(const fs::path& file) {
+void FileWatcher::add_file(const fs::path& file) {
     fs::path path = fs::absolute(file).lexically_normal();
     files_.insert(path);
     add_dir(path.parent_path());
 }
 
-void FileWatcher::clear_files() { files_.clear(); }
+void FileWatcher::watch_file(const fs::path& file) {
+    std::lock_guard lock(mutex_);
+    add_file(file);
+}
+
+void FileWatcher::clear_files() {
+    std::lock_guard lock(mutex_);
+    files_.clear();
+}
+
+void FileWatcher::set_files(const std::vector<fs::path>& files) {
+    std::lock_guard lock(mutex_);
+    files_.clear();
+    for (const auto& f : files) add_file(f);
+}
+
+bool FileWatcher::is_watched_file(const fs::path& path) const {
+    std::lock_guard lock(mutex_);
+    return files_.count(fs::absolute(path).lexically_normal()) > 0;
+}
 
 FileWatcher::Result FileWatcher::wait(std::chrono::milliseconds quiet) {
     Result result{Wake::Changed, {}};
@@ -79,6 +99,7 @@ FileWatcher::Result FileWatcher::wait(std::chrono::milliseconds quiet) {
         if (fds[2].revents & POLLIN) return {Wake::Interrupted, {}};
         if (fds[1].revents & POLLIN) continue;  // handled by signal_pending() above
         ssize_t n = ::read(inotify_fd_, buffer, sizeof(buffer));
+        std::lock_guard lock(mutex_);
         for (ssize_t offset = 0; n > 0 && offset < n;) {
             auto* event = reinterpret_cast<inotify_event*>(buffer + offset);
             offset += static_cast<ssize_t>(sizeof(inotify_event) + event->len);

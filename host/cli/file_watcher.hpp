@@ -5,8 +5,10 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <mutex>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "cli/interrupt.hpp"
 
@@ -25,6 +27,11 @@ public:
     void watch_file(const std::filesystem::path& file);
     // Forget the single files (the set a scene references changes when the scene does).
     void clear_files();
+    // Watch exactly these single files from now on (a scene and the files it reads). Safe to
+    // call while another thread is in wait().
+    void set_files(const std::vector<std::filesystem::path>& files);
+    // True for a path watched as a single file, false for one found in a tree.
+    bool is_watched_file(const std::filesystem::path& path) const;
 
     enum class Wake { Changed, Signal, Interrupted };
     struct Result {
@@ -43,7 +50,8 @@ public:
     void interrupt();
 
 private:
-    void add_dir(const std::filesystem::path& dir);
+    void add_dir(const std::filesystem::path& dir);  // with mutex_ held
+    void add_file(const std::filesystem::path& file);  // with mutex_ held
 
     int inotify_fd_ = -1;
     Interrupts interrupts_;
@@ -51,6 +59,7 @@ private:
     std::map<int, std::filesystem::path> dirs_;  // watch descriptor -> directory
     std::map<std::filesystem::path, std::set<std::string>> trees_;  // root -> suffixes
     std::set<std::filesystem::path> files_;
+    mutable std::mutex mutex_;  // guards dirs_, trees_ and files_: wait() may run on another thread
 };
 
 }  // namespace lancer

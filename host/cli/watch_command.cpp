@@ -79,6 +79,10 @@ struct WatchCommand {
                     throw UserError("--frame: the scene has no [animation]");
                 }
                 scene = std::move(loaded);
+                // The scene's own files (patch files, textures) reload it too.
+                std::vector<fs::path> files{options.scene};
+                files.insert(files.end(), scene->dependencies.begin(), scene->dependencies.end());
+                watcher.set_files(files);
                 return true;
             } catch (const UserError& e) {
                 std::fprintf(stderr, "%s\n", format_error(e).c_str());
@@ -121,7 +125,7 @@ struct WatchCommand {
             FileWatcher::Result wake = watcher.wait(std::chrono::milliseconds(100));
             if (wake.wake == FileWatcher::Wake::Signal) break;
             bool shader_changed = false, scene_changed = false;
-            for (const auto& p : wake.changed) (p.extension() == ".toml" ? scene_changed : shader_changed) = true;
+            for (const auto& p : wake.changed) (watcher.is_watched_file(p) ? scene_changed : shader_changed) = true;
             std::string what = describe_changes(wake.changed);
             compile_ms = 0.0;
             if (shader_changed && !compile(compile_ms)) {

@@ -66,15 +66,16 @@ ImageTexture read_texture(TableReader& material, TextureLibrary& textures) {
     auto resolve = [&](const std::string& name) { return (std::filesystem::path(dir) / name).lexically_normal().string(); };
     if (auto name = node->value<std::string>()) {
         tex.path = resolve(*name);
-        tex.image = textures.load(material, "texture", tex.path);
+        tex.image = textures.load(material, "texture", *name, tex.path);
         return tex;
     }
     const toml::table* table = node->as_table();
     if (!table)
         throw SceneError(location_of(*node, file), "texture must be a file name or a table { file = \"...\", ... }");
     TableReader t(*table, file, "texture of " + material.what());
-    tex.path = resolve(t.required_string("file"));
-    tex.image = textures.load(t, "file", tex.path);
+    std::string name = t.required_string("file");
+    tex.path = resolve(name);
+    tex.image = textures.load(t, "file", name, tex.path);
     if (const toml::node* s = t.node("scale")) {
         tex.scale = read_pair(*s, file, "scale");
         if (!(tex.scale.x > 0.0 && tex.scale.y > 0.0))
@@ -177,9 +178,9 @@ std::vector<ColorStop> read_ramp(TableReader& t) {
 }  // namespace
 
 std::shared_ptr<const TextureImage> TextureLibrary::load(const TableReader& t, std::string_view key,
-                                                        const std::string& path) {
+                                                        const std::string& name, const std::string& path) {
     if (auto found = images_.find(path); found != images_.end()) return found->second;
-    auto fail = [&](const std::string& why) { t.fail(key, fmt::format("cannot read texture '{}': {}", path, why)); };
+    auto fail = [&](const std::string& why) { t.fail(key, fmt::format("cannot read texture '{}': {}", name, why)); };
     if (images_.size() >= static_cast<std::size_t>(limits::kMaxTextures))
         fail(fmt::format("too many textures (the limit is {} files)", limits::kMaxTextures));
     try {

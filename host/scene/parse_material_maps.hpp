@@ -19,9 +19,10 @@ public:
     // Files read are appended to `dependencies` (Scene::dependencies).
     explicit TextureLibrary(std::vector<std::string>& dependencies) : dependencies_(dependencies) {}
 
-    // The image at `path` (already resolved against the scene's directory). Errors are
-    // SceneErrors at the value of `key` in `t`.
-    std::shared_ptr<const TextureImage> load(const TableReader& t, std::string_view key, const std::string& path);
+    // The image at `path` (`name` as the scene writes it, resolved against the scene's
+    // directory). Errors are SceneErrors at the value of `key` in `t`, naming `name`.
+    std::shared_ptr<const TextureImage> load(const TableReader& t, std::string_view key, const std::string& name,
+                                             const std::string& path);
 
 private:
     std::vector<std::string>& dependencies_;

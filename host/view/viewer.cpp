@@ -137,7 +137,8 @@ public:
             }
             watcher.watch_tree(shader_dir_, {".comp", ".glsl", ".h"});
         }
-        watcher.watch_file(options_.render.scene);
+        watcher_ = &watcher;
+        watch_scene_files();
         std::string device = renderer->description();
 
         SdlDisplay display("lancer view: " + scene_name_, scene_.render.width, scene_.render.height);
@@ -286,11 +287,18 @@ private:
         }
     }
 
+    // The scene file and the files it reads (patch files, textures): an edit of any reloads it.
+    void watch_scene_files() {
+        std::vector<fs::path> files{options_.render.scene};
+        files.insert(files.end(), scene_.dependencies.begin(), scene_.dependencies.end());
+        watcher_->set_files(files);
+    }
+
     void reload(const std::set<fs::path>& changed) {
         bool shaders = false, scene = false;
         std::string names;
         for (const auto& p : changed) {
-            (p.extension() == ".toml" ? scene : shaders) = true;
+            (watcher_->is_watched_file(p) ? scene : shaders) = true;
             names += (names.empty() ? "" : ", ") + p.filename().string();
         }
         if (shaders) {
@@ -301,6 +309,7 @@ private:
         try {
             Scene loaded = load_view_scene(options_);
             scene_ = std::move(loaded);
+            watch_scene_files();
             controller_.set_home(scene_.camera);
             display_->set_image_size(scene_.render.width, scene_.render.height);
             generation_ = worker_->show(view_scene(), false);
@@ -358,6 +367,7 @@ private:
     std::string scene_name_, stem_;
     SdlDisplay* display_ = nullptr;
     RenderWorker* worker_ = nullptr;
+    FileWatcher* watcher_ = nullptr;
     std::uint64_t generation_ = 0;        // the view asked for last
     std::uint64_t shown_generation_ = 0;  // the view of the picture on screen
     bool quit_ = false;
