@@ -12,10 +12,10 @@
 #include <glm/mat3x3.hpp>
 #include <gtest/gtest.h>
 
-#include "core/perlin_permutation.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "scene/camera.hpp"
 #include "scene/transform.hpp"
+#include "support/perlin_reference.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
@@ -245,27 +245,7 @@ TEST_P(Textures, BilinearMidpointIsTheMeanOfDecodedTexels) {
     }
 }
 
-// Ken Perlin's reference noise (his Java code), for checking both backends against.
-double reference_noise(glm::dvec3 q) {
-    auto p = [](int i) { return kPerlinPermutation[static_cast<std::size_t>(i & 255)]; };
-    auto fade = [](double t) { return t * t * t * (t * (t * 6 - 15) + 10); };
-    auto lerp = [](double t, double a, double b) { return a + t * (b - a); };
-    auto grad = [](int hash, double x, double y, double z) {
-        int h = hash & 15;
-        double u = h < 8 ? x : y, v = h < 4 ? y : h == 12 || h == 14 ? x : z;
-        return ((h & 1) == 0 ? u : -u) + ((h & 2) == 0 ? v : -v);
-    };
-    glm::dvec3 f = glm::floor(q);
-    int X = int(f.x) & 255, Y = int(f.y) & 255, Z = int(f.z) & 255;
-    double x = q.x - f.x, y = q.y - f.y, z = q.z - f.z;
-    double u = fade(x), v = fade(y), w = fade(z);
-    int A = p(X) + Y, AA = p(A) + Z, AB = p(A + 1) + Z, B = p(X + 1) + Y, BA = p(B) + Z, BB = p(B + 1) + Z;
-    return lerp(w,
-                lerp(v, lerp(u, grad(p(AA), x, y, z), grad(p(BA), x - 1, y, z)),
-                     lerp(u, grad(p(AB), x, y - 1, z), grad(p(BB), x - 1, y - 1, z))),
-                lerp(v, lerp(u, grad(p(AA + 1), x, y, z - 1), grad(p(BA + 1), x - 1, y, z - 1)),
-                     lerp(u, grad(p(AB + 1), x, y - 1, z - 1), grad(p(BB + 1), x - 1, y - 1, z - 1))));
-}
+using test::reference_noise;
 
 // A rectangle facing the camera with a black-to-white ramp: each pixel is the pattern's f.
 Scene pattern_plate(const std::string& pattern) {
