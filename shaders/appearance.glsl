@@ -20,8 +20,17 @@ struct Appearance {
 Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
     Appearance a = Appearance(material_pigment(m, p), n);
     if (SCENE_HAS_TEXTURES && m.texture_map != NO_MAP) a.pigment *= texture_color(m.texture_map, texture_uv(hit, p));
-    if (SCENE_HAS_PATTERNS && m.color_pattern != NO_MAP) a.pigment *= pattern_color(m.color_pattern, p);
-    if (SCENE_HAS_PATTERNS && m.bump_pattern != NO_MAP) a.normal = bumped_normal(m.bump_pattern, p, n);
+    if (!SCENE_HAS_PATTERNS) return a;
+    // The colour pattern, then the bump, through one evaluation site: inlined twice, the noise
+    // code made every scene with patterns slower (lavapipe), not only where they are seen.
+    [[dont_unroll]] for (uint k = 0u; k < 2u; ++k) {
+        uint index = k == 0u ? m.color_pattern : m.bump_pattern;
+        if (index == NO_MAP) continue;
+        PatternInfo pat = patterns[index];
+        vec4 f = pattern_value(pat, pattern_space(pat, p));
+        if (k == 0u) a.pigment *= ramp_color(pat, f.w);
+        else a.normal = bumped_normal(pat, f.xyz, n);
+    }
     return a;
 }
 

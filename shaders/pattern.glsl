@@ -8,25 +8,23 @@
 
 layout(std430, set = 0, binding = BINDING_PATTERNS) readonly buffer PatternBlock { PatternInfo patterns[]; };
 
-// Perlin's turbulence: the sum over octaves i of omega^i |noise(lambda^i q)|, as (gradient, value).
-vec4 pattern_turbulence(PatternInfo pat, vec3 q) {
-    vec4 sum = vec4(0.0);
+// f at pattern-space point q, with its gradient there: (gradient, value). Noise is called from
+// one place only (code size costs speed on lavapipe, even where it never runs): plain noise is a
+// single octave of the sum, turbulence, marble and wood sum omega^i |noise(lambda^i q)|.
+vec4 pattern_value(PatternInfo pat, vec3 q) {
+    const float TWO_PI = 6.28318530717959;
+    bool plain = pat.type == PATTERN_NOISE;
+    uint octaves = plain ? 1u : pat.octaves;
+    vec4 t = vec4(0.0);
     float amplitude = 1.0, frequency = 1.0;
-    for (uint i = 0u; i < pat.octaves; ++i) {
+    for (uint i = 0u; i < octaves; ++i) {
         vec4 n = perlin_noise(frequency * q);
-        float sign_n = n.w < 0.0 ? -1.0 : 1.0;
-        sum += vec4(amplitude * frequency * sign_n * n.xyz, amplitude * abs(n.w));
+        float sign_n = plain || n.w >= 0.0 ? 1.0 : -1.0;
+        t += sign_n * amplitude * vec4(frequency * n.xyz, n.w);
         amplitude *= pat.params.y;
         frequency *= pat.params.z;
     }
-    return sum;
-}
-
-// f at pattern-space point q, with its gradient there: (gradient, value).
-vec4 pattern_value(PatternInfo pat, vec3 q) {
-    const float TWO_PI = 6.28318530717959;
-    if (pat.type == PATTERN_NOISE) return 0.5 * perlin_noise(q) + vec4(0.0, 0.0, 0.0, 0.5);
-    vec4 t = pattern_turbulence(pat, q);
+    if (plain) return 0.5 * t + vec4(0.0, 0.0, 0.0, 0.5);
     if (pat.type == PATTERN_TURBULENCE) return t;
     float turbulence = pat.params.x;
     if (pat.type == PATTERN_MARBLE) {
@@ -64,16 +62,10 @@ vec3 ramp_color(PatternInfo pat, float t) {
     return color;
 }
 
-vec3 pattern_color(uint index, vec3 p) {
-    PatternInfo pat = patterns[index];
-    return ramp_color(pat, pattern_value(pat, pattern_space(pat, p)).w);
-}
-
-// n (unit, facing the viewer) tilted by the gradient of the bump's pattern, taken in world space
-// and multiplied by the pattern's mean scale (so scaling a bump keeps its depth).
-vec3 bumped_normal(uint index, vec3 p, vec3 n) {
-    PatternInfo pat = patterns[index];
-    vec3 g = pattern_value(pat, pattern_space(pat, p)).xyz;
+// n (unit, facing the viewer) tilted by the gradient g of a bump's pattern (in pattern space),
+// turned into world space and multiplied by the pattern's mean scale (so scaling a bump keeps
+// its depth).
+vec3 bumped_normal(PatternInfo pat, vec3 g, vec3 n) {
     vec3 world = g.x * pat.row0.xyz + g.y * pat.row1.xyz + g.z * pat.row2.xyz;
     return normalize(n - pat.params.w * (world - dot(world, n) * n));
 }
