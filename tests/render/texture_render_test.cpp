@@ -63,6 +63,18 @@ PixelRay pixel_ray(const Scene& s, int x, int y) {
     return {cam.eye, glm::normalize(camera_ray_direction(cam, x + 0.5, y + 0.5, s.render.width, s.render.height))};
 }
 
+// Where the ray through pixel (x, y) meets the plane z = 0 (the plates the tests look at).
+glm::dvec3 on_plate(const Scene& s, int x, int y) {
+    PixelRay r = pixel_ray(s, x, y);
+    return r.origin + (-r.origin.z / r.dir.z) * r.dir;
+}
+
+// [render] and [camera] of a test scene: one ray per pixel, the camera looking at the origin.
+std::string view_of(int width, int height, const std::string& eye, double fov) {
+    return fmt::format("[render]\nwidth = {}\nheight = {}\nsamples = 1\n[camera]\neye = {}\nlook_at = [0, 0, 0]\nfov = {}\n",
+                       width, height, eye, fov);
+}
+
 // Lit by ambient light alone, with k_a = 1: a pixel is its pigment.
 const char* kUnlit = R"(
         [ambient]
@@ -90,15 +102,7 @@ struct Placement {
 // every pixel away from texel edges shows the texel the documented mapping gives, exactly.
 void expect_texels_on_rectangle(Backend backend, const Placement& placement) {
     std::string file = write_texture("labels", 4, 3, label);
-    Scene s = test::scene_from_text(fmt::format(R"(
-        [render]
-        width = 64
-        height = 48
-        samples = 1
-        [camera]
-        eye = [0.2, 0.1, -4]
-        look_at = [0, 0, 0]
-        fov = 45
+    Scene s = test::scene_from_text(view_of(64, 48, "[0.2, 0.1, -4]", 45) + fmt::format(R"(
         {}
         [material.m]
         ambient = 1
@@ -114,8 +118,7 @@ void expect_texels_on_rectangle(Backend backend, const Placement& placement) {
     int checked = 0;
     for (int y = 0; y < img.height; ++y) {
         for (int x = 0; x < img.width; ++x) {
-            PixelRay r = pixel_ray(s, x, y);
-            glm::dvec3 p = r.origin + (-r.origin.z / r.dir.z) * r.dir;  // the plane z = 0
+            glm::dvec3 p = on_plate(s, x, y);
             dvec2 uv((p.x + 1.5) / 3.0, (p.y + 1.0) / 2.0);               // (a, b) along the edges
             if (uv.x < 0.01 || uv.x > 0.99 || uv.y < 0.01 || uv.y > 0.99) continue;
             // Image (s, t) = scale^-1 rotate(-angle) (uv - offset), then repeat or clamp.
@@ -151,15 +154,7 @@ TEST_P(Textures, ScaleOffsetRotateAndWrapPlaceTheImageAsDocumented) {
 TEST_P(Textures, SphericalMappingFollowsLongitudeAndLatitude) {
     std::string file = write_texture("sphere-labels", 7, 3, label);
     for (glm::dvec3 angles : {glm::dvec3(0.0), glm::dvec3(20.0, 35.0, 0.0)}) {
-        Scene s = test::scene_from_text(fmt::format(R"(
-            [render]
-            width = 63
-            height = 63
-            samples = 1
-            [camera]
-            eye = [0, 0, -5]
-            look_at = [0, 0, 0]
-            fov = 30
+        Scene s = test::scene_from_text(view_of(63, 63, "[0, 0, -5]", 30) + fmt::format(R"(
             {}
             [material.m]
             ambient = 1
@@ -206,15 +201,7 @@ TEST_P(Textures, BilinearMidpointIsTheMeanOfDecodedTexels) {
         return std::array<int, 3>{255 * x, 255 * x, 255 * x};
     });
     std::string grey = write_texture("grey-128", 1, 1, [](int, int) { return std::array<int, 3>{128, 64, 255}; });
-    Scene s = test::scene_from_text(fmt::format(R"(
-        [render]
-        width = 5
-        height = 5
-        samples = 1
-        [camera]
-        eye = [0, 0, -4]
-        look_at = [0, 0, 0]
-        fov = 20
+    Scene s = test::scene_from_text(view_of(5, 5, "[0, 0, -4]", 20) + fmt::format(R"(
         {}
         [material.bw]
         ambient = 1
@@ -249,15 +236,7 @@ using test::reference_noise;
 
 // A rectangle facing the camera with a black-to-white ramp: each pixel is the pattern's f.
 Scene pattern_plate(const std::string& pattern) {
-    return test::scene_from_text(fmt::format(R"(
-        [render]
-        width = 48
-        height = 48
-        samples = 1
-        [camera]
-        eye = [0, 0, -4]
-        look_at = [0, 0, 0]
-        fov = 40
+    return test::scene_from_text(view_of(48, 48, "[0, 0, -4]", 40) + fmt::format(R"(
         {}
         [material.m]
         ambient = 1
@@ -278,9 +257,7 @@ TEST_P(Textures, NoiseIsPerlinsReferenceOnBothBackends) {
     double worst = 0.0;
     for (int y = 0; y < img.height; ++y) {
         for (int x = 0; x < img.width; ++x) {
-            PixelRay r = pixel_ray(s, x, y);
-            glm::dvec3 p = r.origin + (-r.origin.z / r.dir.z) * r.dir;
-            glm::dvec3 q = (p - glm::dvec3(0.481, -0.074, 0.777)) / 0.37;
+            glm::dvec3 q = (on_plate(s, x, y) - glm::dvec3(0.481, -0.074, 0.777)) / 0.37;
             double expected = 0.5 + 0.5 * reference_noise(q);
             worst = std::max(worst, std::abs(img.at(x, y).g - expected));
         }
@@ -297,8 +274,7 @@ TEST_P(Textures, MarbleWoodAndTurbulenceAreTheDocumentedFunctionsOfNoise) {
         double worst = 0.0;
         for (int y = 0; y < img.height; ++y) {
             for (int x = 0; x < img.width; ++x) {
-                PixelRay r = pixel_ray(s, x, y);
-                glm::dvec3 q = r.origin + (-r.origin.z / r.dir.z) * r.dir;
+                glm::dvec3 q = on_plate(s, x, y);
                 double t = 0.0, amplitude = 1.0, frequency = 1.0;
                 for (int i = 0; i < 3; ++i, amplitude *= 0.6, frequency *= 2.2)
                     t += amplitude * std::abs(reference_noise(frequency * q));
@@ -320,15 +296,7 @@ TEST_P(Textures, MarbleWoodAndTurbulenceAreTheDocumentedFunctionsOfNoise) {
 // the rising half of a ring), so the lit colour is C max(0, N'.L) with N' = normalize(N - a g).
 // The material has a colour pattern too (a flat ramp, C = 0.5): both apply, each its own.
 TEST_P(Textures, BumpTiltsTheNormalByTheDocumentedRule) {
-    Scene s = test::scene_from_text(R"(
-        [render]
-        width = 48
-        height = 48
-        samples = 1
-        [camera]
-        eye = [0, 0, -4]
-        look_at = [0, 0, 0]
-        fov = 40
+    Scene s = test::scene_from_text(view_of(48, 48, "[0, 0, -4]", 40) + R"(
         [ambient]
         color = [0, 0, 0]
         [[light]]
@@ -348,8 +316,7 @@ TEST_P(Textures, BumpTiltsTheNormalByTheDocumentedRule) {
     int checked = 0;
     for (int y = 0; y < img.height; ++y) {
         for (int x = 0; x < img.width; ++x) {
-            PixelRay r = pixel_ray(s, x, y);
-            glm::dvec3 p = r.origin + (-r.origin.z / r.dir.z) * r.dir;
+            glm::dvec3 p = on_plate(s, x, y);
             double radius = std::hypot(p.x, p.y) / 0.8;  // in pattern units
             double fraction = radius - std::floor(radius);
             if (radius < 0.05 || std::abs(fraction - 0.5) < 0.03 || fraction < 0.03 || fraction > 0.97) continue;
@@ -370,14 +337,6 @@ TEST_P(Textures, BumpTiltsTheNormalByTheDocumentedRule) {
 // geometry is untouched), but the shading differs across most of its face.
 TEST_P(Textures, BumpChangesShadingButNotGeometry) {
     constexpr const char* scene = R"(
-        [render]
-        width = 48
-        height = 48
-        samples = 1
-        [camera]
-        eye = [0, 0, -5]
-        look_at = [0, 0, 0]
-        fov = 30
         [[light]]
         position = [-3, 4, -6]
         [material.m]
@@ -390,8 +349,9 @@ TEST_P(Textures, BumpChangesShadingButNotGeometry) {
         radius = 1
         material = "m"
     )";
-    Scene smooth = test::scene_from_text(fmt::format(fmt::runtime(scene), ""));
-    Scene bumpy = test::scene_from_text(fmt::format(fmt::runtime(scene), "bump = { type = \"noise\", amount = 0.8, scale = 0.15 }"));
+    const std::string view = view_of(48, 48, "[0, 0, -5]", 30);
+    Scene smooth = test::scene_from_text(view + fmt::format(fmt::runtime(scene), ""));
+    Scene bumpy = test::scene_from_text(view + fmt::format(fmt::runtime(scene), "bump = { type = \"noise\", amount = 0.8, scale = 0.15 }"));
     CpuRenderer cpu;
     Renderer& renderer = GetParam() == Backend::Gpu ? static_cast<Renderer&>(test::gpu_renderer()) : cpu;
     FloatImage hits_smooth = renderer.render_hits(smooth), hits_bumpy = renderer.render_hits(bumpy);
