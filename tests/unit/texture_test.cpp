@@ -17,10 +17,13 @@ ImageTexture image_texture(int w, int h, Fn fn) {
     auto image = std::make_shared<TextureImage>();
     image->width = w;
     image->height = h;
+    image->rgba.resize(std::size_t(w) * h * 4);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            auto [r, g, b] = fn(x, y);
-            image->rgba.insert(image->rgba.end(), {std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), 255});
+            std::array<int, 3> c = fn(x, y);
+            std::uint8_t* texel = &image->rgba[(std::size_t(y) * w + x) * 4];
+            for (int k = 0; k < 3; ++k) texel[k] = static_cast<std::uint8_t>(c[k]);
+            texel[3] = 255;
         }
     ImageTexture t;
     t.image = image;
