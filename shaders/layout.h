@@ -29,12 +29,18 @@ LANCER_CONST BINDING_NODES = 5;       // buffer BvhNode[]
 LANCER_CONST BINDING_PATCHES = 6;     // buffer PatchLeaf[]
 LANCER_CONST BINDING_SURFACES = 7;    // buffer SurfaceInfo[]
 LANCER_CONST BINDING_CELLS = 8;       // buffer ParametricCell[]
+LANCER_CONST BINDING_TEXTURES = 9;    // buffer TextureInfo[]
+LANCER_CONST BINDING_TEXELS = 10;     // buffer uint[]: the RGBA8 texels of every texture, R in the low byte
+LANCER_CONST BINDING_PATTERNS = 11;   // buffer PatternInfo[]
+LANCER_CONST BINDING_PERMUTATION = 12;  // buffer int[256]: Ken Perlin's permutation, for noise.glsl
 
 // Specialization constant ids (scene.glsl).
 LANCER_CONST SPEC_HAS_BEZIER = 0;
 LANCER_CONST SPEC_HAS_BVH = 1;
 LANCER_CONST SPEC_OUTPUT_HITS = 2;  // debug/test variant: write first hits instead of colours
 LANCER_CONST SPEC_CHECK_LOOP_LIMIT = 3;  // lavapipe: detect invocations its loop limit cut short (trace.comp)
+LANCER_CONST SPEC_HAS_TEXTURES = 4;      // some material has an image texture
+LANCER_CONST SPEC_HAS_PATTERNS = 5;      // some material has a procedural pattern or a bump
 
 // Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
 LANCER_CONST WORKGROUP_X = 8;
@@ -42,8 +48,8 @@ LANCER_CONST WORKGROUP_Y = 8;
 
 // Primitive::type values. Each has one GLSL file in shaders/shapes/ and one C++ file in
 // host/cpu/shapes/ with the same name.
-LANCER_CONST SHAPE_SPHERE = 0;     // p0 = (center, radius)
-LANCER_CONST SHAPE_PLANE = 1;      // p0 = (point, 0), p1 = (unit normal, 0)
+LANCER_CONST SHAPE_SPHERE = 0;     // p0 = (center, radius), p1, p2 = the sphere's own x and y axes (its texture's frame)
+LANCER_CONST SHAPE_PLANE = 1;      // p0 = (point, 0), p1 = (unit normal, 0), p2 = (texture u axis, 0)
 LANCER_CONST SHAPE_RECTANGLE = 2;  // p0 = (corner, 0), p1 = (edge_u, 0), p2 = (edge_v, 0)
 LANCER_CONST SHAPE_BOX = 3;        // p0 = (min, 0), p1 = (max, 0)
 LANCER_CONST SHAPE_BEZIER = 4;     // data = index of its PatchLeaf
@@ -52,6 +58,21 @@ LANCER_CONST SHAPE_PARAMETRIC = 5; // data = index of its ParametricCell, p0 = (
 // Material::pattern values.
 LANCER_CONST PATTERN_SOLID = 0;
 LANCER_CONST PATTERN_CHECKER = 1;
+
+// Material::texture_map, color_pattern and bump_pattern when the material has none.
+LANCER_CONST NO_MAP = 0xffffffffu;
+
+// TextureInfo::flags bits.
+LANCER_CONST TEXTURE_CLAMP_U = 1;  // else repeat
+LANCER_CONST TEXTURE_CLAMP_V = 2;
+LANCER_CONST TEXTURE_NEAREST = 4;  // else bilinear
+
+// PatternInfo::type values.
+LANCER_CONST PATTERN_NOISE = 0;
+LANCER_CONST PATTERN_TURBULENCE = 1;
+LANCER_CONST PATTERN_MARBLE = 2;
+LANCER_CONST PATTERN_WOOD = 3;
+LANCER_CONST PATTERN_MAX_COLORS = 8;  // stops of a colour ramp (scene/limits.hpp: kMaxPatternColors)
 
 struct Primitive {
     uint type;
@@ -112,6 +133,36 @@ struct Material {
     uint pattern;
     float checker_size;
     uint reserved;
+    // textures and patterns (shaders/appearance.glsl): indices, or NO_MAP
+    uint texture_map;    // into textures[]: the pigment is multiplied by the image's colour
+    uint color_pattern;  // into patterns[]: the pigment is multiplied by the pattern's colour
+    uint bump_pattern;   // into patterns[]: the shading normal is tilted by the pattern's gradient
+    uint maps_reserved;
+};
+
+// An image as a material places it (shaders/texture.glsl). Image coordinates (s, t) run from
+// (0, 0) at the image's bottom-left corner to (1, 1) at its top-right one.
+struct TextureInfo {
+    vec4 to_image_s;  // s = dot(xy, uv) + z, uv the surface's texture coordinates
+    vec4 to_image_t;  // t = dot(xy, uv) + z
+    uint texel_offset;  // its first texel in texels[]; rows from the top
+    uint width;
+    uint height;
+    uint flags;       // TEXTURE_CLAMP_U | TEXTURE_CLAMP_V | TEXTURE_NEAREST
+};
+
+// A procedural pattern (shaders/pattern.glsl): a scalar function of the world position, shown
+// through a colour ramp or used as a bump.
+struct PatternInfo {
+    vec4 row0;    // world -> pattern space: q = (dot(row0.xyz, p) + row0.w, dot(row1..), dot(row2..))
+    vec4 row1;
+    vec4 row2;
+    vec4 params;  // x = turbulence, y = omega, z = lambda, w = bump strength (amount x mean scale)
+    uint type;    // PATTERN_NOISE, ...
+    uint octaves;
+    uint color_count;
+    uint reserved;
+    vec4 colors[PATTERN_MAX_COLORS];  // rgb = colour, w = its position on the ramp, ascending
 };
 
 struct Light {
@@ -156,7 +207,9 @@ struct BandParams {
 
 #ifdef __cplusplus
 static_assert(sizeof(Primitive) == 64);
-static_assert(sizeof(Material) == 64);
+static_assert(sizeof(Material) == 80);
+static_assert(sizeof(TextureInfo) == 48);
+static_assert(sizeof(PatternInfo) == 208);
 static_assert(sizeof(Light) == 32);
 static_assert(sizeof(BvhNode) == 48);
 static_assert(sizeof(PatchLeaf) == 288);

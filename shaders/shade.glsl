@@ -15,16 +15,17 @@ vec3 material_pigment(Material m, vec3 p) {
     return m.color.rgb;
 }
 
-// n faces the viewer; view_dir is the incoming ray direction.
-vec3 shade_local(Material m, vec3 p, vec3 n, vec3 view_dir, inout float rays) {
-    vec3 pigment = material_pigment(m, p);
+// pigment: the surface's colour there (appearance.glsl). n: the geometric normal, facing the
+// viewer (which lights are in front, where shadow rays start); shading_n: the normal that lights
+// the surface (n, or tilted by a bump). view_dir is the incoming ray direction.
+vec3 shade_local(Material m, vec3 pigment, vec3 p, vec3 n, vec3 shading_n, vec3 view_dir, inout float rays) {
     vec3 color = m.phong.x * pigment * frame.ambient.rgb;
-    vec3 mirrored = reflect(view_dir, n);
+    vec3 mirrored = reflect(view_dir, shading_n);
     vec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
     for (uint i = 0u; i < frame.light_count; ++i) {
         vec3 l = normalize(lights[i].position.xyz - p);
-        float n_dot_l = dot(n, l);
-        if (n_dot_l <= 0.0) continue;  // light behind the surface: no shadow ray needed
+        if (dot(n, l) <= 0.0) continue;  // light behind the surface: no shadow ray needed
+        float n_dot_l = max(0.0, dot(shading_n, l));
         rays += 1.0;
         vec3 to_light = lights[i].position.xyz - origin;
         float dist = length(to_light);

@@ -18,6 +18,7 @@ layout(std430, set = 0, binding = BINDING_OUTPUT) buffer OutputBlock { vec4 pixe
 #include "common.glsl"
 #include "scene.glsl"
 #include "shade.glsl"
+#include "appearance.glsl"
 
 // Below this remaining weight a reflection cannot change the 8-bit result (< 1/4 of a level).
 const float MIN_WEIGHT = 1.0 / 1024.0;
@@ -36,11 +37,12 @@ vec3 trace(Ray ray, inout float rays) {
         vec3 n = hit.normal;
         if (dot(n, ray.dir) > 0.0) n = -n;  // two-sided surfaces
         Material m = materials[primitives[hit.primitive].material];
-        vec3 local = shade_local(m, p, n, ray.dir, rays);
+        Appearance look = appearance_at(m, hit, p, n);
+        vec3 local = shade_local(m, look.pigment, p, n, look.normal, ray.dir, rays);
         color += weight * (1.0 - m.reflection) * local;
         weight *= m.reflection;
         if (max(weight.r, max(weight.g, weight.b)) < MIN_WEIGHT) return color;
-        ray = Ray(p + ray_offset(p) * n, reflect(ray.dir, n));
+        ray = Ray(p + ray_offset(p) * n, bounce_direction(ray.dir, look.normal, n));
     }
     // Past max_depth the reflected ray contributes black (POV-Ray's max_trace_level rule).
     return color;

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "accel/shape_bounds.hpp"
+#include "cpu/appearance.hpp"
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
@@ -126,16 +127,15 @@ bool Tracer::occluded(const Ray& ray, double t_min, double t_max) const {
     return blocked;
 }
 
-dvec3 Tracer::shade_local(const Material& m, const dvec3& p, const dvec3& n, const dvec3& view_dir,
-                          double& rays) const {
-    dvec3 pigment = pigment_at(m, p);
+dvec3 Tracer::shade_local(const Material& m, const dvec3& pigment, const dvec3& p, const dvec3& n,
+                          const dvec3& shading_n, const dvec3& view_dir, double& rays) const {
     dvec3 color = m.ambient * pigment * scene_.ambient;
-    dvec3 mirrored = mirror(view_dir, n);
+    dvec3 mirrored = mirror(view_dir, shading_n);
     dvec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
     for (const PointLight& light : scene_.lights) {
         dvec3 l = glm::normalize(light.position - p);
-        double n_dot_l = glm::dot(n, l);
-        if (n_dot_l <= 0.0) continue;  // the light is behind the surface
+        if (glm::dot(n, l) <= 0.0) continue;  // the light is behind the surface
+        double n_dot_l = std::max(0.0, glm::dot(shading_n, l));
         rays += 1.0;
         dvec3 to_light = light.position - origin;
         double dist = glm::length(to_light);
@@ -159,10 +159,11 @@ dvec3 Tracer::trace(Ray ray, double& rays) const {
         dvec3 p = ray.origin + hit.t * ray.dir;
         dvec3 n = glm::dot(hit.normal, ray.dir) > 0.0 ? -hit.normal : hit.normal;  // two-sided
         const Material& m = scene_.materials[hit.object->material];
-        color += weight * (1.0 - m.reflection) * shade_local(m, p, n, ray.dir, rays);
+        Appearance look = appearance_at(m, hit, p, n);
+        color += weight * (1.0 - m.reflection) * shade_local(m, look.pigment, p, n, look.normal, ray.dir, rays);
         weight *= m.reflection;
         if (std::max({weight.r, weight.g, weight.b}) < kMinWeight) return color;
-        ray = {p + ray_offset(p) * n, mirror(ray.dir, n)};
+        ray = {p + ray_offset(p) * n, bounce_direction(ray.dir, look.normal, n)};
     }
     return color;  // past max_depth the reflected ray contributes black
 }

@@ -30,8 +30,11 @@ public:
     bool closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) const;
     bool occluded(const Ray& ray, double t_min, double t_max) const;
 
-    // Ambient + per-light diffuse and specular at p (n faces the viewer, view_dir is the ray's).
-    dvec3 shade_local(const Material& m, const dvec3& p, const dvec3& n, const dvec3& view_dir, double& rays) const;
+    // Ambient + per-light diffuse and specular at p of a surface with this pigment. n is the
+    // geometric normal (facing the viewer: which lights are in front, where shadow rays start),
+    // shading_n the normal that lights it (n, or tilted by a bump). view_dir is the ray's.
+    dvec3 shade_local(const Material& m, const dvec3& pigment, const dvec3& p, const dvec3& n, const dvec3& shading_n,
+                      const dvec3& view_dir, double& rays) const;
 
 private:
     // Calls visit(object) for every object whose box the ray enters within [0, t_max()], nearest
@@ -45,7 +48,8 @@ private:
     std::vector<BvhNode> nodes_;
 };
 
-// The pigment of a material at a point (solid colour or checker).
+// The colour or checker part of a material's pigment at a point (cpu/appearance.hpp adds
+// textures and patterns).
 dvec3 pigment_at(const Material& m, const dvec3& p);
 
 }  // namespace lancer::cpu

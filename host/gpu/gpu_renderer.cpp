@@ -30,7 +30,7 @@ GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration accele
       acceleration_(acceleration) {
     VkDevice device = context_->device();
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 8}};
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 12}};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = 2;
@@ -63,6 +63,10 @@ GpuRenderer::~GpuRenderer() {
     // Buffers and the pipeline go before the context (member order alone would destroy the context last
     // anyway; being explicit keeps it true if members move).
     output_ = {};
+    textures_ = {};
+    texels_ = {};
+    patterns_ = {};
+    permutation_ = {};
     nodes_ = {};
     patches_ = {};
     surfaces_ = {};
@@ -151,6 +155,14 @@ gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
     gpu::FrameParams frame = gpu::pack_frame(scene, packed);
     gpu::PipelineVariant variant{!packed.patches.empty(), !packed.nodes.empty()};
     variant.check_loop_limit = context_->info().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
+    variant.has_textures = !packed.textures.empty();
+    variant.has_patterns = !packed.patterns.empty();
+    // The loader keeps textures within 2^27 bytes, the least any Vulkan device allows.
+    const std::size_t texel_bytes = packed.texels.size() * sizeof(gpu::uint);
+    if (texel_bytes > context_->limits().maxStorageBufferRange)
+        throw UserError(fmt::format("the scene's textures need {} bytes in one storage buffer; this device allows {} "
+                                    "(maxStorageBufferRange)",
+                                    texel_bytes, context_->limits().maxStorageBufferRange));
     upload(primitives_, primitives_shadow_, std::move(packed.primitives));
     upload(nodes_, nodes_shadow_, std::move(packed.nodes));
     upload(patches_, patches_shadow_, std::move(packed.patches));
@@ -158,6 +170,10 @@ gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
     upload(cells_, cells_shadow_, std::move(packed.cells));
     upload(materials_, materials_shadow_, std::move(packed.materials));
     upload(lights_, lights_shadow_, std::move(packed.lights));
+    upload(textures_, textures_shadow_, std::move(packed.textures));
+    upload(texels_, texels_shadow_, std::move(packed.texels));
+    upload(patterns_, patterns_shadow_, std::move(packed.patterns));
+    upload(permutation_, permutation_shadow_, std::move(packed.permutation));
     frame_.write(&frame, sizeof(frame));
     last_upload_.bytes_written += sizeof(frame);
     return variant;
@@ -174,7 +190,9 @@ void GpuRenderer::update_descriptors() {
     const std::pair<std::uint32_t, const gpu::Buffer*> buffers[] = {
         {gpu::BINDING_FRAME, &frame_},   {gpu::BINDING_PRIMITIVES, &primitives_}, {gpu::BINDING_MATERIALS, &materials_},
         {gpu::BINDING_LIGHTS, &lights_}, {gpu::BINDING_OUTPUT, &output_},         {gpu::BINDING_NODES, &nodes_},
-        {gpu::BINDING_PATCHES, &patches_}, {gpu::BINDING_SURFACES, &surfaces_}, {gpu::BINDING_CELLS, &cells_}};
+        {gpu::BINDING_PATCHES, &patches_}, {gpu::BINDING_SURFACES, &surfaces_}, {gpu::BINDING_CELLS, &cells_},
+        {gpu::BINDING_TEXTURES, &textures_}, {gpu::BINDING_TEXELS, &texels_}, {gpu::BINDING_PATTERNS, &patterns_},
+        {gpu::BINDING_PERMUTATION, &permutation_}};
     constexpr int kBindings = static_cast<int>(std::extent_v<decltype(buffers)>);
     VkDescriptorBufferInfo infos[kBindings];
     VkWriteDescriptorSet writes[kBindings];

@@ -94,6 +94,7 @@ private:
     std::map<gpu::PipelineVariant, std::unique_ptr<gpu::ComputePipeline>> pipelines_;
     gpu::ComputePipeline* pipeline_ = nullptr;  // the one for the current render
     gpu::Buffer frame_, primitives_, nodes_, patches_, surfaces_, cells_, materials_, lights_, output_;
+    gpu::Buffer textures_, texels_, patterns_, permutation_;
     VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;
     VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;
@@ -109,6 +110,10 @@ private:
     std::vector<gpu::ParametricCell> cells_shadow_;
     std::vector<gpu::Material> materials_shadow_;
     std::vector<gpu::Light> lights_shadow_;
+    std::vector<gpu::TextureInfo> textures_shadow_;
+    std::vector<gpu::uint> texels_shadow_;
+    std::vector<gpu::PatternInfo> patterns_shadow_;
+    std::vector<int> permutation_shadow_;
     UploadStats last_upload_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
     std::size_t bands_rerendered_ = 0;

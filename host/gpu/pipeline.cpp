@@ -1,6 +1,7 @@
 #include "gpu/pipeline.hpp"
 
 #include <array>
+#include <iterator>
 #include <utility>
 
 #include "gpu/layout.hpp"
@@ -9,7 +10,7 @@
 namespace lancer::gpu {
 
 TraceLayout::TraceLayout(const Context& context) : device_(context.device()) {
-    const std::array<std::pair<uint, VkDescriptorType>, 9> kinds = {{
+    const std::array<std::pair<uint, VkDescriptorType>, 13> kinds = {{
         {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
         {BINDING_PRIMITIVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
@@ -19,6 +20,10 @@ TraceLayout::TraceLayout(const Context& context) : device_(context.device()) {
         {BINDING_PATCHES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {BINDING_SURFACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
         {BINDING_CELLS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        {BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        {BINDING_TEXELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        {BINDING_PATTERNS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+        {BINDING_PERMUTATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     }};
     std::array<VkDescriptorSetLayoutBinding, kinds.size()> bindings{};
     for (std::size_t i = 0; i < kinds.size(); ++i) {
@@ -58,11 +63,14 @@ void TraceLayout::release() noexcept {
 ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layout,
                                  const std::vector<std::uint32_t>& spirv, const PipelineVariant& variant)
     : device_(context.device()) {
-    const VkBool32 values[] = {variant.has_bezier, variant.has_bvh, variant.output_hits, variant.check_loop_limit};
-    const VkSpecializationMapEntry entries[] = {{SPEC_HAS_BEZIER, 0, 4}, {SPEC_HAS_BVH, 4, 4}, {SPEC_OUTPUT_HITS, 8, 4},
-                                                {SPEC_CHECK_LOOP_LIMIT, 12, 4}};
+    const VkBool32 values[] = {variant.has_bezier,       variant.has_bvh,      variant.output_hits,
+                               variant.check_loop_limit, variant.has_textures, variant.has_patterns};
+    const VkSpecializationMapEntry entries[] = {{SPEC_HAS_BEZIER, 0, 4},       {SPEC_HAS_BVH, 4, 4},
+                                                {SPEC_OUTPUT_HITS, 8, 4},      {SPEC_CHECK_LOOP_LIMIT, 12, 4},
+                                                {SPEC_HAS_TEXTURES, 16, 4},    {SPEC_HAS_PATTERNS, 20, 4}};
+    static_assert(std::size(values) == std::size(entries));
     VkSpecializationInfo specialization{};
-    specialization.mapEntryCount = 4;
+    specialization.mapEntryCount = static_cast<std::uint32_t>(std::size(entries));
     specialization.pMapEntries = entries;
     specialization.dataSize = sizeof(values);
     specialization.pData = values;

@@ -2,14 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <map>
 #include <optional>
 
 #include "accel/bvh.hpp"
 #include "accel/shape_bounds.hpp"
+#include "core/perlin_permutation.hpp"
 #include "scene/camera.hpp"
+#include "scene/limits.hpp"
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 namespace lancer::gpu {
 namespace {
@@ -39,9 +45,12 @@ struct PrimitivePacker {
     void add(Primitive p, std::optional<Aabb> box) { prims.emplace_back(p, box); }
 
     void operator()(const Sphere& s) {
-        add({SHAPE_SPHERE, material, 0, object, v4(s.center, s.radius), {}, {}}, shape_bounds(s));
+        add({SHAPE_SPHERE, material, 0, object, v4(s.center, s.radius), v4(s.orientation[0]), v4(s.orientation[1])},
+            shape_bounds(s));
     }
-    void operator()(const Plane& p) { add({SHAPE_PLANE, material, 0, object, v4(p.point), v4(p.normal), {}}, std::nullopt); }
+    void operator()(const Plane& p) {
+        add({SHAPE_PLANE, material, 0, object, v4(p.point), v4(p.normal), v4(p.u_axis)}, std::nullopt);
+    }
     void operator()(const Rectangle& r) {
         add({SHAPE_RECTANGLE, material, 0, object, v4(r.corner), v4(r.edge_u), v4(r.edge_v)}, shape_bounds(r));
     }
@@ -95,16 +104,74 @@ struct PrimitivePacker {
     }
 };
 
-Material pack_material(const lancer::Material& m) {
-    Material g{};
-    g.color = v4(m.checker ? m.checker->color_a : m.color);
-    g.color2 = v4(m.checker ? m.checker->color_b : m.color);
-    g.phong = vec4(float(m.ambient), float(m.diffuse), float(m.specular), float(m.shininess));
-    g.reflection = float(m.reflection);
-    g.pattern = m.checker ? PATTERN_CHECKER : PATTERN_SOLID;
-    g.checker_size = m.checker ? float(m.checker->size) : 1.0f;
-    return g;
-}
+static_assert(PATTERN_MAX_COLORS == limits::kMaxPatternColors);
+
+// Textures and patterns of the materials: images packed once each, a TextureInfo or
+// PatternInfo per use.
+struct MapPacker {
+    PackedScene& out;
+    std::map<const TextureImage*, uint> image_offsets;
+
+    uint texture(const ImageTexture& t) {
+        auto [at, added] = image_offsets.emplace(t.image.get(), static_cast<uint>(out.texels.size()));
+        if (added) {
+            std::size_t first = out.texels.size();
+            out.texels.resize(first + t.image->rgba.size() / 4);
+            std::memcpy(&out.texels[first], t.image->rgba.data(), t.image->rgba.size());  // R in the low byte
+        }
+        // Image (s, t) = scale^-1 rotate(-angle) (uv - offset).
+        double a = t.rotate_deg * M_PI / 180.0, c = std::cos(a), s = std::sin(a);
+        glm::dvec2 row_s = glm::dvec2(c, s) / t.scale.x;
+        glm::dvec2 row_t = glm::dvec2(-s, c) / t.scale.y;
+        TextureInfo info{};
+        info.to_image_s = vec4(float(row_s.x), float(row_s.y), float(-glm::dot(row_s, t.offset)), 0.0f);
+        info.to_image_t = vec4(float(row_t.x), float(row_t.y), float(-glm::dot(row_t, t.offset)), 0.0f);
+        info.texel_offset = at->second;
+        info.width = static_cast<uint>(t.image->width);
+        info.height = static_cast<uint>(t.image->height);
+        info.flags = (t.wrap_u == TextureWrap::Clamp ? TEXTURE_CLAMP_U : 0u) |
+                     (t.wrap_v == TextureWrap::Clamp ? TEXTURE_CLAMP_V : 0u) |
+                     (t.filter == TextureFilter::Nearest ? TEXTURE_NEAREST : 0u);
+        out.textures.push_back(info);
+        return static_cast<uint>(out.textures.size() - 1);
+    }
+
+    uint pattern(const Pattern& p, double bump_amount) {
+        PatternInfo info{};
+        glm::dmat4 to_pattern = glm::inverse(p.to_world);  // column-major: m[column][row]
+        vec4* rows[] = {&info.row0, &info.row1, &info.row2};
+        for (int r = 0; r < 3; ++r)
+            *rows[r] = vec4(float(to_pattern[0][r]), float(to_pattern[1][r]), float(to_pattern[2][r]), float(to_pattern[3][r]));
+        double mean_scale = std::cbrt(std::abs(glm::determinant(glm::dmat3(p.to_world))));
+        info.params = vec4(float(p.turbulence), float(p.omega), float(p.lambda), float(bump_amount * mean_scale));
+        switch (p.type) {
+            case PatternType::Noise: info.type = PATTERN_NOISE; break;
+            case PatternType::Turbulence: info.type = PATTERN_TURBULENCE; break;
+            case PatternType::Marble: info.type = PATTERN_MARBLE; break;
+            case PatternType::Wood: info.type = PATTERN_WOOD; break;
+        }
+        info.octaves = static_cast<uint>(p.octaves);
+        info.color_count = static_cast<uint>(p.colors.size());
+        for (std::size_t i = 0; i < p.colors.size(); ++i) info.colors[i] = v4(p.colors[i].color, p.colors[i].position);
+        out.patterns.push_back(info);
+        return static_cast<uint>(out.patterns.size() - 1);
+    }
+
+    Material material(const lancer::Material& m) {
+        Material g{};
+        g.color = v4(m.checker ? m.checker->color_a : m.color);
+        g.color2 = v4(m.checker ? m.checker->color_b : m.color);
+        g.phong = vec4(float(m.ambient), float(m.diffuse), float(m.specular), float(m.shininess));
+        g.reflection = float(m.reflection);
+        g.pattern = m.checker ? PATTERN_CHECKER : PATTERN_SOLID;
+        g.checker_size = m.checker ? float(m.checker->size) : 1.0f;
+        g.texture_map = m.texture ? texture(*m.texture) : NO_MAP;
+        g.color_pattern = m.pattern ? pattern(*m.pattern, 0.0) : NO_MAP;
+        g.bump_pattern = m.bump ? pattern(m.bump->pattern, m.bump->amount) : NO_MAP;
+        g.maps_reserved = 0;
+        return g;
+    }
+};
 
 }  // namespace
 
@@ -151,7 +218,9 @@ PackedScene pack_scene(const Scene& scene, Acceleration acceleration, BvhCache* 
         g.count = n.count;
         packed.nodes.push_back(g);
     }
-    for (const lancer::Material& m : scene.materials) packed.materials.push_back(pack_material(m));
+    MapPacker maps{packed, {}};
+    for (const lancer::Material& m : scene.materials) packed.materials.push_back(maps.material(m));
+    if (!packed.patterns.empty()) packed.permutation.assign(kPerlinPermutation.begin(), kPerlinPermutation.end());
     for (const PointLight& l : scene.lights) packed.lights.push_back({v4(l.position), v4(l.color)});
     return packed;
 }

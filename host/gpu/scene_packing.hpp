@@ -18,6 +18,10 @@ struct PackedScene {
     std::vector<SurfaceInfo> surfaces;
     std::vector<ParametricCell> cells;
     std::vector<Material> materials;
+    std::vector<TextureInfo> textures;  // one per material with a texture
+    std::vector<uint> texels;           // every texture image once, RGBA8
+    std::vector<PatternInfo> patterns;  // colour patterns and bumps
+    std::vector<int> permutation;       // Ken Perlin's, when there are patterns
     std::vector<Light> lights;
     uint unbounded_count = 0;
 };

@@ -1,5 +1,7 @@
 #include "gpu/shader_compiler.hpp"
 
+#include <map>
+
 #include <fstream>
 #include <memory>
 #include <mutex>
@@ -154,6 +156,17 @@ std::vector<ReflectedMember> reflect_block_members(const ShaderTree& tree, const
         members.push_back({b.name, b.offset, b.topLevelArrayStride});
     }
     return members;
+}
+
+std::map<std::string, int> reflect_block_bindings(const ShaderTree& tree, const std::string& entry) {
+    Compiled c = compile(tree, entry, {}, "");
+    c.program->buildReflection(EShReflectionSeparateBuffers);
+    std::map<std::string, int> bindings;
+    for (int i = 0; i < c.program->getNumUniformBlocks(); ++i)
+        bindings[c.program->getUniformBlock(i).name] = c.program->getUniformBlock(i).getBinding();
+    for (int i = 0; i < c.program->getNumBufferBlocks(); ++i)
+        bindings[c.program->getBufferBlock(i).name] = c.program->getBufferBlock(i).getBinding();
+    return bindings;
 }
 
 }  // namespace lancer::gpu

@@ -5,6 +5,7 @@
 // line they occur in, included files too.
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -43,5 +44,7 @@ struct ReflectedMember {
     int top_level_stride;  // for members of a runtime-sized array of structs: the struct's stride
 };
 std::vector<ReflectedMember> reflect_block_members(const ShaderTree& tree, const std::string& entry);
+// Block name (e.g. "TextureBlock") -> its descriptor binding, for layout tests.
+std::map<std::string, int> reflect_block_bindings(const ShaderTree& tree, const std::string& entry);
 
 }  // namespace lancer::gpu

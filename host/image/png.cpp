@@ -12,9 +12,7 @@
 #include "image/image.hpp"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#include <stb/stb_image.h>
+#include <stb/stb_image.h>  // implemented in stb_image.cpp
 #include <stb/stb_image_write.h>
 
 namespace lancer {

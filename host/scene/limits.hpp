@@ -11,4 +11,12 @@ constexpr int kMaxLights = 256;
 constexpr int kMaxMaterials = 65536;
 constexpr int kMaxObjects = 1 << 20;
 
+// Textures: the GPU keeps every texel of every texture in one storage buffer, and Vulkan
+// guarantees storage buffers of 2^27 bytes (maxStorageBufferRange), i.e. 2^25 RGBA8 texels.
+constexpr int kMaxTextureSide = 8192;
+constexpr long long kMaxTextureTexels = 1LL << 25;  // all textures together: 128 MiB
+constexpr int kMaxTextures = 1024;                  // distinct image files
+constexpr int kMaxPatternColors = 8;                // stops of a pattern's colour ramp
+constexpr int kMaxOctaves = 10;                     // terms of a turbulence sum
+
 }  // namespace lancer::limits

@@ -12,6 +12,7 @@
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
 #include "scene/parse_animation.hpp"
+#include "scene/parse_material_maps.hpp"
 #include "scene/parse_shapes.hpp"
 #include "scene/string_position.hpp"
 #include "scene/toml_reader.hpp"
@@ -72,7 +73,7 @@ PointLight read_light(TableReader& t) {
     return l;
 }
 
-Material read_material(TableReader& t, const std::string& name) {
+Material read_material(TableReader& t, const std::string& name, TextureLibrary& textures) {
     Material m;
     m.name = name;
     m.color = check_color(t, "color", t.vec3("color", m.color));
@@ -97,6 +98,7 @@ Material read_material(TableReader& t, const std::string& name) {
     m.shininess = t.number("shininess", m.shininess);
     if (!(m.shininess > 0.0)) t.fail("shininess", "shininess must be positive");
     m.reflection = check_range(t, "reflection", t.number("reflection", m.reflection), 0.0, 1.0);
+    read_material_maps(t, m, textures);
     t.finish();
     return m;
 }
@@ -189,6 +191,7 @@ Scene parse_scene(std::string_view text, const std::string& path) {
     }
 
     std::map<std::string, std::uint32_t, std::less<>> material_index;
+    TextureLibrary textures(scene.dependencies);
     if (const toml::table* materials = top.table("material")) {
         if (materials->size() > static_cast<std::size_t>(limits::kMaxMaterials))
             top.fail("material", "too many materials (the limit is " + std::to_string(limits::kMaxMaterials) + ")");
@@ -198,7 +201,7 @@ Scene parse_scene(std::string_view text, const std::string& path) {
             if (!t) throw SceneError(location_of(node, path), "material '" + name + "' must be a table ([material." + name + "])");
             TableReader m(*t, path, "material '" + name + "'");
             material_index[name] = static_cast<std::uint32_t>(scene.materials.size());
-            scene.materials.push_back(read_material(m, name));
+            scene.materials.push_back(read_material(m, name, textures));
         }
     }
     // Objects without `material` use POV-Ray's defaults in white, unless the scene defines "default".

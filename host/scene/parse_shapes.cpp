@@ -1,6 +1,8 @@
 #include "scene/parse_shapes.hpp"
 
+#include "scene/parse_material_maps.hpp"
 #include "scene/parse_surfaces.hpp"
+#include "scene/transform.hpp"
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -13,6 +15,7 @@ Shape read_sphere(TableReader& t) {
     s.center = t.required_vec3("center");
     s.radius = t.required_number("radius");
     if (!(s.radius > 0.0)) t.fail("radius", fmt::format("sphere radius must be positive, not {:g}", s.radius));
+    s.orientation = glm::dmat3(rotation_degrees(t.vec3("rotate", dvec3(0.0))));
     return s;
 }
 
@@ -22,6 +25,7 @@ Shape read_plane(TableReader& t) {
     dvec3 n = t.required_vec3("normal");
     if (!(glm::length(n) > 0.0)) t.fail("normal", "plane normal must not be the zero vector");
     p.normal = glm::normalize(n);
+    set_plane_texture_axes(p);
     return p;
 }
 

@@ -8,9 +8,11 @@
 #include <variant>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/error.hpp"
+#include "scene/material_maps.hpp"
 #include "surface/bezier_patch.hpp"
 #include "surface/parametric_cells.hpp"
 #include "surface/parametric_surface.hpp"
@@ -56,16 +58,27 @@ struct Material {
     double specular = 0.0;   // POV-Ray: phong
     double shininess = 40.0; // POV-Ray: phong_size
     double reflection = 0.0;
+    // textures and patterns: the pigment is color x texture x pattern; bump tilts the normal
+    std::optional<ImageTexture> texture;
+    std::optional<Pattern> pattern;
+    std::optional<Bump> bump;
 };
 
 struct Sphere {
     dvec3 center{0.0};
     double radius = 1.0;
+    // Sphere space -> world (a rotation): only where its texture lies. Texture (u, v) come from
+    // the direction from the centre in sphere space (docs/scene-format.md).
+    glm::dmat3 orientation{1.0};
 };
 
 struct Plane {
     dvec3 point{0.0};
     dvec3 normal{0.0, 1.0, 0.0};  // unit length
+    // Texture (u, v) = ((p - point).u_axis, (p - point).v_axis): unit vectors in the plane,
+    // v_axis along the world's up (+z for a horizontal plane), u_axis = normal x v_axis.
+    dvec3 u_axis{1.0, 0.0, 0.0};
+    dvec3 v_axis{0.0, 0.0, 1.0};
 };
 
 // A parallelogram: corner + a * edge_u + b * edge_v for a, b in [0, 1].
@@ -115,7 +128,7 @@ struct Scene {
     std::vector<PointLight> lights;
     std::vector<Material> materials;
     std::vector<Object> objects;
-    // Files the scene read besides itself (patch files, ...), for `lancer watch`.
+    // Files the scene read besides itself (patch files, textures), for `lancer watch` and `view`.
     std::vector<std::string> dependencies;
     // Set when the file has an [animation] table; scene_at() (scene/animation.hpp) turns the
     // scene into the static one of a moment. Renderers ignore it.

@@ -24,3 +24,15 @@ vec3 box_normal(Primitive b, vec3 p) {
     if (a.y >= a.z) return vec3(0.0, sign(d.y), 0.0);
     return vec3(0.0, 0.0, sign(d.z));
 }
+
+// Texture (u, v): the whole image on each face, upright seen from outside. Side faces have v
+// up (+y) and u to the right; the top has u = +x, v = +z; the bottom u = +x, v = -z.
+vec2 box_texture_uv(Primitive b, vec3 p, vec3 face_normal) {
+    vec3 f = (p - b.p0.xyz) / (b.p1.xyz - b.p0.xyz);  // 0 at min, 1 at max, per axis
+    if (face_normal.x > 0.5) return vec2(f.z, f.y);
+    if (face_normal.x < -0.5) return vec2(1.0 - f.z, f.y);
+    if (face_normal.z > 0.5) return vec2(1.0 - f.x, f.y);
+    if (face_normal.y > 0.5) return vec2(f.x, f.z);
+    if (face_normal.y < -0.5) return vec2(f.x, 1.0 - f.z);
+    return vec2(f.x, f.y);  // -z, the face toward a default camera
+}

@@ -129,3 +129,9 @@ vec3 parametric_normal(Primitive prim, vec2 uv) {
     float len = length(n);
     return len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
 }
+
+// Texture (u, v): the hit's parameters, the surface's domain mapped to [0, 1] x [0, 1].
+vec2 parametric_texture_uv(Primitive prim, vec2 uv) {
+    vec4 dom = surfaces[uint(cells[prim.data].p00.w)].domain;
+    return (uv - dom.xz) / (dom.yw - dom.xz);
+}

@@ -13,3 +13,9 @@ bool plane_intersect(Primitive pl, Ray ray, float t_min, float t_max, out float 
 vec3 plane_normal(Primitive pl) {
     return pl.p1.xyz;
 }
+
+// Texture (u, v): distances from the plane's point along its texture axes (p2 = u, v = u x n).
+vec2 plane_texture_uv(Primitive pl, vec3 p) {
+    vec3 d = p - pl.p0.xyz;
+    return vec2(dot(d, pl.p2.xyz), dot(d, cross(pl.p2.xyz, pl.p1.xyz)));
+}

@@ -22,3 +22,13 @@ bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float 
 vec3 sphere_normal(Primitive s, vec3 p) {
     return (p - s.p0.xyz) / s.p0.w;
 }
+
+// Texture (u, v): longitude and latitude in the sphere's own frame (p1, p2 = its x and y axes):
+// u = 0.5 faces -z and grows toward +x; v runs from 0 at the south pole to 1 at the north pole.
+vec2 sphere_texture_uv(Primitive s, vec3 p) {
+    vec3 w = (p - s.p0.xyz) / s.p0.w;
+    vec3 d = vec3(dot(w, s.p1.xyz), dot(w, s.p2.xyz), dot(w, cross(s.p1.xyz, s.p2.xyz)));
+    const float PI = 3.14159265358979;
+    float longitude = (d.x == 0.0 && d.z == 0.0) ? 0.0 : atan(d.x, -d.z);  // atan(0, 0) is undefined in GLSL
+    return vec2(0.5 + longitude / (2.0 * PI), 0.5 + asin(clamp(d.y, -1.0, 1.0)) / PI);
+}

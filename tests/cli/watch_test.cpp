@@ -312,3 +312,38 @@ height = 1
 
 }  // namespace
 }  // namespace lancer
+
+namespace lancer {
+namespace {
+
+// A texture is part of its scene: rewriting the image re-renders, and an image that no longer
+// reads is a scene error that keeps the last good picture.
+TEST_F(Watch, TextureEditsRerenderTheScene) {
+    auto write_texture = [&](std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+        write_png((dir / "tex.png").string(), Rgb8Image{1, 1, {r, g, b}});
+    };
+    write_texture(255, 0, 0);
+    std::string textured = scene_text("0");
+    const std::string color = "color = [0.9, 0.1, 0.1]";
+    textured.replace(textured.find(color), color.size(), "texture = \"tex.png\"");
+    test::write_file(dir / "scene.toml", textured);
+    ASSERT_TRUE(wait_for_count("reload: ", 1)) << child->log();
+    const std::uint8_t* centre = output().at(16, 9);
+    EXPECT_GT(centre[0], centre[2]);  // red
+
+    write_texture(0, 0, 255);
+    ASSERT_TRUE(wait_for_count("reload: tex.png changed", 1)) << child->log();
+    Rgb8Image blue = output();
+    EXPECT_GT(blue.at(16, 9)[2], blue.at(16, 9)[0]);
+
+    test::write_file(dir / "tex.png", "not a picture any more");
+    ASSERT_TRUE(wait_for_count("scene error", 1)) << child->log();
+    EXPECT_NE(child->log().find("scene.toml:13:11: error: cannot read texture 'tex.png': not a PNG, JPEG or BMP image"),
+              std::string::npos)
+        << child->log();
+    EXPECT_EQ(output().bytes, blue.bytes);
+    EXPECT_TRUE(child->running());
+}
+
+}  // namespace
+}  // namespace lancer

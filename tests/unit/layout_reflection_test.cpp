@@ -12,18 +12,22 @@
 namespace lancer::gpu {
 namespace {
 
-std::map<std::string, int> reflected(bool strides = false) {
-    std::map<std::string, int> values;
-    // With a parametric surface compiled in, so the blocks only its code uses are reflected too.
+// The shaders, with a parametric surface compiled in, so the blocks only its code uses are
+// reflected too.
+ShaderTree full_tree() {
     auto disk = directory_tree(test::source_path("shaders"));
-    ShaderTree tree = [disk](const std::string& name) -> std::optional<std::string> {
+    return [disk](const std::string& name) -> std::optional<std::string> {
         if (name == "surface_functions.glsl")
             return std::string("#define LANCER_PARAMETRIC_SURFACES 1\n"
                                "void surface_eval(uint s, vec2 uv, out vec3 P, out vec3 Pu, out vec3 Pv) {\n"
                                "    P = vec3(uv, 0.0); Pu = vec3(1.0, 0.0, 0.0); Pv = vec3(0.0, 1.0, 0.0);\n}\n");
         return disk(name);
     };
-    for (const auto& m : reflect_block_members(tree, "trace.comp"))
+}
+
+std::map<std::string, int> reflected(bool strides = false) {
+    std::map<std::string, int> values;
+    for (const auto& m : reflect_block_members(full_tree(), "trace.comp"))
         values[m.name] = strides ? m.top_level_stride : m.offset;
     return values;
 }
@@ -83,6 +87,23 @@ TEST(Layout, HostOffsetsMatchGlslangReflection) {
     EXPECT_OFFSET("materials.reflection", Material, reflection);
     EXPECT_OFFSET("materials.pattern", Material, pattern);
     EXPECT_OFFSET("materials.checker_size", Material, checker_size);
+    EXPECT_OFFSET("materials.texture_map", Material, texture_map);
+    EXPECT_OFFSET("materials.color_pattern", Material, color_pattern);
+    EXPECT_OFFSET("materials.bump_pattern", Material, bump_pattern);
+    EXPECT_OFFSET("textures.to_image_s", TextureInfo, to_image_s);
+    EXPECT_OFFSET("textures.to_image_t", TextureInfo, to_image_t);
+    EXPECT_OFFSET("textures.texel_offset", TextureInfo, texel_offset);
+    EXPECT_OFFSET("textures.width", TextureInfo, width);
+    EXPECT_OFFSET("textures.height", TextureInfo, height);
+    EXPECT_OFFSET("textures.flags", TextureInfo, flags);
+    EXPECT_OFFSET("patterns.row0", PatternInfo, row0);
+    EXPECT_OFFSET("patterns.row1", PatternInfo, row1);
+    EXPECT_OFFSET("patterns.row2", PatternInfo, row2);
+    EXPECT_OFFSET("patterns.params", PatternInfo, params);
+    EXPECT_OFFSET("patterns.type", PatternInfo, type);
+    EXPECT_OFFSET("patterns.octaves", PatternInfo, octaves);
+    EXPECT_OFFSET("patterns.color_count", PatternInfo, color_count);
+    EXPECT_OFFSET("patterns.colors", PatternInfo, colors);
     EXPECT_OFFSET("lights.position", Light, position);
     EXPECT_OFFSET("lights.color", Light, color);
     EXPECT_OFFSET("band.y0", BandParams, y0);
@@ -101,6 +122,25 @@ TEST(Layout, ArrayStridesMatchHostSizes) {
     EXPECT_EQ(strides.at("patch_leaves.origin"), static_cast<int>(sizeof(PatchLeaf)));
     EXPECT_EQ(strides.at("surfaces.row0"), static_cast<int>(sizeof(SurfaceInfo)));
     EXPECT_EQ(strides.at("cells.p00"), static_cast<int>(sizeof(ParametricCell)));
+    EXPECT_EQ(strides.at("textures.flags"), static_cast<int>(sizeof(TextureInfo)));
+    EXPECT_EQ(strides.at("patterns.colors"), static_cast<int>(sizeof(PatternInfo)));
+    EXPECT_EQ(strides.at("texels"), static_cast<int>(sizeof(uint)));
+    EXPECT_EQ(strides.at("perlin_permutation"), static_cast<int>(sizeof(int)));
+}
+
+// Every block the shader declares sits at the binding layout.h names for it (the host binds
+// its buffers by those names), and every binding is used.
+TEST(Layout, BlockBindingsAreLayoutConstants) {
+    const std::map<std::string, int> expected = {
+        {"FrameBlock", int(BINDING_FRAME)},         {"PrimitiveBlock", int(BINDING_PRIMITIVES)},
+        {"MaterialBlock", int(BINDING_MATERIALS)},  {"LightBlock", int(BINDING_LIGHTS)},
+        {"OutputBlock", int(BINDING_OUTPUT)},       {"NodeBlock", int(BINDING_NODES)},
+        {"PatchBlock", int(BINDING_PATCHES)},       {"SurfaceBlock", int(BINDING_SURFACES)},
+        {"CellBlock", int(BINDING_CELLS)},          {"TextureBlock", int(BINDING_TEXTURES)},
+        {"TexelBlock", int(BINDING_TEXELS)},        {"PatternBlock", int(BINDING_PATTERNS)},
+        {"PermutationBlock", int(BINDING_PERMUTATION)},
+        {"BandBlock", -1}};  // push constants: no binding
+    EXPECT_EQ(reflect_block_bindings(full_tree(), "trace.comp"), expected);
 }
 
 }  // namespace

@@ -380,6 +380,29 @@ TEST_F(View, SceneEditsReloadAndBrokenScenesKeepTheLastGoodPicture) {
     EXPECT_NE(dump().bytes, before.bytes);
 }
 
+// A texture is part of the scene: rewriting the image reloads the scene, and the picture is
+// `lancer render` of the scene with the new image.
+TEST_F(View, TextureEditsReloadTheScene) {
+    auto write_texture = [&](std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+        write_png((dir / "tex.png").string(), Rgb8Image{1, 1, {r, g, b}});
+    };
+    write_texture(0, 200, 0);
+    std::string scene = scene_text(file_camera());
+    const std::string red = "color = [0.9, 0.1, 0.1]";
+    scene.replace(scene.find(red), red.size(), "texture = \"tex.png\"");
+    test::write_file(dir / "scene.toml", scene);
+    start();
+    write_texture(0, 0, 230);
+    ASSERT_TRUE(wait_for_count("reload: tex.png changed: scene reloaded", 1)) << log();
+    ASSERT_TRUE(wait_for_count("view: refined", 2)) << log();
+    auto r = test::run_lancer("render " + (dir / "scene.toml").string() + " -q -o " + (dir / "blue.png").string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    Rgb8Image rendered = read_png((dir / "blue.png").string());
+    expect_like(dump(), rendered, "texture-reloaded");
+    const std::uint8_t* sphere = rendered.at(37, 20);  // on the textured sphere
+    EXPECT_GT(sphere[2], sphere[1]) << "the new, blue texture is not shown";
+}
+
 TEST_F(View, ShaderEditsReloadAndCompileErrorsKeepTheLastGoodPicture) {
     copy_shaders();
     start({"--shaders", "shaders"});

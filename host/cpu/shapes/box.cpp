@@ -50,4 +50,25 @@ std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, 
     return SurfaceHit{t, face_normal(b, ray.origin + t * ray.dir)};
 }
 
+// Each face shows the whole image, upright as seen from outside: side faces with v up (+y), the
+// top with v toward +z, the bottom with v toward -z (the table in docs/scene-format.md).
+glm::dvec2 texture_uv(const Box& b, const dvec3& p, const dvec3& face_normal) {
+    struct Direction {
+        int axis;
+        double sign;
+    };
+    // Fraction of the box's extent along a direction, 0 at the face it starts from.
+    auto along = [&](Direction d) {
+        double extent = b.max[d.axis] - b.min[d.axis];
+        return d.sign > 0.0 ? (p[d.axis] - b.min[d.axis]) / extent : (b.max[d.axis] - p[d.axis]) / extent;
+    };
+    Direction u{0, 1.0}, v{1, 1.0};
+    if (face_normal.x > 0.5) u = {2, 1.0};
+    else if (face_normal.x < -0.5) u = {2, -1.0};
+    else if (face_normal.z > 0.5) u = {0, -1.0};
+    else if (face_normal.y > 0.5) v = {2, 1.0};
+    else if (face_normal.y < -0.5) v = {2, -1.0};
+    return {along(u), along(v)};
+}
+
 }  // namespace lancer::cpu

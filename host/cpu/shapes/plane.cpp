@@ -13,4 +13,10 @@ std::optional<SurfaceHit> intersect(const Plane& p, const Ray& ray, double t_min
     return SurfaceHit{t, p.normal};
 }
 
+// Planar: world distances along the plane's texture axes from its point.
+glm::dvec2 texture_uv(const Plane& p, const dvec3& point) {
+    dvec3 d = point - p.point;
+    return {glm::dot(d, p.u_axis), glm::dot(d, p.v_axis)};
+}
+
 }  // namespace lancer::cpu

@@ -32,6 +32,13 @@ inline std::optional<SurfaceHit> intersect(const ParametricObject& p, const Ray&
     return intersect(p.surface, ray, t_min, t_max);
 }
 
+// Texture coordinates (u, v) at a surface point p, for shapes whose intersection does not already
+// give them (docs/scene-format.md, "Texture mapping"). Rectangles, Bezier and parametric
+// surfaces use the (u, v) of their hits.
+glm::dvec2 texture_uv(const Sphere& s, const dvec3& p);
+glm::dvec2 texture_uv(const Plane& p, const dvec3& point);
+glm::dvec2 texture_uv(const Box& b, const dvec3& p, const dvec3& face_normal);
+
 // Bicubic (rational) Bezier patches, exactly, by resultant + generalized eigenvalues (bezier.cpp).
 // The ray's direction need not be unit length: t is in units of it. intersect_all returns every
 // distinct hit in (t_min, t_max), nearest first; intersect the nearest, with uv = (u, v) and the

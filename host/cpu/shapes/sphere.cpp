@@ -1,7 +1,9 @@
 // Ray/sphere: |o + t d - c|^2 = r^2 with |d| = 1.
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include "cpu/shapes/shapes.hpp"
 
@@ -29,6 +31,15 @@ std::optional<SurfaceHit> intersect(const Sphere& s, const Ray& ray, double t_mi
         return std::nullopt;
     }
     return SurfaceHit{t, (ray.origin + t * ray.dir - s.center) / s.radius};
+}
+
+// Longitude and latitude in the sphere's own frame: u = 0.5 (the middle of the image) faces -z,
+// u grows toward +x, v from 0 at the south pole (-y) to 1 at the north pole.
+glm::dvec2 texture_uv(const Sphere& s, const dvec3& p) {
+    dvec3 d = glm::transpose(s.orientation) * ((p - s.center) / s.radius);
+    double longitude = (d.x == 0.0 && d.z == 0.0) ? 0.0 : std::atan2(d.x, -d.z);
+    double latitude = std::asin(std::clamp(d.y, -1.0, 1.0));
+    return {0.5 + longitude / (2.0 * M_PI), 0.5 + latitude / M_PI};
 }
 
 }  // namespace lancer::cpu

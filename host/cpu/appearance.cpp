@@ -1,0 +1,24 @@
+#include "cpu/appearance.hpp"
+
+#include <glm/geometric.hpp>
+
+#include "cpu/pattern.hpp"
+#include "cpu/texture.hpp"
+
+namespace lancer::cpu {
+
+Appearance appearance_at(const Material& m, const Hit& hit, const dvec3& p, const dvec3& n) {
+    Appearance a{pigment_at(m, p), n};
+    if (m.texture) a.pigment *= texture_color(*m.texture, texture_uv(hit, p));
+    if (m.pattern) a.pigment *= pattern_color(*m.pattern, p);
+    if (m.bump) a.normal = bumped_normal(*m.bump, p, n);
+    return a;
+}
+
+dvec3 bounce_direction(const dvec3& d, const dvec3& shading_normal, const dvec3& geometric_normal) {
+    dvec3 r = d - 2.0 * glm::dot(d, shading_normal) * shading_normal;
+    double below = glm::dot(r, geometric_normal);
+    return below < 0.0 ? r - 2.0 * below * geometric_normal : r;
+}
+
+}  // namespace lancer::cpu

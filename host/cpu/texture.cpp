@@ -1,0 +1,83 @@
+#include "cpu/texture.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cpu/shapes/shapes.hpp"
+
+namespace lancer::cpu {
+
+glm::dvec2 texture_uv(const Hit& hit, const dvec3& p) {
+    struct Mapping {
+        const Hit& hit;
+        const dvec3& p;
+        glm::dvec2 operator()(const Sphere& s) const { return cpu::texture_uv(s, p); }
+        glm::dvec2 operator()(const Plane& plane) const { return cpu::texture_uv(plane, p); }
+        glm::dvec2 operator()(const Box& b) const { return cpu::texture_uv(b, p, hit.normal); }
+        glm::dvec2 operator()(const Rectangle&) const { return hit.uv; }         // (a, b) along the edges
+        glm::dvec2 operator()(const BezierSurface&) const { return hit.uv; }     // each patch's (u, v)
+        glm::dvec2 operator()(const ParametricObject& o) const {                  // the domain, as [0, 1]^2
+            const auto& s = o.surface;
+            return {(hit.uv.x - s.u0) / (s.u1 - s.u0), (hit.uv.y - s.v0) / (s.v1 - s.v0)};
+        }
+    };
+    return std::visit(Mapping{hit, p}, hit.object->shape);
+}
+
+namespace {
+
+double decode_srgb(std::uint8_t byte) {
+    double c = byte / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+// A texel index along one axis of `size` texels: wrapped around, or held at the edge.
+int wrap_index(long long i, int size, TextureWrap wrap) {
+    if (wrap == TextureWrap::Clamp) return static_cast<int>(std::clamp<long long>(i, 0, size - 1));
+    long long m = i % size;
+    return static_cast<int>(m < 0 ? m + size : m);
+}
+
+dvec3 texel(const TextureImage& image, int x, int y) {
+    const std::uint8_t* t = &image.rgba[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4];
+    return {decode_srgb(t[0]), decode_srgb(t[1]), decode_srgb(t[2])};
+}
+
+// An image coordinate in [0, 1] (repeat: its fractional part; clamp: held to the image).
+double image_coordinate(double s, TextureWrap wrap) {
+    return wrap == TextureWrap::Repeat ? s - std::floor(s) : std::clamp(s, 0.0, 1.0);
+}
+
+}  // namespace
+
+dvec3 texture_color(const ImageTexture& texture, const glm::dvec2& uv) {
+    const TextureImage& image = *texture.image;
+    // Surface (u, v) -> image (s, t): undo the offset, the rotation and the scale, in that order.
+    double angle = texture.rotate_deg * M_PI / 180.0;
+    glm::dvec2 d = uv - texture.offset;
+    glm::dvec2 turned(std::cos(angle) * d.x + std::sin(angle) * d.y, -std::sin(angle) * d.x + std::cos(angle) * d.y);
+    glm::dvec2 st = turned / texture.scale;
+    double s = image_coordinate(st.x, texture.wrap_u);
+    double t = image_coordinate(st.y, texture.wrap_v);
+    // Texel (i, j) covers [i, i + 1] x [j, j + 1] in these units; row 0 is the top (t = 1).
+    double x = s * image.width;
+    double y = (1.0 - t) * image.height;
+    if (texture.filter == TextureFilter::Nearest) {
+        auto i = static_cast<long long>(std::floor(x));
+        auto j = static_cast<long long>(std::floor(y));
+        return texel(image, wrap_index(i, image.width, texture.wrap_u), wrap_index(j, image.height, texture.wrap_v));
+    }
+    // Bilinear between the four texels whose centres surround (x, y).
+    x -= 0.5;
+    y -= 0.5;
+    double fx = x - std::floor(x), fy = y - std::floor(y);
+    auto i0 = static_cast<long long>(std::floor(x));
+    auto j0 = static_cast<long long>(std::floor(y));
+    int xa = wrap_index(i0, image.width, texture.wrap_u), xb = wrap_index(i0 + 1, image.width, texture.wrap_u);
+    int ya = wrap_index(j0, image.height, texture.wrap_v), yb = wrap_index(j0 + 1, image.height, texture.wrap_v);
+    dvec3 top = (1.0 - fx) * texel(image, xa, ya) + fx * texel(image, xb, ya);
+    dvec3 bottom = (1.0 - fx) * texel(image, xa, yb) + fx * texel(image, xb, yb);
+    return (1.0 - fy) * top + fy * bottom;
+}
+
+}  // namespace lancer::cpu

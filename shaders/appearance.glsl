@@ -1,0 +1,46 @@
+// What a material looks like at a hit: its pigment (colour or checker, times texture, times
+// pattern) and its shading normal (tilted by a bump). Twin of host/cpu/appearance.cpp.
+#ifndef LANCER_APPEARANCE_GLSL
+#define LANCER_APPEARANCE_GLSL
+
+// Fixed when the pipeline is created: scenes without textures or patterns compile their code
+// out (lavapipe pays for dead code; see docs/performance.md).
+layout(constant_id = SPEC_HAS_TEXTURES) const bool SCENE_HAS_TEXTURES = true;
+layout(constant_id = SPEC_HAS_PATTERNS) const bool SCENE_HAS_PATTERNS = true;
+
+#include "pattern.glsl"
+#include "texture.glsl"
+
+struct Appearance {
+    vec3 pigment;
+    vec3 normal;  // unit, the geometric normal unless a bump tilts it
+};
+
+// n: the unit geometric normal, already facing the viewer.
+Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
+    Appearance a = Appearance(material_pigment(m, p), n);
+    if (SCENE_HAS_TEXTURES && m.texture_map != NO_MAP) a.pigment *= texture_color(m.texture_map, texture_uv(hit, p));
+    if (!SCENE_HAS_PATTERNS) return a;
+    // The colour pattern, then the bump, through one evaluation site: inlined twice, the noise
+    // code made every scene with patterns slower (lavapipe), not only where they are seen.
+    [[dont_unroll]] for (uint k = 0u; k < 2u; ++k) {
+        uint index = k == 0u ? m.color_pattern : m.bump_pattern;
+        if (index == NO_MAP) continue;
+        PatternInfo pat = patterns[index];
+        vec4 f = pattern_value(pat, pattern_space(pat, p));
+        if (k == 0u) a.pigment *= ramp_color(pat, f.w);
+        else a.normal = bumped_normal(pat, f.xyz, n);
+    }
+    return a;
+}
+
+// The mirror direction of d about the shading normal, turned back above the geometric surface
+// if a bump tilted it below (it would otherwise start inside the object).
+vec3 bounce_direction(vec3 d, vec3 shading_normal, vec3 n) {
+    vec3 r = reflect(d, shading_normal);
+    if (!SCENE_HAS_PATTERNS) return r;
+    float below = dot(r, n);
+    return below < 0.0 ? r - 2.0 * below * n : r;
+}
+
+#endif
