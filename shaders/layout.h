@@ -35,6 +35,12 @@ LANCER_CONST SPEC_HAS_BEZIER = 0;
 LANCER_CONST SPEC_HAS_BVH = 1;
 LANCER_CONST SPEC_OUTPUT_HITS = 2;  // debug/test variant: write first hits instead of colours
 LANCER_CONST SPEC_CHECK_LOOP_LIMIT = 3;  // lavapipe: detect invocations its loop limit cut short (trace.comp)
+// Optional shading features (trace.comp, shade.glsl): compiled out of scenes that lack them.
+LANCER_CONST SPEC_HAS_TRANSPARENCY = 4;  // a material with transmission > 0: the ray tree, media, tinted shadows
+LANCER_CONST SPEC_HAS_AREA_LIGHTS = 5;
+LANCER_CONST SPEC_HAS_SPOT_LIGHTS = 6;
+LANCER_CONST SPEC_HAS_FALLOFF = 7;     // a light with distance fall-off
+LANCER_CONST SPEC_HAS_BLINN = 8;       // a material with highlight = "blinn"
 
 // Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
 LANCER_CONST WORKGROUP_X = 8;
@@ -52,6 +58,15 @@ LANCER_CONST SHAPE_PARAMETRIC = 5; // data = index of its ParametricCell
 // Material::pattern values.
 LANCER_CONST PATTERN_SOLID = 0;
 LANCER_CONST PATTERN_CHECKER = 1;
+
+// Material::highlight values.
+LANCER_CONST HIGHLIGHT_PHONG = 0;
+LANCER_CONST HIGHLIGHT_BLINN = 1;
+
+// Light::type values.
+LANCER_CONST LIGHT_POINT = 0;
+LANCER_CONST LIGHT_SPOT = 1;
+LANCER_CONST LIGHT_AREA = 2;
 
 struct Primitive {
     uint type;
@@ -112,11 +127,27 @@ struct Material {
     uint pattern;
     float checker_size;
     uint reserved;
+
+    // optics: refraction and the highlight model
+    vec4 transmission;  // rgb = T, the fraction passed per channel (all 0: opaque); w = ior
+    vec4 absorption;    // rgb = Beer-Lambert coefficient per unit distance inside; w unused
+    uint highlight;     // HIGHLIGHT_PHONG or HIGHLIGHT_BLINN
+    uint optics_reserved0;
+    uint optics_reserved1;
+    uint optics_reserved2;
 };
 
 struct Light {
-    vec4 position;  // xyz
-    vec4 color;     // rgb
+    vec4 position;   // xyz = where it is (area light: the rectangle's centre); w = fall-off distance, 0 = none
+    vec4 color;      // rgb
+    vec4 direction;  // spot: xyz = unit axis of the cone
+    vec4 spot;       // spot: x = cos(outer_angle), y = cos(inner_angle), z = tightness
+    vec4 edge_u;     // area: xyz = first edge (whole length)
+    vec4 edge_v;     // area: xyz = second edge
+    uint type;       // LIGHT_POINT, LIGHT_SPOT or LIGHT_AREA
+    uint samples;    // area: n, for n x n shadow samples
+    uint jitter;     // area: 1 = each sample at a hashed place in its cell, 0 = at the cell's centre
+    uint reserved;
 };
 
 // Per-render constants (a uniform buffer). The camera is given as the vectors from which the
@@ -156,8 +187,8 @@ struct BandParams {
 
 #ifdef __cplusplus
 static_assert(sizeof(Primitive) == 64);
-static_assert(sizeof(Material) == 64);
-static_assert(sizeof(Light) == 32);
+static_assert(sizeof(Material) == 112);
+static_assert(sizeof(Light) == 112);
 static_assert(sizeof(BvhNode) == 48);
 static_assert(sizeof(PatchLeaf) == 288);
 static_assert(sizeof(SurfaceInfo) == 64);

@@ -1,8 +1,12 @@
-// Phong shading at a hit: ambient + per unshadowed light (diffuse + specular).
-// The CPU reference writes the same model in host/cpu/shading.cpp; the README's scene
-// reference states it as a formula.
+// Local shading at a hit: ambient + per light (or area light sample) that the point sees,
+// diffuse + specular. The CPU reference writes the same model in host/cpu/tracer.cpp; the
+// scene format reference (docs/scene-format.md, "Shading model") states it as a formula.
 #ifndef LANCER_SHADE_GLSL
 #define LANCER_SHADE_GLSL
+
+#include "lights.glsl"
+
+layout(constant_id = SPEC_HAS_BLINN) const bool SCENE_HAS_BLINN = true;
 
 vec3 material_pigment(Material m, vec3 p) {
     if (m.pattern == PATTERN_CHECKER) {
@@ -15,23 +19,47 @@ vec3 material_pigment(Material m, vec3 p) {
     return m.color.rgb;
 }
 
-// n faces the viewer; view_dir is the incoming ray direction.
-vec3 shade_local(Material m, vec3 p, vec3 n, vec3 view_dir, inout float rays) {
+// Adds the diffuse and specular light from point q of `light` (one of `count` samples) at p, if
+// q is in front of the surface and p sees it. Shadow rays start at `origin`, just off the
+// surface, inside `media` (transparent scenes: objects in the way tint rather than block).
+void add_light(inout vec3 color, Material m, vec3 pigment, vec3 p, vec3 n, vec3 view_dir, vec3 mirrored, vec3 origin,
+               Light light, vec3 q, uint count, Media media, inout float rays) {
+    vec3 l = normalize(q - p);
+    float n_dot_l = dot(n, l);
+    if (n_dot_l <= 0.0) return;  // light behind the surface: no shadow ray needed
+    rays += 1.0;
+    vec3 intensity = light_intensity(light, q, p, count);
+    if (SCENE_HAS_TRANSPARENCY) {
+        intensity *= transmittance(p, origin, q, media);
+    } else {
+        vec3 to_light = q - origin;
+        float dist = length(to_light);
+        if (occluded(Ray(origin, to_light / dist), 0.0, dist)) return;
+    }
+    color += m.phong.y * n_dot_l * pigment * intensity;
+    float highlight = SCENE_HAS_BLINN && m.highlight == HIGHLIGHT_BLINN ? dot(n, normalize(l - view_dir)) : dot(mirrored, l);
+    if (highlight > 0.0 && m.phong.z > 0.0) color += m.phong.z * pow(highlight, m.phong.w) * intensity;
+}
+
+// n faces the viewer; view_dir is the incoming ray direction; `media` holds the transparent
+// materials the incoming ray is inside; `seed` places area light samples (lights.glsl).
+vec3 shade_local(Material m, vec3 p, vec3 n, vec3 view_dir, Media media, uint seed, inout float rays) {
     vec3 pigment = material_pigment(m, p);
+    if (SCENE_HAS_TRANSPARENCY) pigment *= vec3(1.0) - m.transmission.rgb;  // the part that is not transmitted
     vec3 color = m.phong.x * pigment * frame.ambient.rgb;
     vec3 mirrored = reflect(view_dir, n);
     vec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
     for (uint i = 0u; i < frame.light_count; ++i) {
-        vec3 l = normalize(lights[i].position.xyz - p);
-        float n_dot_l = dot(n, l);
-        if (n_dot_l <= 0.0) continue;  // light behind the surface: no shadow ray needed
-        rays += 1.0;
-        vec3 to_light = lights[i].position.xyz - origin;
-        float dist = length(to_light);
-        if (occluded(Ray(origin, to_light / dist), 0.0, dist)) continue;
-        color += m.phong.y * n_dot_l * pigment * lights[i].color.rgb;
-        float r_dot_l = dot(mirrored, l);
-        if (r_dot_l > 0.0 && m.phong.z > 0.0) color += m.phong.z * pow(r_dot_l, m.phong.w) * lights[i].color.rgb;
+        Light light = lights[i];
+        if (SCENE_HAS_AREA_LIGHTS && light.type == LIGHT_AREA) {
+            uint count = light_sample_count(light);
+            for (uint s = 0u; s < count; ++s) {
+                vec3 q = light_sample_position(light, i, s, seed);
+                add_light(color, m, pigment, p, n, view_dir, mirrored, origin, light, q, count, media, rays);
+            }
+        } else {
+            add_light(color, m, pigment, p, n, view_dir, mirrored, origin, light, light.position.xyz, 1u, media, rays);
+        }
     }
     return color;
 }

@@ -151,6 +151,11 @@ gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
     gpu::FrameParams frame = gpu::pack_frame(scene, packed);
     gpu::PipelineVariant variant{!packed.patches.empty(), !packed.nodes.empty()};
     variant.check_loop_limit = context_->info().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
+    variant.has_transparency = packed.features.transparency;
+    variant.has_area_lights = packed.features.area_lights;
+    variant.has_spot_lights = packed.features.spot_lights;
+    variant.has_falloff = packed.features.falloff;
+    variant.has_blinn = packed.features.blinn;
     upload(primitives_, primitives_shadow_, std::move(packed.primitives));
     upload(nodes_, nodes_shadow_, std::move(packed.nodes));
     upload(patches_, patches_shadow_, std::move(packed.patches));

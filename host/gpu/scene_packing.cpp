@@ -92,6 +92,33 @@ Material pack_material(const lancer::Material& m) {
     g.reflection = float(m.reflection);
     g.pattern = m.checker ? PATTERN_CHECKER : PATTERN_SOLID;
     g.checker_size = m.checker ? float(m.checker->size) : 1.0f;
+    g.transmission = v4(m.transmission, m.ior);
+    g.absorption = v4(m.absorption);
+    g.highlight = m.highlight == Highlight::Blinn ? HIGHLIGHT_BLINN : HIGHLIGHT_PHONG;
+    return g;
+}
+
+Light pack_light(const lancer::Light& l) {
+    constexpr double kDegree = M_PI / 180.0;
+    Light g{};
+    g.position = v4(l.position, l.falloff == Falloff::InverseSquare ? l.falloff_distance : 0.0);
+    g.color = v4(l.color);
+    switch (l.type) {
+        case LightType::Point: g.type = LIGHT_POINT; break;
+        case LightType::Spot:
+            g.type = LIGHT_SPOT;
+            g.direction = v4(l.direction);
+            g.spot = vec4(float(std::cos(l.outer_angle_deg * kDegree)), float(std::cos(l.inner_angle_deg * kDegree)),
+                          float(l.tightness), 0.0f);
+            break;
+        case LightType::Area:
+            g.type = LIGHT_AREA;
+            g.edge_u = v4(l.edge_u);
+            g.edge_v = v4(l.edge_v);
+            g.samples = static_cast<uint>(l.samples);
+            g.jitter = l.jitter ? 1u : 0u;
+            break;
+    }
     return g;
 }
 
@@ -144,7 +171,16 @@ PackedScene pack_scene(const Scene& scene, Acceleration acceleration) {
         packed.nodes.push_back(g);
     }
     for (const lancer::Material& m : scene.materials) packed.materials.push_back(pack_material(m));
-    for (const PointLight& l : scene.lights) packed.lights.push_back({v4(l.position), v4(l.color)});
+    for (const lancer::Light& l : scene.lights) packed.lights.push_back(pack_light(l));
+    for (const lancer::Material& m : scene.materials) {
+        packed.features.transparency |= m.transparent();
+        packed.features.blinn |= m.highlight == Highlight::Blinn;
+    }
+    for (const lancer::Light& l : scene.lights) {
+        packed.features.area_lights |= l.type == LightType::Area;
+        packed.features.spot_lights |= l.type == LightType::Spot;
+        packed.features.falloff |= l.falloff != Falloff::None;
+    }
     return packed;
 }
 

@@ -10,6 +10,15 @@
 
 namespace lancer::gpu {
 
+// The optional shading features a scene uses: the pipeline compiles out the others.
+struct ShadingFeatures {
+    bool transparency = false;
+    bool area_lights = false;
+    bool spot_lights = false;
+    bool falloff = false;
+    bool blinn = false;
+};
+
 struct PackedScene {
     std::vector<Primitive> primitives;
     std::vector<BvhNode> nodes;
@@ -19,6 +28,7 @@ struct PackedScene {
     std::vector<Material> materials;
     std::vector<Light> lights;
     uint unbounded_count = 0;
+    ShadingFeatures features;
 };
 
 PackedScene pack_scene(const Scene& scene, Acceleration acceleration = Acceleration::Bvh);

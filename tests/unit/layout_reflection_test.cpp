@@ -83,8 +83,18 @@ TEST(Layout, HostOffsetsMatchGlslangReflection) {
     EXPECT_OFFSET("materials.reflection", Material, reflection);
     EXPECT_OFFSET("materials.pattern", Material, pattern);
     EXPECT_OFFSET("materials.checker_size", Material, checker_size);
+    EXPECT_OFFSET("materials.transmission", Material, transmission);
+    EXPECT_OFFSET("materials.absorption", Material, absorption);
+    EXPECT_OFFSET("materials.highlight", Material, highlight);
     EXPECT_OFFSET("lights.position", Light, position);
     EXPECT_OFFSET("lights.color", Light, color);
+    EXPECT_OFFSET("lights.direction", Light, direction);
+    EXPECT_OFFSET("lights.spot", Light, spot);
+    EXPECT_OFFSET("lights.edge_u", Light, edge_u);
+    EXPECT_OFFSET("lights.edge_v", Light, edge_v);
+    EXPECT_OFFSET("lights.type", Light, type);
+    EXPECT_OFFSET("lights.samples", Light, samples);
+    EXPECT_OFFSET("lights.jitter", Light, jitter);
     EXPECT_OFFSET("band.y0", BandParams, y0);
     EXPECT_OFFSET("band.rows", BandParams, rows);
     EXPECT_OFFSET("band.sample_first", BandParams, sample_first);
