@@ -105,8 +105,13 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media) {
         Ray ray = Ray(origin, to_light / dist);
         Nearest best;
         uint medium = innermost(media);
-        if (!trace_scene(ray, 0.0, dist, false, best)) return through * absorption_over(medium, length(q - from));
-        if (k == MAX_SHADOW_CROSSINGS) break;
+        // Without transparent materials any hit blocks the light, so the first one found will do.
+        // (One call of trace_scene for both cases: each call site inlines the whole intersection
+        // code, which lavapipe then compiles, even where it is dead.)
+        if (!trace_scene(ray, 0.0, dist, !SCENE_HAS_TRANSPARENCY, best)) {
+            return SCENE_HAS_TRANSPARENCY ? through * absorption_over(medium, length(q - from)) : through;
+        }
+        if (!SCENE_HAS_TRANSPARENCY || k == MAX_SHADOW_CROSSINGS) break;
         uint mat = primitives[best.prim].material;
         Material m = materials[mat];
         if (!is_transparent(m)) break;

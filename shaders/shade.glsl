@@ -21,21 +21,16 @@ vec3 material_pigment(Material m, vec3 p) {
 
 // Adds the diffuse and specular light from point q of `light` (one of `count` samples) at p, if
 // q is in front of the surface and p sees it. Shadow rays start at `origin`, just off the
-// surface, inside `media` (transparent scenes: objects in the way tint rather than block).
+// surface, inside `media` (transparent objects in the way tint rather than block).
 void add_light(inout vec3 color, Material m, vec3 pigment, vec3 p, vec3 n, vec3 view_dir, vec3 mirrored, vec3 origin,
                Light light, vec3 q, uint count, Media media, inout float rays) {
     vec3 l = normalize(q - p);
     float n_dot_l = dot(n, l);
     if (n_dot_l <= 0.0) return;  // light behind the surface: no shadow ray needed
     rays += 1.0;
-    vec3 intensity = light_intensity(light, q, p, count);
-    if (SCENE_HAS_TRANSPARENCY) {
-        intensity *= transmittance(p, origin, q, media);
-    } else {
-        vec3 to_light = q - origin;
-        float dist = length(to_light);
-        if (occluded(Ray(origin, to_light / dist), 0.0, dist)) return;
-    }
+    vec3 through = transmittance(p, origin, q, media);
+    if (max3(through) <= 0.0) return;  // in the shadow of an opaque surface
+    vec3 intensity = light_intensity(light, q, p, count) * through;
     color += m.phong.y * n_dot_l * pigment * intensity;
     float highlight = SCENE_HAS_BLINN && m.highlight == HIGHLIGHT_BLINN ? dot(n, normalize(l - view_dir)) : dot(mirrored, l);
     if (highlight > 0.0 && m.phong.z > 0.0) color += m.phong.z * pow(highlight, m.phong.w) * intensity;
@@ -51,14 +46,12 @@ vec3 shade_local(Material m, vec3 p, vec3 n, vec3 view_dir, Media media, uint se
     vec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
     for (uint i = 0u; i < frame.light_count; ++i) {
         Light light = lights[i];
-        if (SCENE_HAS_AREA_LIGHTS && light.type == LIGHT_AREA) {
-            uint count = light_sample_count(light);
-            for (uint s = 0u; s < count; ++s) {
-                vec3 q = light_sample_position(light, i, s, seed);
-                add_light(color, m, pigment, p, n, view_dir, mirrored, origin, light, q, count, media, rays);
-            }
-        } else {
-            add_light(color, m, pigment, p, n, view_dir, mirrored, origin, light, light.position.xyz, 1u, media, rays);
+        // One call site (each inlines the shadow ray's whole intersection code): a point or spot
+        // light is one sample at its position.
+        uint count = light_sample_count(light);
+        for (uint s = 0u; s < count; ++s) {
+            vec3 q = light_sample_position(light, i, s, seed);
+            add_light(color, m, pigment, p, n, view_dir, mirrored, origin, light, q, count, media, rays);
         }
     }
     return color;
