@@ -19,26 +19,38 @@ vec3 material_pigment(Material m, vec3 p) {
     return m.color.rgb;
 }
 
+// On a transparent surface, a light sample whose unshadowed light would add less than this to the
+// pixel is skipped, shadow ray and all: it cannot change an 8-bit result. Glass is mostly
+// highlight, and far from its peak a highlight is nothing, but its shadow ray would cross the
+// glass many times.
+const float MIN_LIGHT = 1.0 / 65536.0;
+
 // Adds the diffuse and specular light from point q of `light` (one of `count` samples) at p, if
 // q is in front of the surface and p sees it. Shadow rays start at `origin`, just off the
-// surface, inside `media` (transparent objects in the way tint rather than block).
+// surface, inside `media` (transparent objects in the way tint rather than block). `scale` is
+// what the local colour will be multiplied by on its way to the pixel.
 void add_light(inout vec3 color, Material m, vec3 pigment, vec3 p, vec3 n, vec3 view_dir, vec3 mirrored, vec3 origin,
-               Light light, vec3 q, uint count, Media media, inout float rays) {
+               Light light, vec3 q, uint count, Media media, vec3 scale, inout float rays) {
     vec3 l = normalize(q - p);
     float n_dot_l = dot(n, l);
     if (n_dot_l <= 0.0) return;  // light behind the surface: no shadow ray needed
+    vec3 diffuse = m.phong.y * n_dot_l * pigment;
+    float highlight = SCENE_HAS_BLINN && m.highlight == HIGHLIGHT_BLINN ? dot(n, normalize(l - view_dir)) : dot(mirrored, l);
+    float shine = highlight > 0.0 && m.phong.z > 0.0 ? m.phong.z * pow(highlight, m.phong.w) : 0.0;
+    vec3 intensity = light_intensity(light, q, p, count);
+    if (SCENE_HAS_TRANSPARENCY && is_transparent(m) && max3(scale * (diffuse + shine) * intensity) < MIN_LIGHT) return;
     rays += 1.0;
     vec3 through = transmittance(p, origin, q, media);
     if (max3(through) <= 0.0) return;  // in the shadow of an opaque surface
-    vec3 intensity = light_intensity(light, q, p, count) * through;
-    color += m.phong.y * n_dot_l * pigment * intensity;
-    float highlight = SCENE_HAS_BLINN && m.highlight == HIGHLIGHT_BLINN ? dot(n, normalize(l - view_dir)) : dot(mirrored, l);
-    if (highlight > 0.0 && m.phong.z > 0.0) color += m.phong.z * pow(highlight, m.phong.w) * intensity;
+    intensity *= through;
+    color += diffuse * intensity;
+    if (shine > 0.0) color += shine * intensity;
 }
 
 // n faces the viewer; view_dir is the incoming ray direction; `media` holds the transparent
-// materials the incoming ray is inside; `seed` places area light samples (lights.glsl).
-vec3 shade_local(Material m, vec3 p, vec3 n, vec3 view_dir, Media media, uint seed, inout float rays) {
+// materials the incoming ray is inside; `seed` places area light samples (lights.glsl); `scale`
+// is what the result will be multiplied by on its way to the pixel.
+vec3 shade_local(Material m, vec3 p, vec3 n, vec3 view_dir, Media media, uint seed, vec3 scale, inout float rays) {
     vec3 pigment = material_pigment(m, p);
     if (SCENE_HAS_TRANSPARENCY) pigment *= vec3(1.0) - m.transmission.rgb;  // the part that is not transmitted
     vec3 color = m.phong.x * pigment * frame.ambient.rgb;
@@ -51,7 +63,7 @@ vec3 shade_local(Material m, vec3 p, vec3 n, vec3 view_dir, Media media, uint se
         uint count = light_sample_count(light);
         for (uint s = 0u; s < count; ++s) {
             vec3 q = light_sample_position(light, i, s, seed);
-            add_light(color, m, pigment, p, n, view_dir, mirrored, origin, light, q, count, media, rays);
+            add_light(color, m, pigment, p, n, view_dir, mirrored, origin, light, q, count, media, scale, rays);
         }
     }
     return color;

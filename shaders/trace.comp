@@ -73,8 +73,8 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
                 from = p;
                 goes_on = ++passes <= MAX_PASS_THROUGH;
             } else {
-                vec3 local = shade_local(m, p, n, ray.dir, media, hash_u32(seed + depth), rays);
-                color += weight * (1.0 - m.reflection) * local;
+                vec3 scale = weight * (1.0 - m.reflection);
+                color += scale * shade_local(m, p, n, ray.dir, media, hash_u32(seed + depth), scale, rays);
                 vec3 reflected_weight = weight * m.reflection;
                 vec3 refracted_weight = vec3(0.0);
                 vec3 refracted_dir = ray.dir;

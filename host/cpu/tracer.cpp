@@ -20,6 +20,9 @@ constexpr double kMinWeight = 1.0 / 1024.0;
 constexpr std::size_t kPendingSize = 8;
 // A path passes through at most this many surfaces that do not show (same medium both sides).
 constexpr int kMaxPassThrough = 16;
+// On a transparent surface, a light sample that would add less than this to the pixel unshadowed
+// is skipped, shadow ray and all (as the shader): mostly highlights far from their peak.
+constexpr double kMinLight = 1.0 / 65536.0;
 // A shadow ray passes through at most this many transparent surfaces; more block the light.
 constexpr int kMaxShadowCrossings = 16;
 
@@ -167,7 +170,7 @@ double Tracer::ior_of(const Media& media) const {
 }
 
 dvec3 Tracer::shade_local(const Material& m, const dvec3& p, const dvec3& n, const dvec3& view_dir, const Media& media,
-                          std::uint32_t seed, double& rays) const {
+                          std::uint32_t seed, const dvec3& scale, double& rays) const {
     // Ambient and diffuse light the part of the surface that does not transmit; the highlight
     // stays whole, so glass keeps its highlights.
     dvec3 pigment = pigment_at(m, p) * (1.0 - m.transmission);
@@ -182,19 +185,24 @@ dvec3 Tracer::shade_local(const Material& m, const dvec3& p, const dvec3& n, con
             dvec3 l = glm::normalize(q - p);
             double n_dot_l = glm::dot(n, l);
             if (n_dot_l <= 0.0) continue;  // the light (sample) is behind the surface
-            rays += 1.0;
+            dvec3 diffuse = m.diffuse * n_dot_l * pigment;
+            double highlight = m.highlight == Highlight::Blinn ? glm::dot(n, glm::normalize(l - view_dir))
+                                                              : glm::dot(mirrored, l);
+            double shine = highlight > 0.0 && m.specular > 0.0 ? m.specular * std::pow(highlight, m.shininess) : 0.0;
             dvec3 intensity = light_intensity(light, q, p, count);
+            dvec3 unshadowed = scale * (diffuse + shine) * intensity;
+            if (m.transparent() && std::max({unshadowed.r, unshadowed.g, unshadowed.b}) < kMinLight) continue;
+            rays += 1.0;
             if (has_transparency_) {
                 intensity *= transmittance(p, origin, q, media);
+                if (intensity == dvec3(0.0)) continue;
             } else {
                 dvec3 to_light = q - origin;
                 double dist = glm::length(to_light);
                 if (occluded({origin, to_light / dist}, 0.0, dist)) continue;
             }
-            color += m.diffuse * n_dot_l * pigment * intensity;
-            double highlight = m.highlight == Highlight::Blinn ? glm::dot(n, glm::normalize(l - view_dir))
-                                                              : glm::dot(mirrored, l);
-            if (highlight > 0.0 && m.specular > 0.0) color += m.specular * std::pow(highlight, m.shininess) * intensity;
+            color += diffuse * intensity;
+            if (shine > 0.0) color += shine * intensity;
         }
     }
     return color;
@@ -245,8 +253,8 @@ dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
                 b.from = p;
                 goes_on = ++passes <= kMaxPassThrough;
             } else {
-                dvec3 local = shade_local(m, p, n, b.ray.dir, b.media, hash_u32(seed + std::uint32_t(b.depth)), rays);
-                color += b.weight * (1.0 - m.reflection) * local;
+                dvec3 scale = b.weight * (1.0 - m.reflection);
+                color += scale * shade_local(m, p, n, b.ray.dir, b.media, hash_u32(seed + std::uint32_t(b.depth)), scale, rays);
                 Branch reflected{{p + ray_offset(p) * n, mirror(b.ray.dir, n)}, p, b.weight * m.reflection, b.depth + 1, b.media};
                 Branch refracted{{p, b.ray.dir}, p, dvec3(0.0), b.depth + 1, beyond};
                 if (clear) {

@@ -34,9 +34,10 @@ public:
     bool occluded(const Ray& ray, double t_min, double t_max) const;
 
     // Ambient + per light (sample) diffuse and specular at p (n faces the viewer, view_dir is the
-    // ray's, which travels inside `media`; `seed` places area light samples).
+    // ray's, which travels inside `media`; `seed` places area light samples; `scale` is what the
+    // result is multiplied by on its way to the pixel, for skipping samples too faint to matter).
     dvec3 shade_local(const Material& m, const dvec3& p, const dvec3& n, const dvec3& view_dir, const Media& media,
-                      std::uint32_t seed, double& rays) const;
+                      std::uint32_t seed, const dvec3& scale, double& rays) const;
 
     // The fraction of a light's colour that reaches the surface point `from` from the light point
     // q, along a straight shadow ray starting at `origin` (just off the surface) inside `media`:

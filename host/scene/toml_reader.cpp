@@ -5,7 +5,6 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 namespace lancer {
 
@@ -179,9 +178,10 @@ std::size_t one_of(TableReader& t, std::string_view key, std::string_view what, 
         if (names[i] == value) return i;
     std::string suggestion = closest_match(value, std::set<std::string, std::less<>>(names.begin(), names.end()));
     if (!suggestion.empty()) t.fail(key, fmt::format("unknown {} '{}' (did you mean '{}'?)", what, value, suggestion));
-    std::vector<std::string> quoted;
-    for (const std::string& n : names) quoted.push_back("\"" + n + "\"");
-    t.fail(key, fmt::format("unknown {} '{}' (use {})", what, value, fmt::join(quoted, ", ")));
+    std::string listed;  // "a", "b" or "c"
+    for (std::size_t i = 0; i < names.size(); ++i)
+        listed += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + ("\"" + names[i] + "\"");
+    t.fail(key, fmt::format("unknown {} '{}' (use {})", what, value, listed));
 }
 
 }  // namespace lancer
