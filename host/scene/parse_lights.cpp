@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "scene/limits.hpp"
+#include "scene/parse_shapes.hpp"
 
 namespace lancer {
 namespace {
@@ -78,13 +79,7 @@ void read_area(TableReader& t, Light& l) {
         t.fail(t.has("corner") ? "corner" : "",
                t.has("corner") ? "give corner or position (the centre), not both"
                                : "[[light]]: an area light needs position (its centre) or corner");
-    l.edge_u = t.required_vec3("edge_u");
-    l.edge_v = t.required_vec3("edge_v");
-    double lu = glm::length(l.edge_u), lv = glm::length(l.edge_v);
-    if (!(lu > 0.0)) t.fail("edge_u", "area light edge_u must not be the zero vector");
-    if (!(lv > 0.0)) t.fail("edge_v", "area light edge_v must not be the zero vector");
-    if (glm::length(glm::cross(l.edge_u, l.edge_v)) <= 1e-9 * lu * lv)
-        t.fail("edge_v", "area light edges are parallel: the light has no area");
+    read_edges(t, "area light", l.edge_u, l.edge_v);
     // The centre is what moves in animations; a corner is turned into it.
     l.position = t.has("corner") ? t.vec3("corner", dvec3(0.0)) + 0.5 * (l.edge_u + l.edge_v) : t.vec3("position", dvec3(0.0));
     l.samples = check_int_range(t, "samples", t.integer("samples", l.samples), 1, limits::kMaxAreaLightSamples);

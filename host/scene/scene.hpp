@@ -23,7 +23,7 @@ struct RenderSettings {
     int width = 640;
     int height = 480;
     int samples = 3;    // an N x N grid of rays per pixel
-    int max_depth = 5;  // reflection bounces after the camera ray
+    int max_depth = 5;  // levels of reflection and refraction after the camera ray
     dvec3 background{0.0, 0.0, 0.0};
 };
 

@@ -35,20 +35,27 @@ double reflectance(double theta_i, double n1, double n2) {
     return (rs * rs + rp * rp) / 2.0;
 }
 
-// A camera at the origin looking along the xz-plane at `deg` degrees from +z, 401 columns wide
-// and a few degrees across; the middle row's rays lie in the xz-plane. Behind everything a white
-// wall (ambient 1) at z = wall_z covers x >= edge_x; the rest is black.
-std::string edge_scene(double deg, double wall_z, double edge_x, const std::string& extra) {
+// A scene lit by ambient light alone, through a camera at `eye` looking at `look_at`: `white`
+// (ambient 1) shows as 1; `glass` (index `ior`) and `liquid` (1.33) are clear and dark
+// themselves. `rest` adds objects (and materials).
+struct View {
+    int width = 3, height = 3;
+    dvec3 eye{0, 0, -4}, look_at{0, 0, 0};
+    double fov = 10;
+    int max_depth = 6;
+};
+
+std::string ambient_scene(const View& v, const std::string& rest, double ior = 1.5) {
     return fmt::format(R"(
         [render]
-        width = 401
-        height = 3
+        width = {}
+        height = {}
         samples = 1
-        max_depth = 6
+        max_depth = {}
         [camera]
-        eye = [0, 0, 0]
-        look_at = [{}, 0, {}]
-        fov = 0.1
+        eye = [{}, {}, {}]
+        look_at = [{}, {}, {}]
+        fov = {}
         [ambient]
         color = [1, 1, 1]
         [material.white]
@@ -56,7 +63,7 @@ std::string edge_scene(double deg, double wall_z, double edge_x, const std::stri
         diffuse = 0
         [material.glass]
         transmission = 1
-        ior = 1.5
+        ior = {}
         ambient = 0
         diffuse = 0
         [material.liquid]
@@ -64,15 +71,30 @@ std::string edge_scene(double deg, double wall_z, double edge_x, const std::stri
         ior = 1.33
         ambient = 0
         diffuse = 0
-        [[object]]
-        type = "rectangle"
-        corner = [{}, -50, {}]
-        edge_u = [50, 0, 0]
-        edge_v = [0, 100, 0]
-        material = "white"
-        {}
     )",
-                       10 * std::sin(deg * kDegree), 10 * std::cos(deg * kDegree), edge_x, wall_z, extra);
+                       v.width, v.height, v.max_depth, v.eye.x, v.eye.y, v.eye.z, v.look_at.x, v.look_at.y, v.look_at.z, v.fov,
+                       ior) +
+           rest;
+}
+
+// An [[object]] table: a rectangle (corner, edge_u, edge_v) or a box (min, max).
+std::string rectangle(const std::string& material, dvec3 c, dvec3 u, dvec3 v) {
+    return fmt::format("[[object]]\ntype = \"rectangle\"\ncorner = [{}, {}, {}]\nedge_u = [{}, {}, {}]\n"
+                       "edge_v = [{}, {}, {}]\nmaterial = \"{}\"\n",
+                       c.x, c.y, c.z, u.x, u.y, u.z, v.x, v.y, v.z, material);
+}
+
+std::string box(const std::string& material, dvec3 lo, dvec3 hi) {
+    return fmt::format("[[object]]\ntype = \"box\"\nmin = [{}, {}, {}]\nmax = [{}, {}, {}]\nmaterial = \"{}\"\n",
+                       lo.x, lo.y, lo.z, hi.x, hi.y, hi.z, material);
+}
+
+// A camera at the origin looking along the xz-plane at `deg` degrees from +z, 401 columns wide
+// and a few degrees across; the middle row's rays lie in the xz-plane. Behind everything a white
+// wall at z = wall_z covers x >= edge_x; the rest is black.
+std::string edge_scene(double deg, double wall_z, double edge_x, const std::string& extra) {
+    View v{401, 3, {0, 0, 0}, {10 * std::sin(deg * kDegree), 0, 10 * std::cos(deg * kDegree)}, 0.1};
+    return ambient_scene(v, rectangle("white", {edge_x, -50, wall_z}, {50, 0, 0}, {0, 100, 0}) + extra);
 }
 
 // The angle from +z of the ray through column c of the middle row of edge_scene's camera.
@@ -97,13 +119,7 @@ int predicted_column(const Scene& scene, double edge_x, Landing landing) {
     return -1;
 }
 
-const char* kSlab = R"(
-        [[object]]
-        type = "box"
-        min = [-50, -50, 2]
-        max = [50, 50, 3]
-        material = "glass"
-)";
+const std::string kSlab = box("glass", {-50, -50, 2}, {50, 50, 3});
 
 // A slab of thickness t shifts a ray sideways by d = t sin(theta - theta') / cos(theta'), so
 // the wall behind it is seen d / cos(theta) further along x than without the slab.
@@ -140,13 +156,7 @@ TEST_P(Refraction, NestedMediaBendByTheRatioOfTheirIndices) {
         return 2.0 * std::tan(theta) + 0.5 * std::tan(theta_g) + 2.5 * std::tan(theta_l) + 2.0 * std::tan(theta);
     };
     const double edge = landing(40 * kDegree, true);
-    const std::string objects = std::string(kSlab) + R"(
-        [[object]]
-        type = "box"
-        min = [-50, -50, 2.5]
-        max = [50, 50, 5]
-        material = "liquid"
-    )";
+    const std::string objects = kSlab + box("liquid", {-50, -50, 2.5}, {50, 50, 5});
     Scene scene = test::scene_from_text(edge_scene(40, wall, edge, objects));
     int expected = predicted_column(scene, edge, [&](double th) { return landing(th, true); });
     int wrong = predicted_column(scene, edge, [&](double th) { return landing(th, false); });
@@ -159,38 +169,8 @@ TEST_P(Refraction, NestedMediaBendByTheRatioOfTheirIndices) {
 // the pixel is the reflectance ((n1 - n2) / (n1 + n2))^2 alone.
 TEST_P(Refraction, NormalIncidenceReflectsTheTextbookFraction) {
     for (double n : {1.5, 2.4}) {
-        FloatImage img = render(fmt::format(R"(
-            [render]
-            width = 3
-            height = 3
-            samples = 1
-            [camera]
-            eye = [0, 0, -4]
-            look_at = [0, 0, 0]
-            fov = 10
-            [ambient]
-            color = [1, 1, 1]
-            [material.white]
-            ambient = 1
-            diffuse = 0
-            [material.glass]
-            transmission = 1
-            ior = {}
-            ambient = 0
-            diffuse = 0
-            [[object]]
-            type = "plane"
-            point = [0, 0, 2]
-            normal = [0, 0, -1]
-            material = "glass"
-            [[object]]
-            type = "rectangle"
-            corner = [-50, -50, -5]
-            edge_u = [100, 0, 0]
-            edge_v = [0, 100, 0]
-            material = "white"
-        )",
-                                            n));
+        std::string half_space = "[[object]]\ntype = \"plane\"\npoint = [0, 0, 2]\nnormal = [0, 0, -1]\nmaterial = \"glass\"\n";
+        FloatImage img = render(ambient_scene(View{}, half_space + rectangle("white", {-50, -50, -5}, {100, 0, 0}, {0, 100, 0}), n));
         double r = std::pow((1.0 - n) / (1.0 + n), 2.0);
         EXPECT_NEAR(img.at(1, 1).r, r, kTolerance) << "ior " << n;
     }
@@ -199,78 +179,21 @@ TEST_P(Refraction, NormalIncidenceReflectsTheTextbookFraction) {
 // Head-on through a slab at a white wall: (1 - R)^2 passes straight through, plus the light
 // reflected once inside at each face, R^2 (1 - R)^2; the next round (R^4) is below the cut-off.
 TEST_P(Refraction, SlabTransmitsWhatBothFacesLetThrough) {
-    FloatImage img = render(R"(
-        [render]
-        width = 3
-        height = 3
-        samples = 1
-        [camera]
-        eye = [0, 0, -4]
-        look_at = [0, 0, 0]
-        fov = 10
-        [ambient]
-        color = [1, 1, 1]
-        [material.white]
-        ambient = 1
-        diffuse = 0
-        [material.glass]
-        transmission = 1
-        ior = 1.5
-        ambient = 0
-        diffuse = 0
-        [[object]]
-        type = "box"
-        min = [-50, -50, 1]
-        max = [50, 50, 2]
-        material = "glass"
-        [[object]]
-        type = "rectangle"
-        corner = [-50, -50, 5]
-        edge_u = [100, 0, 0]
-        edge_v = [0, 100, 0]
-        material = "white"
-    )");
+    FloatImage img = render(ambient_scene(View{}, box("glass", {-50, -50, 1}, {50, 50, 2}) +
+                                                      rectangle("white", {-50, -50, 5}, {100, 0, 0}, {0, 100, 0})));
     double r = 0.04;
     EXPECT_NEAR(img.at(1, 1).g, (1 - r) * (1 - r) * (1 + r * r), kTolerance);
 }
 
 // A ray enters the top of a glass cube at 60 degrees and meets a side face at 90 - theta'. With
 // ior 1.2 that is inside the critical angle and the ray reaches the white wall beyond; with 1.5
-// it is beyond (54.7 > 41.8 degrees): the ray is reflected down and out into the black.
+// it is beyond (54.7 > 41.8 degrees): the ray is reflected down, and nothing reaches the wall.
+// max_depth = 2 stops the tree at what the side face sends on (the wall, or the cube's bottom).
 TEST_P(Refraction, TotalInternalReflectionBeyondTheCriticalAngle) {
     for (double n : {1.2, 1.5}) {
-        FloatImage img = render(fmt::format(R"(
-            [render]
-            width = 3
-            height = 3
-            samples = 1
-            [camera]
-            eye = [{}, 6, 0]
-            look_at = [0.5, 1, 0]
-            fov = 1
-            [ambient]
-            color = [1, 1, 1]
-            [material.white]
-            ambient = 1
-            diffuse = 0
-            [material.glass]
-            transmission = 1
-            ior = {}
-            ambient = 0
-            diffuse = 0
-            [[object]]
-            type = "box"
-            min = [-1, -1, -1]
-            max = [1, 1, 1]
-            material = "glass"
-            [[object]]
-            type = "rectangle"
-            corner = [3, -50, -50]
-            edge_u = [0, 50.8, 0]
-            edge_v = [0, 0, 100]
-            material = "white"
-        )",
-                                            0.5 - 10 * std::sin(60 * kDegree), n));
+        View v{3, 3, {0.5 - 10 * std::sin(60 * kDegree), 6, 0}, {0.5, 1, 0}, 1, 2};
+        FloatImage img = render(ambient_scene(v, box("glass", {-1, -1, -1}, {1, 1, 1}) +
+                                                     rectangle("white", {3, -50, -50}, {0, 50.8, 0}, {0, 0, 100}), n));
         double theta_t = std::asin(std::sin(60 * kDegree) / n);
         double at_side = 90 * kDegree - theta_t;
         bool total = n * std::sin(at_side) > 1.0;
@@ -288,38 +211,10 @@ TEST_P(Refraction, TotalInternalReflectionBeyondTheCriticalAngle) {
 TEST_P(Refraction, AbsorptionFollowsBeerLambert) {
     const dvec3 a(0.5, 1.0, 2.0);
     for (double deg : {0.0, 50.0}) {
-        FloatImage img = render(fmt::format(R"(
-            [render]
-            width = 3
-            height = 3
-            samples = 1
-            [camera]
-            eye = [0, 0, 0]
-            look_at = [{}, 0, {}]
-            fov = 1
-            [ambient]
-            color = [1, 1, 1]
-            [material.white]
-            ambient = 1
-            diffuse = 0
-            [material.tinted]
-            transmission = 1
-            absorption = [0.5, 1, 2]
-            ambient = 0
-            diffuse = 0
-            [[object]]
-            type = "box"
-            min = [-50, -50, 1]
-            max = [50, 50, 1.7]
-            material = "tinted"
-            [[object]]
-            type = "rectangle"
-            corner = [-50, -50, 5]
-            edge_u = [100, 0, 0]
-            edge_v = [0, 100, 0]
-            material = "white"
-        )",
-                                            10 * std::sin(deg * kDegree), 10 * std::cos(deg * kDegree)));
+        View v{3, 3, {0, 0, 0}, {10 * std::sin(deg * kDegree), 0, 10 * std::cos(deg * kDegree)}, 1};
+        const char* tinted = "[material.tinted]\ntransmission = 1\nabsorption = [0.5, 1, 2]\nambient = 0\ndiffuse = 0\n";
+        FloatImage img = render(ambient_scene(v, std::string(tinted) + box("tinted", {-50, -50, 1}, {50, 50, 1.7}) +
+                                                     rectangle("white", {-50, -50, 5}, {100, 0, 0}, {0, 100, 0})));
         double path = 0.7 / std::cos(deg * kDegree);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(img.at(1, 1)[c], std::exp(-a[c] * path), kTolerance) << deg << " deg, channel " << c;
     }
