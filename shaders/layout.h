@@ -39,8 +39,14 @@ LANCER_CONST SPEC_HAS_BEZIER = 0;
 LANCER_CONST SPEC_HAS_BVH = 1;
 LANCER_CONST SPEC_OUTPUT_HITS = 2;  // debug/test variant: write first hits instead of colours
 LANCER_CONST SPEC_CHECK_LOOP_LIMIT = 3;  // lavapipe: detect invocations its loop limit cut short (trace.comp)
+// Optional shading features: compiled out of scenes that lack them (lavapipe pays for dead code).
 LANCER_CONST SPEC_HAS_TEXTURES = 4;      // some material has an image texture
 LANCER_CONST SPEC_HAS_PATTERNS = 5;      // some material has a procedural pattern or a bump
+LANCER_CONST SPEC_HAS_TRANSPARENCY = 6;  // a material with transmission > 0: the ray tree, media, tinted shadows
+LANCER_CONST SPEC_HAS_AREA_LIGHTS = 7;
+LANCER_CONST SPEC_HAS_SPOT_LIGHTS = 8;
+LANCER_CONST SPEC_HAS_FALLOFF = 9;       // a light with distance fall-off
+LANCER_CONST SPEC_HAS_BLINN = 10;        // a material with highlight = "blinn"
 
 // Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
 LANCER_CONST WORKGROUP_X = 8;
@@ -73,6 +79,15 @@ LANCER_CONST PATTERN_TURBULENCE = 1;
 LANCER_CONST PATTERN_MARBLE = 2;
 LANCER_CONST PATTERN_WOOD = 3;
 LANCER_CONST PATTERN_MAX_COLORS = 8;  // stops of a colour ramp (scene/limits.hpp: kMaxPatternColors)
+
+// Material::highlight values.
+LANCER_CONST HIGHLIGHT_PHONG = 0;
+LANCER_CONST HIGHLIGHT_BLINN = 1;
+
+// Light::type values.
+LANCER_CONST LIGHT_POINT = 0;
+LANCER_CONST LIGHT_SPOT = 1;
+LANCER_CONST LIGHT_AREA = 2;
 
 struct Primitive {
     uint type;
@@ -138,6 +153,14 @@ struct Material {
     uint color_pattern;  // into patterns[]: the pigment is multiplied by the pattern's colour
     uint bump_pattern;   // into patterns[]: the shading normal is tilted by the pattern's gradient
     uint maps_reserved;
+
+    // optics: refraction and the highlight model
+    vec4 transmission;  // rgb = T, the fraction passed per channel (all 0: opaque); w = ior
+    vec4 absorption;    // rgb = Beer-Lambert coefficient per unit distance inside; w unused
+    uint highlight;     // HIGHLIGHT_PHONG or HIGHLIGHT_BLINN
+    uint optics_reserved0;
+    uint optics_reserved1;
+    uint optics_reserved2;
 };
 
 // An image as a material places it (shaders/texture.glsl). Image coordinates (s, t) run from
@@ -166,8 +189,16 @@ struct PatternInfo {
 };
 
 struct Light {
-    vec4 position;  // xyz
-    vec4 color;     // rgb
+    vec4 position;   // xyz = where it is (area light: the rectangle's centre); w = fall-off distance, 0 = none
+    vec4 color;      // rgb
+    vec4 direction;  // spot: xyz = unit axis of the cone
+    vec4 spot;       // spot: x = cos(outer_angle), y = cos(inner_angle), z = tightness
+    vec4 edge_u;     // area: xyz = first edge (whole length)
+    vec4 edge_v;     // area: xyz = second edge
+    uint type;       // LIGHT_POINT, LIGHT_SPOT or LIGHT_AREA
+    uint samples;    // area: n, for n x n shadow samples
+    uint jitter;     // area: 1 = each sample at a hashed place in its cell, 0 = at the cell's centre
+    uint reserved;
 };
 
 // Per-render constants (a uniform buffer). The camera is given as the vectors from which the
@@ -207,10 +238,10 @@ struct BandParams {
 
 #ifdef __cplusplus
 static_assert(sizeof(Primitive) == 64);
-static_assert(sizeof(Material) == 80);
+static_assert(sizeof(Material) == 128);
 static_assert(sizeof(TextureInfo) == 48);
 static_assert(sizeof(PatternInfo) == 208);
-static_assert(sizeof(Light) == 32);
+static_assert(sizeof(Light) == 112);
 static_assert(sizeof(BvhNode) == 48);
 static_assert(sizeof(PatchLeaf) == 288);
 static_assert(sizeof(SurfaceInfo) == 64);

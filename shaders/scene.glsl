@@ -1,6 +1,6 @@
-// Scene buffers and the two queries every ray needs: the nearest hit, and "is anything in the
-// way" (shadow rays). Bounded primitives are found through the BVH; unbounded ones (planes)
-// are tested by every ray.
+// Scene buffers and the query every ray needs: the nearest hit, or any hit for shadow rays
+// (trace_scene; dielectric.glsl's transmittance traces shadow rays). Bounded primitives are
+// found through the BVH; unbounded ones (planes) are tested by every ray.
 #ifndef LANCER_SCENE_GLSL
 #define LANCER_SCENE_GLSL
 
@@ -172,11 +172,6 @@ float surface_part(Hit hit) {
     Primitive prim = primitives[hit.primitive];
     if (SCENE_HAS_BEZIER && prim.type == SHAPE_BEZIER) return patch_leaves[prim.data].origin.w;
     return -1.0;
-}
-
-bool occluded(Ray ray, float t_min, float t_max) {
-    Nearest unused;
-    return trace_scene(ray, t_min, t_max, true, unused);
 }
 
 #endif

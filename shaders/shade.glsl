@@ -1,8 +1,12 @@
-// Phong shading at a hit: ambient + per unshadowed light (diffuse + specular).
-// The CPU reference writes the same model in host/cpu/tracer.cpp; docs/scene-format.md
-// ("Shading model") states it as a formula.
+// Local shading at a hit: ambient + per light (or area light sample) that the point sees,
+// diffuse + specular. The CPU reference writes the same model in host/cpu/tracer.cpp; the
+// scene format reference (docs/scene-format.md, "Shading model") states it as a formula.
 #ifndef LANCER_SHADE_GLSL
 #define LANCER_SHADE_GLSL
+
+#include "lights.glsl"
+
+layout(constant_id = SPEC_HAS_BLINN) const bool SCENE_HAS_BLINN = true;
 
 vec3 material_pigment(Material m, vec3 p) {
     if (m.pattern == PATTERN_CHECKER) {
@@ -15,24 +19,54 @@ vec3 material_pigment(Material m, vec3 p) {
     return m.color.rgb;
 }
 
+// On a transparent surface, a light sample whose unshadowed light would add less than this to the
+// pixel is skipped, shadow ray and all: it cannot change an 8-bit result. Glass is mostly
+// highlight, and far from its peak a highlight is nothing, but its shadow ray would cross the
+// glass many times.
+const float MIN_LIGHT = 1.0 / 65536.0;
+
+// Adds the diffuse and specular light from point q of `light` (one of `count` samples) at p, if
+// q is in front of the surface and p sees it. n is the geometric normal (which lights are in
+// front), shading_n the one that lights the surface (n, or tilted by a bump). Shadow rays start
+// at `origin`, just off the surface, inside `media` (transparent objects in the way tint rather
+// than block). `scale` is what the local colour will be multiplied by on its way to the pixel.
+void add_light(inout vec3 color, Material m, vec3 pigment, vec3 p, vec3 n, vec3 shading_n, vec3 view_dir, vec3 mirrored,
+               vec3 origin, Light light, vec3 q, uint count, Media media, vec3 scale, inout float rays) {
+    vec3 l = normalize(q - p);
+    if (dot(n, l) <= 0.0) return;  // light behind the surface: no shadow ray needed
+    float n_dot_l = max(0.0, dot(shading_n, l));
+    vec3 diffuse = m.phong.y * n_dot_l * pigment;
+    float highlight = SCENE_HAS_BLINN && m.highlight == HIGHLIGHT_BLINN ? dot(shading_n, normalize(l - view_dir)) : dot(mirrored, l);
+    float shine = highlight > 0.0 && m.phong.z > 0.0 ? m.phong.z * pow(highlight, m.phong.w) : 0.0;
+    vec3 intensity = light_intensity(light, q, p, count);
+    if (SCENE_HAS_TRANSPARENCY && is_transparent(m) && max3(scale * (diffuse + shine) * intensity) < MIN_LIGHT) return;
+    rays += 1.0;
+    vec3 through = transmittance(p, origin, q, media);
+    if (max3(through) <= 0.0) return;  // in the shadow of an opaque surface
+    intensity *= through;
+    color += diffuse * intensity;
+    if (shine > 0.0) color += shine * intensity;
+}
+
 // pigment: the surface's colour there (appearance.glsl). n: the geometric normal, facing the
-// viewer (which lights are in front, where shadow rays start); shading_n: the normal that lights
-// the surface (n, or tilted by a bump). view_dir is the incoming ray direction.
-vec3 shade_local(Material m, vec3 pigment, vec3 p, vec3 n, vec3 shading_n, vec3 view_dir, inout float rays) {
+// viewer; shading_n: the normal that lights the surface. view_dir is the incoming ray direction;
+// `media` holds the transparent materials the incoming ray is inside; `seed` places area light
+// samples (lights.glsl); `scale` is what the result will be multiplied by on its way to the pixel.
+vec3 shade_local(Material m, vec3 pigment, vec3 p, vec3 n, vec3 shading_n, vec3 view_dir, Media media, uint seed,
+                 vec3 scale, inout float rays) {
+    if (SCENE_HAS_TRANSPARENCY) pigment *= vec3(1.0) - m.transmission.rgb;  // the part that is not transmitted
     vec3 color = m.phong.x * pigment * frame.ambient.rgb;
     vec3 mirrored = reflect(view_dir, shading_n);
     vec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
     for (uint i = 0u; i < frame.light_count; ++i) {
-        vec3 l = normalize(lights[i].position.xyz - p);
-        if (dot(n, l) <= 0.0) continue;  // light behind the surface: no shadow ray needed
-        float n_dot_l = max(0.0, dot(shading_n, l));
-        rays += 1.0;
-        vec3 to_light = lights[i].position.xyz - origin;
-        float dist = length(to_light);
-        if (occluded(Ray(origin, to_light / dist), 0.0, dist)) continue;
-        color += m.phong.y * n_dot_l * pigment * lights[i].color.rgb;
-        float r_dot_l = dot(mirrored, l);
-        if (r_dot_l > 0.0 && m.phong.z > 0.0) color += m.phong.z * pow(r_dot_l, m.phong.w) * lights[i].color.rgb;
+        Light light = lights[i];
+        // One call site (each inlines the shadow ray's whole intersection code): a point or spot
+        // light is one sample at its position.
+        uint count = light_sample_count(light);
+        for (uint s = 0u; s < count; ++s) {
+            vec3 q = light_sample_position(light, i, s, seed);
+            add_light(color, m, pigment, p, n, shading_n, view_dir, mirrored, origin, light, q, count, media, scale, rays);
+        }
     }
     return color;
 }

@@ -1,6 +1,7 @@
 #version 450
 // lancer's ray tracer: one invocation per pixel, an N x N grid of camera rays, and for each an
-// iterative bounce loop (no recursion) with Phong shading, shadow rays and mirror reflection.
+// iterative ray tree (no recursion: a loop and a small stack of pending rays) with Phong
+// shading, shadow rays, mirror reflection and refraction.
 // The CPU reference (host/cpu/) implements the same model independently, in double precision.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
@@ -17,34 +18,118 @@ layout(std430, set = 0, binding = BINDING_OUTPUT) buffer OutputBlock { vec4 pixe
 
 #include "common.glsl"
 #include "scene.glsl"
+#include "dielectric.glsl"
 #include "shade.glsl"
 #include "appearance.glsl"
 
-// Below this remaining weight a reflection cannot change the 8-bit result (< 1/4 of a level).
-const float MIN_WEIGHT = 1.0 / 1024.0;
+// The ray tree. At a transparent surface a ray splits into a reflected and a refracted ray: the
+// heavier goes on at once, the lighter waits in a small stack (when the stack is full, it is
+// dropped: black). Opaque surfaces only reflect, so scenes without transparency trace one path.
+const uint PENDING_SIZE = 8u;
+// A surface of a medium inside that same medium (a liquid's wall inside its glass) is passed
+// straight through, at most this many times per path; after that the path contributes black.
+const uint MAX_PASS_THROUGH = 16u;
 
-vec3 trace(Ray ray, inout float rays) {
+struct Branch {
+    Ray ray;
+    vec3 from;  // the surface point the ray leaves (its origin is just off it): media absorb from here
+    vec3 weight;
+    uint depth;
+    Media media;
+};
+
+// The colour seen along `ray`. `seed` identifies the camera sample (pixel and grid sample), for
+// area light samples. Adds every ray traced (camera, shadow, reflected, refracted) to `rays`.
+vec3 trace(Ray ray, uint seed, inout float rays) {
     vec3 color = vec3(0.0);
+    vec3 from = ray.origin;
     vec3 weight = vec3(1.0);
-    for (uint depth = 0u; depth <= frame.max_depth; ++depth) {
+    uint depth = 0u;
+    Media media = no_media();
+    uint passes = 0u;
+    Branch pending[PENDING_SIZE];
+    uint waiting = 0u;
+    for (;;) {
         rays += 1.0;
         Hit hit;
-        if (!closest_hit(ray, 0.0, hit)) {
-            color += weight * frame.background.rgb;
-            return color;
+        bool found = closest_hit(ray, 0.0, hit);
+        if (SCENE_HAS_TRANSPARENCY && media.count > 0u) {
+            weight *= absorption_over(innermost(media), found ? length(ray.origin + hit.t * ray.dir - from) : INFINITY);
         }
-        vec3 p = ray.origin + hit.t * ray.dir;
-        vec3 n = hit.normal;
-        if (dot(n, ray.dir) > 0.0) n = -n;  // two-sided surfaces
-        Material m = materials[primitives[hit.primitive].material];
-        Appearance look = appearance_at(m, hit, p, n);
-        vec3 local = shade_local(m, look.pigment, p, n, look.normal, ray.dir, rays);
-        color += weight * (1.0 - m.reflection) * local;
-        weight *= m.reflection;
-        if (max(weight.r, max(weight.g, weight.b)) < MIN_WEIGHT) return color;
-        ray = Ray(p + ray_offset(p) * n, bounce_direction(ray.dir, look.normal, n));
+        bool goes_on = false;
+        if (!found) {
+            color += weight * frame.background.rgb;
+        } else {
+            vec3 p = ray.origin + hit.t * ray.dir;
+            vec3 n = hit.normal;
+            if (dot(n, ray.dir) > 0.0) n = -n;  // two-sided surfaces
+            uint mat = primitives[hit.primitive].material;
+            Material m = materials[mat];
+            bool clear = SCENE_HAS_TRANSPARENCY && is_transparent(m);
+            bool sheet = clear && is_thin_sheet(hit.primitive);
+            Media beyond = clear && !sheet ? cross_surface(media, mat) : media;  // the media past the surface
+            if (clear && !sheet && innermost(beyond) == innermost(media)) {
+                media = beyond;  // the surface does not show: go on through it
+                ray = Ray(past_surface(p, n, ray.dir), ray.dir);
+                from = p;
+                goes_on = ++passes <= MAX_PASS_THROUGH;
+            } else {
+                Appearance look = appearance_at(m, hit, p, n);
+                vec3 scale = weight * (1.0 - m.reflection);
+                color += scale * shade_local(m, look.pigment, p, n, look.normal, ray.dir, media, hash_u32(seed + depth), scale, rays);
+                vec3 reflected_weight = weight * m.reflection;
+                vec3 refracted_weight = vec3(0.0);
+                vec3 refracted_dir = ray.dir;
+                if (clear) {
+                    float n1 = medium_ior(innermost(media));
+                    float n2 = sheet ? m.transmission.w : medium_ior(innermost(beyond));
+                    float cos_i = -dot(ray.dir, n);
+                    float cos_t;
+                    float f = fresnel(cos_i, n1, n2, cos_t);
+                    vec3 passing = weight * (1.0 - m.reflection) * m.transmission.rgb;
+                    reflected_weight += passing * f;
+                    refracted_weight = passing * (1.0 - f);
+                    if (!sheet) refracted_dir = refraction(ray.dir, n, n1 / n2, cos_i, cos_t);
+                }
+                // Past max_depth the children contribute black (POV-Ray's max_trace_level rule).
+                bool reflects = depth < frame.max_depth && max3(reflected_weight) >= MIN_WEIGHT;
+                bool refracts = depth < frame.max_depth && max3(refracted_weight) >= MIN_WEIGHT;
+                // A bump tilts the mirror direction; refraction follows the geometric surface.
+                Branch reflected = Branch(Ray(p + ray_offset(p) * n, bounce_direction(ray.dir, look.normal, n)), p,
+                                          reflected_weight, depth + 1u, media);
+                if (refracts) {
+                    Branch refracted = Branch(Ray(past_surface(p, n, refracted_dir), refracted_dir), p, refracted_weight, depth + 1u, beyond);
+                    Branch next = refracted;
+                    if (reflects) {
+                        bool reflected_first = max3(reflected_weight) > max3(refracted_weight);
+                        next = reflected_first ? reflected : refracted;
+                        if (waiting < PENDING_SIZE) pending[waiting++] = reflected_first ? refracted : reflected;
+                    }
+                    ray = next.ray;
+                    from = p;
+                    weight = next.weight;
+                    depth = next.depth;
+                    media = next.media;
+                    goes_on = true;
+                } else if (reflects) {
+                    ray = reflected.ray;
+                    from = p;
+                    weight = reflected.weight;
+                    depth = reflected.depth;
+                    goes_on = true;
+                }
+            }
+        }
+        if (goes_on) continue;
+        if (!SCENE_HAS_TRANSPARENCY || waiting == 0u) break;
+        Branch next = pending[--waiting];
+        ray = next.ray;
+        from = next.from;
+        weight = next.weight;
+        depth = next.depth;
+        media = next.media;
+        passes = 0u;
     }
-    // Past max_depth the reflected ray contributes black (POV-Ray's max_trace_level rule).
     return color;
 }
 
@@ -102,7 +187,8 @@ void main() {
     bool marked = rays < 0.0;  // an earlier pass was cut short
     for (uint k = band.sample_first; k < last; ++k) {
         uvec2 ij = uvec2(k % frame.samples, k / frame.samples);
-        sum += trace(camera_ray(vec2(pixel) + (vec2(ij) + 0.5) / n), rays);
+        uint seed = hash_u32(hash_u32(hash_u32(pixel.x) ^ pixel.y) ^ k);
+        sum += trace(camera_ray(vec2(pixel) + (vec2(ij) + 0.5) / n), seed, rays);
     }
     if (marked || (CHECK_LOOP_LIMIT && loop_limit_reached())) {
         pixels[out_index] = vec4(0.0, 0.0, 0.0, -1.0);

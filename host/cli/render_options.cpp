@@ -41,7 +41,7 @@ void add_render_options(CLI::App& cmd, RenderOptions& o) {
         ->check(CLI::Range(1, limits::kMaxImageSide));
     cmd.add_option("--samples", o.samples, "N: an N x N grid of rays per pixel (default 3 = 9 rays)")
         ->check(CLI::Range(1, limits::kMaxSamples));
-    cmd.add_option("--max-depth", o.max_depth, "Reflection bounces (default 5)")->check(CLI::Range(0, limits::kMaxDepth));
+    cmd.add_option("--max-depth", o.max_depth, "Levels of reflection and refraction (default 5)")->check(CLI::Range(0, limits::kMaxDepth));
     cmd.add_option("--backend", o.backend, "gpu (Vulkan compute, default) or cpu (reference renderer)")
         ->check(CLI::IsMember({"gpu", "cpu"}));
     cmd.add_option("--device", o.device, "Vulkan device: index or part of its name (see --list-devices)");

@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "cpu/lights.hpp"
 #include "cpu/tracer.hpp"
 #include "scene/camera.hpp"
 
@@ -44,7 +45,8 @@ FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
                         double sx = x + (i + 0.5) / n;
                         double sy = y + (j + 0.5) / n;
                         dvec3 dir = glm::normalize(camera_ray_direction(cam, sx, sy, rs.width, rs.height));
-                        sum += tracer.trace({cam.eye, dir}, rays);
+                        auto seed = cpu::camera_sample_seed(x, y, std::uint32_t(j * n + i));
+                        sum += tracer.trace({cam.eye, dir}, seed, rays);
                     }
                 }
                 dvec3 c = sum / double(n * n);

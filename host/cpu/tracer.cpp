@@ -1,5 +1,6 @@
 #include "cpu/tracer.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -8,13 +9,23 @@
 
 #include "accel/shape_bounds.hpp"
 #include "cpu/appearance.hpp"
+#include "cpu/lights.hpp"
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
 namespace {
 
-// Below this remaining weight a reflection cannot change the 8-bit result (as the shader).
+// Below this remaining weight a ray cannot change the 8-bit result (as the shader).
 constexpr double kMinWeight = 1.0 / 1024.0;
+// The ray tree's rule, as the shader's: at most this many rays wait while one is followed.
+constexpr std::size_t kPendingSize = 8;
+// A path passes through at most this many surfaces that do not show (same medium both sides).
+constexpr int kMaxPassThrough = 16;
+// On a transparent surface, a light sample that would add less than this to the pixel unshadowed
+// is skipped, shadow ray and all (as the shader): mostly highlights far from their peak.
+constexpr double kMinLight = 1.0 / 65536.0;
+// A shadow ray passes through at most this many transparent surfaces; more block the light.
+constexpr int kMaxShadowCrossings = 16;
 
 dvec3 mirror(const dvec3& d, const dvec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
 
@@ -30,6 +41,7 @@ dvec3 pigment_at(const Material& m, const dvec3& p) {
 }
 
 Tracer::Tracer(const Scene& scene, Acceleration acceleration, BvhCache* cache) : scene_(scene) {
+    for (const Material& m : scene.materials) has_transparency_ |= m.transparent();
     std::vector<Aabb> boxes;
     for (const Object& object : scene.objects) {
         std::optional<Aabb> box;
@@ -127,45 +139,162 @@ bool Tracer::occluded(const Ray& ray, double t_min, double t_max) const {
     return blocked;
 }
 
-dvec3 Tracer::shade_local(const Material& m, const dvec3& pigment, const dvec3& p, const dvec3& n,
-                          const dvec3& shading_n, const dvec3& view_dir, double& rays) const {
+dvec3 Tracer::transmittance(dvec3 from, dvec3 origin, const dvec3& q, Media media) const {
+    dvec3 through(1.0);
+    for (int crossings = 0;; ++crossings) {
+        dvec3 to_light = q - origin;
+        double dist = glm::length(to_light);
+        Ray ray{origin, to_light / dist};
+        Hit hit;
+        if (!closest_hit(ray, 0.0, dist, hit)) return through * absorption_along(media, glm::length(q - from));
+        const Material& m = scene_.materials[hit.object->material];
+        if (crossings == kMaxShadowCrossings || !m.transparent()) return dvec3(0.0);
+        dvec3 p = ray.origin + hit.t * ray.dir;
+        through *= absorption_along(media, glm::length(p - from));  // between surface points
+        bool sheet = is_thin_sheet(hit.object->shape);
+        Media beyond = sheet ? media : media.crossed(hit.object->material);
+        if (sheet || beyond.innermost() != media.innermost()) through *= (1.0 - m.reflection) * m.transmission;
+        if (std::max({through.r, through.g, through.b}) < kMinWeight) return dvec3(0.0);
+        media = beyond;
+        from = p;
+        origin = past_surface(p, hit.normal, ray.dir);
+    }
+}
+
+dvec3 Tracer::absorption_along(const Media& media, double distance) const {
+    auto medium = media.innermost();
+    return medium ? beer_lambert(scene_.materials[*medium].absorption, distance) : dvec3(1.0);
+}
+
+double Tracer::ior_of(const Media& media) const {
+    auto medium = media.innermost();
+    return medium ? scene_.materials[*medium].ior : 1.0;
+}
+
+dvec3 Tracer::shade_local(const Material& m, const dvec3& surface_pigment, const dvec3& p, const dvec3& n,
+                          const dvec3& shading_n, const dvec3& view_dir, const Media& media, std::uint32_t seed,
+                          const dvec3& scale, double& rays) const {
+    // Ambient and diffuse light the part of the surface that does not transmit; the highlight
+    // stays whole, so glass keeps its highlights.
+    dvec3 pigment = surface_pigment * (1.0 - m.transmission);
     dvec3 color = m.ambient * pigment * scene_.ambient;
     dvec3 mirrored = mirror(view_dir, shading_n);
     dvec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
-    for (const PointLight& light : scene_.lights) {
-        dvec3 l = glm::normalize(light.position - p);
-        if (glm::dot(n, l) <= 0.0) continue;  // the light is behind the surface
-        double n_dot_l = std::max(0.0, glm::dot(shading_n, l));
-        rays += 1.0;
-        dvec3 to_light = light.position - origin;
-        double dist = glm::length(to_light);
-        if (occluded({origin, to_light / dist}, 0.0, dist)) continue;
-        color += m.diffuse * n_dot_l * pigment * light.color;
-        double r_dot_l = glm::dot(mirrored, l);
-        if (r_dot_l > 0.0 && m.specular > 0.0) color += m.specular * std::pow(r_dot_l, m.shininess) * light.color;
+    for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+        const Light& light = scene_.lights[i];
+        const int count = light_sample_count(light);
+        for (int s = 0; s < count; ++s) {
+            dvec3 q = light_sample_position(light, static_cast<std::uint32_t>(i), s, seed);
+            dvec3 l = glm::normalize(q - p);
+            if (glm::dot(n, l) <= 0.0) continue;  // the light (sample) is behind the surface
+            double n_dot_l = std::max(0.0, glm::dot(shading_n, l));
+            dvec3 diffuse = m.diffuse * n_dot_l * pigment;
+            double highlight = m.highlight == Highlight::Blinn ? glm::dot(shading_n, glm::normalize(l - view_dir))
+                                                              : glm::dot(mirrored, l);
+            double shine = highlight > 0.0 && m.specular > 0.0 ? m.specular * std::pow(highlight, m.shininess) : 0.0;
+            dvec3 intensity = light_intensity(light, q, p, count);
+            dvec3 unshadowed = scale * (diffuse + shine) * intensity;
+            if (m.transparent() && std::max({unshadowed.r, unshadowed.g, unshadowed.b}) < kMinLight) continue;
+            rays += 1.0;
+            if (has_transparency_) {
+                intensity *= transmittance(p, origin, q, media);
+                if (intensity == dvec3(0.0)) continue;
+            } else {
+                dvec3 to_light = q - origin;
+                double dist = glm::length(to_light);
+                if (occluded({origin, to_light / dist}, 0.0, dist)) continue;
+            }
+            color += diffuse * intensity;
+            if (shine > 0.0) color += shine * intensity;
+        }
     }
     return color;
 }
 
-dvec3 Tracer::trace(Ray ray, double& rays) const {
+namespace {
+
+// A ray of the tree waiting to be traced.
+struct Branch {
+    Ray ray;
+    dvec3 from;  // the surface point the ray leaves; its origin is just off it
+    dvec3 weight;
+    int depth;
+    Media media;
+};
+
+double max_of(const dvec3& v) { return std::max({v.r, v.g, v.b}); }
+
+}  // namespace
+
+dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
+    const double inf = std::numeric_limits<double>::infinity();
     dvec3 color(0.0);
-    dvec3 weight(1.0);
-    for (int depth = 0; depth <= scene_.render.max_depth; ++depth) {
+    Branch b{camera_ray, camera_ray.origin, dvec3(1.0), 0, Media{}};
+    int passes = 0;  // surfaces passed through on this path
+    std::array<Branch, kPendingSize> pending;
+    std::size_t waiting = 0;
+    for (;;) {
         rays += 1.0;
         Hit hit;
-        if (!closest_hit(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
-            return color + weight * scene_.render.background;
+        bool found = closest_hit(b.ray, 0.0, inf, hit);
+        // Media absorb between surface points (not from the offset origin): the true thickness.
+        if (b.media.size() > 0) b.weight *= absorption_along(b.media, found ? glm::length(b.ray.origin + hit.t * b.ray.dir - b.from) : inf);
+        bool goes_on = false;
+        if (!found) {
+            color += b.weight * scene_.render.background;
+        } else {
+            dvec3 p = b.ray.origin + hit.t * b.ray.dir;
+            dvec3 n = glm::dot(hit.normal, b.ray.dir) > 0.0 ? -hit.normal : hit.normal;  // two-sided
+            const Material& m = scene_.materials[hit.object->material];
+            const bool clear = m.transparent();
+            const bool sheet = clear && is_thin_sheet(hit.object->shape);
+            Media beyond = clear && !sheet ? b.media.crossed(hit.object->material) : b.media;
+            if (clear && !sheet && beyond.innermost() == b.media.innermost()) {
+                // The same medium on both sides (a liquid's wall inside its glass): invisible.
+                b.media = beyond;
+                b.ray = {past_surface(p, n, b.ray.dir), b.ray.dir};
+                b.from = p;
+                goes_on = ++passes <= kMaxPassThrough;
+            } else {
+                Appearance look = appearance_at(m, hit, p, n);
+                dvec3 scale = b.weight * (1.0 - m.reflection);
+                color += scale * shade_local(m, look.pigment, p, n, look.normal, b.ray.dir, b.media,
+                                             hash_u32(seed + std::uint32_t(b.depth)), scale, rays);
+                // A bump tilts the mirror direction; refraction follows the geometric surface.
+                Branch reflected{{p + ray_offset(p) * n, bounce_direction(b.ray.dir, look.normal, n)}, p,
+                                 b.weight * m.reflection, b.depth + 1, b.media};
+                Branch refracted{{p, b.ray.dir}, p, dvec3(0.0), b.depth + 1, beyond};
+                if (clear) {
+                    // Fresnel splits what the surface transmits between the mirror and the refracted ray.
+                    double n1 = ior_of(b.media);
+                    double n2 = sheet ? m.ior : ior_of(beyond);
+                    double cos_i = -glm::dot(b.ray.dir, n);
+                    Fresnel f = fresnel(cos_i, n1, n2);
+                    dvec3 passing = b.weight * (1.0 - m.reflection) * m.transmission;
+                    reflected.weight += passing * f.reflectance;
+                    refracted.weight = passing * (1.0 - f.reflectance);
+                    if (!sheet) refracted.ray.dir = refract(b.ray.dir, n, n1 / n2, cos_i, f.cos_t);
+                    refracted.ray.origin = past_surface(p, n, refracted.ray.dir);
+                }
+                // Past max_depth the children contribute black (POV-Ray's max_trace_level rule).
+                bool reflects = b.depth < scene_.render.max_depth && max_of(reflected.weight) >= kMinWeight;
+                bool refracts = b.depth < scene_.render.max_depth && max_of(refracted.weight) >= kMinWeight;
+                if (reflects && refracts) {
+                    // The heavier goes on now, the lighter waits (dropped when the stack is full).
+                    bool reflected_first = max_of(reflected.weight) > max_of(refracted.weight);
+                    if (waiting < kPendingSize) pending[waiting++] = reflected_first ? refracted : reflected;
+                    b = reflected_first ? reflected : refracted;
+                } else if (reflects || refracts) {
+                    b = reflects ? reflected : refracted;
+                }
+                goes_on = reflects || refracts;
+            }
         }
-        dvec3 p = ray.origin + hit.t * ray.dir;
-        dvec3 n = glm::dot(hit.normal, ray.dir) > 0.0 ? -hit.normal : hit.normal;  // two-sided
-        const Material& m = scene_.materials[hit.object->material];
-        Appearance look = appearance_at(m, hit, p, n);
-        color += weight * (1.0 - m.reflection) * shade_local(m, look.pigment, p, n, look.normal, ray.dir, rays);
-        weight *= m.reflection;
-        if (std::max({weight.r, weight.g, weight.b}) < kMinWeight) return color;
-        ray = {p + ray_offset(p) * n, bounce_direction(ray.dir, look.normal, n)};
+        if (goes_on) continue;
+        if (waiting == 0) return color;
+        b = pending[--waiting];
+        passes = 0;
     }
-    return color;  // past max_depth the reflected ray contributes black
 }
 
 }  // namespace lancer::cpu

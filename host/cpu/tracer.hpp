@@ -3,9 +3,11 @@
 // precision, sharing the scene model but none of the shader's code.
 #include <glm/vec2.hpp>
 
+#include <cstdint>
 #include <vector>
 
 #include "accel/bvh.hpp"
+#include "cpu/dielectric.hpp"
 #include "cpu/ray.hpp"
 #include "render/renderer.hpp"
 
@@ -24,17 +26,27 @@ public:
     // With a cache, a BVH over the same boxes as the last one is not built again (animations).
     explicit Tracer(const Scene& scene, Acceleration acceleration = Acceleration::Bvh, BvhCache* cache = nullptr);
 
-    // Colour seen along `ray`, following mirror reflections; adds every ray traced to `rays`.
-    dvec3 trace(Ray ray, double& rays) const;
+    // Colour seen along `ray`, following the ray tree of reflections and refractions; adds every
+    // ray traced to `rays`. `seed` identifies the camera sample (camera_sample_seed in
+    // cpu/lights.hpp), for the places of area light samples.
+    dvec3 trace(Ray ray, std::uint32_t seed, double& rays) const;
 
     bool closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) const;
     bool occluded(const Ray& ray, double t_min, double t_max) const;
 
-    // Ambient + per-light diffuse and specular at p of a surface with this pigment. n is the
-    // geometric normal (facing the viewer: which lights are in front, where shadow rays start),
-    // shading_n the normal that lights it (n, or tilted by a bump). view_dir is the ray's.
+    // Ambient + per light (sample) diffuse and specular at p of a surface with this pigment. n is
+    // the geometric normal (facing the viewer: which lights are in front, where shadow rays
+    // start), shading_n the normal that lights it (n, or tilted by a bump). view_dir is the ray's,
+    // which travels inside `media`; `seed` places area light samples; `scale` is what the result
+    // is multiplied by on its way to the pixel, for skipping samples too faint to matter.
     dvec3 shade_local(const Material& m, const dvec3& pigment, const dvec3& p, const dvec3& n, const dvec3& shading_n,
-                      const dvec3& view_dir, double& rays) const;
+                      const dvec3& view_dir, const Media& media, std::uint32_t seed, const dvec3& scale,
+                      double& rays) const;
+
+    // The fraction of a light's colour that reaches the surface point `from` from the light point
+    // q, along a straight shadow ray starting at `origin` (just off the surface) inside `media`:
+    // 0 behind an opaque surface; tinted by transparent ones and absorbed by media on the way.
+    dvec3 transmittance(dvec3 from, dvec3 origin, const dvec3& q, Media media) const;
 
 private:
     // Calls visit(object) for every object whose box the ray enters within [0, t_max()], nearest
@@ -42,7 +54,11 @@ private:
     template <typename Visit, typename TMax>
     void for_each_candidate(const Ray& ray, TMax t_max, Visit visit) const;
 
+    dvec3 absorption_along(const Media& media, double distance) const;  // by the innermost medium
+    double ior_of(const Media& media) const;                             // of the innermost medium, 1 for air
+
     const Scene& scene_;
+    bool has_transparency_ = false;  // without, shadow rays only ask whether anything is in the way
     std::vector<const Object*> unbounded_;  // tested by every ray (planes; everything without a BVH)
     std::vector<const Object*> bounded_;    // in BVH leaf order
     std::vector<BvhNode> nodes_;

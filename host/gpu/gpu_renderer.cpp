@@ -157,6 +157,11 @@ gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
     variant.check_loop_limit = context_->info().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
     variant.has_textures = !packed.textures.empty();
     variant.has_patterns = !packed.patterns.empty();
+    variant.has_transparency = packed.features.transparency;
+    variant.has_area_lights = packed.features.area_lights;
+    variant.has_spot_lights = packed.features.spot_lights;
+    variant.has_falloff = packed.features.falloff;
+    variant.has_blinn = packed.features.blinn;
     // The loader keeps textures within 2^27 bytes, the least any Vulkan device allows.
     const std::size_t texel_bytes = packed.texels.size() * sizeof(gpu::uint);
     if (texel_bytes > context_->limits().maxStorageBufferRange)

@@ -63,17 +63,31 @@ void TraceLayout::release() noexcept {
 ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layout,
                                  const std::vector<std::uint32_t>& spirv, const PipelineVariant& variant)
     : device_(context.device()) {
-    const VkBool32 values[] = {variant.has_bezier,       variant.has_bvh,      variant.output_hits,
-                               variant.check_loop_limit, variant.has_textures, variant.has_patterns};
-    const VkSpecializationMapEntry entries[] = {{SPEC_HAS_BEZIER, 0, 4},       {SPEC_HAS_BVH, 4, 4},
-                                                {SPEC_OUTPUT_HITS, 8, 4},      {SPEC_CHECK_LOOP_LIMIT, 12, 4},
-                                                {SPEC_HAS_TEXTURES, 16, 4},    {SPEC_HAS_PATTERNS, 20, 4}};
-    static_assert(std::size(values) == std::size(entries));
+    const std::pair<uint, bool> constants[] = {
+        {SPEC_HAS_BEZIER, variant.has_bezier},
+        {SPEC_HAS_BVH, variant.has_bvh},
+        {SPEC_OUTPUT_HITS, variant.output_hits},
+        {SPEC_CHECK_LOOP_LIMIT, variant.check_loop_limit},
+        {SPEC_HAS_TEXTURES, variant.has_textures},
+        {SPEC_HAS_PATTERNS, variant.has_patterns},
+        {SPEC_HAS_TRANSPARENCY, variant.has_transparency},
+        {SPEC_HAS_AREA_LIGHTS, variant.has_area_lights},
+        {SPEC_HAS_SPOT_LIGHTS, variant.has_spot_lights},
+        {SPEC_HAS_FALLOFF, variant.has_falloff},
+        {SPEC_HAS_BLINN, variant.has_blinn},
+    };
+    constexpr std::size_t kCount = std::size(constants);
+    std::array<VkBool32, kCount> values{};
+    std::array<VkSpecializationMapEntry, kCount> entries{};
+    for (std::size_t i = 0; i < kCount; ++i) {
+        values[i] = constants[i].second ? VK_TRUE : VK_FALSE;
+        entries[i] = {constants[i].first, static_cast<std::uint32_t>(i * sizeof(VkBool32)), sizeof(VkBool32)};
+    }
     VkSpecializationInfo specialization{};
-    specialization.mapEntryCount = static_cast<std::uint32_t>(std::size(entries));
-    specialization.pMapEntries = entries;
+    specialization.mapEntryCount = static_cast<std::uint32_t>(kCount);
+    specialization.pMapEntries = entries.data();
     specialization.dataSize = sizeof(values);
-    specialization.pData = values;
+    specialization.pData = values.data();
 
     VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     module_info.codeSize = spirv.size() * sizeof(std::uint32_t);

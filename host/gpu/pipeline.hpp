@@ -27,15 +27,21 @@ private:
     VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
 };
 
-// Which optional shape families and material features a pipeline is specialised for (the shader's specialization
+// Which optional shape families and shading features a pipeline is specialised for (the shader's specialization
 // constants; see shaders/scene.glsl). Code for families a scene lacks is compiled out.
 struct PipelineVariant {
     bool has_bezier = false;
     bool has_bvh = false;
     bool output_hits = false;
     bool check_loop_limit = false;  // lavapipe; see loop_limit_reached() in shaders/trace.comp
+    // Shading features (shaders/trace.comp, shade.glsl, appearance.glsl).
     bool has_textures = false;
-    bool has_patterns = false;      // colour patterns or bumps
+    bool has_patterns = false;  // colour patterns or bumps
+    bool has_transparency = false;
+    bool has_area_lights = false;
+    bool has_spot_lights = false;
+    bool has_falloff = false;
+    bool has_blinn = false;
     auto operator<=>(const PipelineVariant&) const = default;
 };
 

@@ -169,9 +169,36 @@ struct MapPacker {
         g.color_pattern = m.pattern ? pattern(*m.pattern, 0.0) : NO_MAP;
         g.bump_pattern = m.bump ? pattern(m.bump->pattern, m.bump->amount) : NO_MAP;
         g.maps_reserved = 0;
+        g.transmission = v4(m.transmission, m.ior);
+        g.absorption = v4(m.absorption);
+        g.highlight = m.highlight == Highlight::Blinn ? HIGHLIGHT_BLINN : HIGHLIGHT_PHONG;
         return g;
     }
 };
+
+Light pack_light(const lancer::Light& l) {
+    constexpr double kDegree = M_PI / 180.0;
+    Light g{};
+    g.position = v4(l.position, l.falloff == Falloff::InverseSquare ? l.falloff_distance : 0.0);
+    g.color = v4(l.color);
+    switch (l.type) {
+        case LightType::Point: g.type = LIGHT_POINT; break;
+        case LightType::Spot:
+            g.type = LIGHT_SPOT;
+            g.direction = v4(l.direction);
+            g.spot = vec4(float(std::cos(l.outer_angle_deg * kDegree)), float(std::cos(l.inner_angle_deg * kDegree)),
+                          float(l.tightness), 0.0f);
+            break;
+        case LightType::Area:
+            g.type = LIGHT_AREA;
+            g.edge_u = v4(l.edge_u);
+            g.edge_v = v4(l.edge_v);
+            g.samples = static_cast<uint>(l.samples);
+            g.jitter = l.jitter ? 1u : 0u;
+            break;
+    }
+    return g;
+}
 
 }  // namespace
 
@@ -221,7 +248,16 @@ PackedScene pack_scene(const Scene& scene, Acceleration acceleration, BvhCache* 
     MapPacker maps{packed, {}};
     for (const lancer::Material& m : scene.materials) packed.materials.push_back(maps.material(m));
     if (!packed.patterns.empty()) packed.permutation.assign(kPerlinPermutation.begin(), kPerlinPermutation.end());
-    for (const PointLight& l : scene.lights) packed.lights.push_back({v4(l.position), v4(l.color)});
+    for (const lancer::Light& l : scene.lights) packed.lights.push_back(pack_light(l));
+    for (const lancer::Material& m : scene.materials) {
+        packed.features.transparency |= m.transparent();
+        packed.features.blinn |= m.highlight == Highlight::Blinn;
+    }
+    for (const lancer::Light& l : scene.lights) {
+        packed.features.area_lights |= l.type == LightType::Area;
+        packed.features.spot_lights |= l.type == LightType::Spot;
+        packed.features.falloff |= l.falloff != Falloff::None;
+    }
     return packed;
 }
 

@@ -11,6 +11,15 @@
 
 namespace lancer::gpu {
 
+// The optional shading features a scene uses: the pipeline compiles out the others.
+struct ShadingFeatures {
+    bool transparency = false;
+    bool area_lights = false;
+    bool spot_lights = false;
+    bool falloff = false;
+    bool blinn = false;
+};
+
 struct PackedScene {
     std::vector<Primitive> primitives;
     std::vector<BvhNode> nodes;
@@ -24,6 +33,7 @@ struct PackedScene {
     std::vector<int> permutation;       // Ken Perlin's, when there are patterns
     std::vector<Light> lights;
     uint unbounded_count = 0;
+    ShadingFeatures features;
 };
 
 // With a cache, a BVH over the same boxes as the last one is not built again (animations).

@@ -56,12 +56,15 @@ Scene scene_at(const Scene& scene, double time) {
         s.camera.eye = a.camera_orbit->position_at(time);
         s.camera.look_at = a.camera_orbit->center;
     }
+    // A light moves by its position (an area light's centre: the rectangle moves as a whole). A
+    // spot given point_at keeps aiming at that point; one given a direction keeps its direction.
     for (const LightOrbit& o : a.light_orbits) s.lights[o.light].position = o.orbit.position_at(time);
     for (const LightKeys& k : a.light_keys) {
-        PointLight& light = s.lights[k.light];
+        Light& light = s.lights[k.light];
         if (k.position) light.position = sample(*k.position, time, a.cyclic);
         if (k.color) light.color = glm::max(sample(*k.color, time, a.cyclic), dvec3(0.0));
     }
+    for (Light& light : s.lights) aim_spot(light);
     for (const ObjectKeys& k : a.object_keys) translate(s.objects[k.object].shape, sample(k.translate, time, a.cyclic));
     return s;
 }

@@ -12,32 +12,15 @@
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
 #include "scene/parse_animation.hpp"
+#include "scene/parse_lights.hpp"
 #include "scene/parse_material_maps.hpp"
+#include "scene/parse_optics.hpp"
 #include "scene/parse_shapes.hpp"
 #include "scene/string_position.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace lancer {
 namespace {
-
-// Colours are linear RGB; values above 1 are allowed (bright lights), negative ones are not.
-dvec3 check_color(TableReader& t, std::string_view key, dvec3 c) {
-    if (c.r < 0.0 || c.g < 0.0 || c.b < 0.0) t.fail(key, std::string(key) + " components must not be negative");
-    return c;
-}
-
-double check_range(TableReader& t, std::string_view key, double v, double lo, double hi) {
-    if (v < lo || v > hi)
-        t.fail(key, fmt::format("{} must be in [{:g}, {:g}], not {:g}", key, lo, hi, v));
-    return v;
-}
-
-int check_int_range(TableReader& t, std::string_view key, int v, int lo, int hi) {
-    if (v < lo || v > hi)
-        t.fail(key, std::string(key) + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
-                        ", not " + std::to_string(v));
-    return v;
-}
 
 void read_render(TableReader& t, RenderSettings& r) {
     r.width = check_int_range(t, "width", t.integer("width", r.width), 1, limits::kMaxImageSide);
@@ -62,15 +45,6 @@ void read_camera(TableReader& t, CameraSpec& c) {
     } catch (const UserError& e) {
         throw SceneError(t.location(t.has("up") ? "up" : "look_at"), e.what());
     }
-}
-
-PointLight read_light(TableReader& t) {
-    PointLight l;
-    l.position = t.required_vec3("position");
-    l.color = check_color(t, "color", t.vec3("color", l.color));
-    l.name = t.string("name", "");
-    t.finish();
-    return l;
 }
 
 Material read_material(TableReader& t, const std::string& name, TextureLibrary& textures) {
@@ -99,6 +73,7 @@ Material read_material(TableReader& t, const std::string& name, TextureLibrary& 
     if (!(m.shininess > 0.0)) t.fail("shininess", "shininess must be positive");
     m.reflection = check_range(t, "reflection", t.number("reflection", m.reflection), 0.0, 1.0);
     read_material_maps(t, m, textures);
+    read_optics(t, m);
     t.finish();
     return m;
 }

@@ -8,6 +8,17 @@
 #include <glm/geometric.hpp>
 
 namespace lancer {
+
+void read_edges(TableReader& t, const std::string& what, dvec3& edge_u, dvec3& edge_v) {
+    edge_u = t.required_vec3("edge_u");
+    edge_v = t.required_vec3("edge_v");
+    double lu = glm::length(edge_u), lv = glm::length(edge_v);
+    if (!(lu > 0.0)) t.fail("edge_u", what + " edge_u must not be the zero vector");
+    if (!(lv > 0.0)) t.fail("edge_v", what + " edge_v must not be the zero vector");
+    if (glm::length(glm::cross(edge_u, edge_v)) <= 1e-9 * lu * lv)
+        t.fail("edge_v", what + " edges are parallel: the " + what + " has no area");
+}
+
 namespace {
 
 Shape read_sphere(TableReader& t) {
@@ -32,13 +43,7 @@ Shape read_plane(TableReader& t) {
 Shape read_rectangle(TableReader& t) {
     Rectangle r;
     r.corner = t.required_vec3("corner");
-    r.edge_u = t.required_vec3("edge_u");
-    r.edge_v = t.required_vec3("edge_v");
-    double lu = glm::length(r.edge_u), lv = glm::length(r.edge_v);
-    if (!(lu > 0.0)) t.fail("edge_u", "rectangle edge_u must not be the zero vector");
-    if (!(lv > 0.0)) t.fail("edge_v", "rectangle edge_v must not be the zero vector");
-    if (glm::length(glm::cross(r.edge_u, r.edge_v)) <= 1e-9 * lu * lv)
-        t.fail("edge_v", "rectangle edges are parallel: the rectangle has no area");
+    read_edges(t, "rectangle", r.edge_u, r.edge_v);
     return r;
 }
 

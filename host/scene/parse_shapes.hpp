@@ -12,6 +12,10 @@ namespace lancer {
 
 using ShapeReader = std::function<Shape(TableReader&)>;
 
+// Reads edge_u and edge_v of a parallelogram (a rectangle, an area light): non-zero and not
+// parallel; `what` names it in messages.
+void read_edges(TableReader& t, const std::string& what, dvec3& edge_u, dvec3& edge_v);
+
 // Object type name -> reader, e.g. "sphere" -> read_sphere.
 const std::map<std::string, ShapeReader, std::less<>>& shape_readers();
 

@@ -25,7 +25,7 @@ struct RenderSettings {
     int width = 640;
     int height = 480;
     int samples = 3;    // an N x N grid of rays per pixel
-    int max_depth = 5;  // reflection bounces after the camera ray
+    int max_depth = 5;  // levels of reflection and refraction after the camera ray
     dvec3 background{0.0, 0.0, 0.0};
 };
 
@@ -36,16 +36,56 @@ struct CameraSpec {
     double fov_deg = 60.0;  // vertical field of view
 };
 
-struct PointLight {
-    dvec3 position{0.0};
-    dvec3 color{1.0};
-    std::string name;  // optional, for [animation] to refer to it
+enum class LightType {
+    Point,  // all directions from `position`
+    Spot,   // a cone from `position` around `direction`
+    Area,   // a rectangle centred on `position`, sampled n x n for soft shadows
 };
+
+enum class Falloff {
+    None,           // the same intensity at every distance
+    InverseSquare,  // color * (falloff_distance / d)^2
+};
+
+// A light ([[light]]). Every type has position, color, name and the distance fall-off; the
+// other members belong to one type (docs/scene-format.md, "[[light]]").
+struct Light {
+    LightType type = LightType::Point;
+    dvec3 position{0.0};  // point and spot: where it is; area: the centre of its rectangle
+    dvec3 color{1.0};     // with fall-off: the intensity at falloff_distance
+    std::string name;     // optional, for [animation] to refer to it
+    Falloff falloff = Falloff::None;
+    double falloff_distance = 1.0;
+
+    // Spot (POV-Ray's spotlight): full intensity within inner_angle of the axis, none beyond
+    // outer_angle, a smooth cubic between; times cos(angle)^tightness.
+    dvec3 direction{0.0, -1.0, 0.0};  // unit axis of the cone
+    std::optional<dvec3> point_at;    // when given, the spot keeps aiming at it as it moves
+    double inner_angle_deg = 30.0;
+    double outer_angle_deg = 45.0;
+    double tightness = 0.0;
+
+    // Area: the rectangle position + a * edge_u + b * edge_v, a, b in [-1/2, 1/2], seen from a
+    // shading point as samples x samples point lights of color / samples^2 each.
+    dvec3 edge_u{0.0};
+    dvec3 edge_v{0.0};
+    int samples = 4;
+    bool jitter = true;  // each sample at a hashed place within its cell, else at the cell's centre
+};
+
+// Points a spot light with point_at at it again (after its position moved); other lights and
+// spots given a fixed direction are left as they are.
+void aim_spot(Light& light);
 
 struct Checker {
     dvec3 color_a{1.0};  // where floor(x/s)+floor(y/s)+floor(z/s) is even
     dvec3 color_b{0.0};
     double size = 1.0;
+};
+
+enum class Highlight {
+    Phong,  // k_s * (R.L)^n_s, R the mirrored view ray
+    Blinn,  // k_s * (N.H)^n_s, H the unit half vector between L and the view direction
 };
 
 // Phong material. Defaults are POV-Ray's finish defaults, so ported scenes look the same.
@@ -62,6 +102,14 @@ struct Material {
     std::optional<ImageTexture> texture;
     std::optional<Pattern> pattern;
     std::optional<Bump> bump;
+
+    // Optics: refraction and the highlight model (docs/scene-format.md, "Refraction").
+    dvec3 transmission{0.0};  // T per channel: 0 is opaque; above 0 the surfaces bound a dielectric
+    double ior = 1.0;         // index of refraction of the inside
+    dvec3 absorption{0.0};    // Beer-Lambert coefficient per unit distance inside
+    Highlight highlight = Highlight::Phong;
+
+    bool transparent() const { return transmission.r > 0.0 || transmission.g > 0.0 || transmission.b > 0.0; }
 };
 
 struct Sphere {
@@ -125,7 +173,7 @@ struct Scene {
     RenderSettings render;
     CameraSpec camera;
     dvec3 ambient{1.0};  // I_scene, scaled per material by Material::ambient
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     std::vector<Material> materials;
     std::vector<Object> objects;
     // Files the scene read besides itself (patch files, textures), for `lancer watch` and `view`.

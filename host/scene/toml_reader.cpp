@@ -156,4 +156,32 @@ void TableReader::fail(std::string_view key, const std::string& message) const {
     throw SceneError(location(key), message);
 }
 
+dvec3 check_color(TableReader& t, std::string_view key, dvec3 c) {
+    if (c.r < 0.0 || c.g < 0.0 || c.b < 0.0) t.fail(key, std::string(key) + " components must not be negative");
+    return c;
+}
+
+double check_range(TableReader& t, std::string_view key, double v, double lo, double hi) {
+    if (v < lo || v > hi) t.fail(key, fmt::format("{} must be in [{:g}, {:g}], not {:g}", key, lo, hi, v));
+    return v;
+}
+
+int check_int_range(TableReader& t, std::string_view key, int v, int lo, int hi) {
+    if (v < lo || v > hi) t.fail(key, fmt::format("{} must be between {} and {}, not {}", key, lo, hi, v));
+    return v;
+}
+
+std::size_t one_of(TableReader& t, std::string_view key, std::string_view what, const std::vector<std::string>& names,
+                   const std::string& fallback) {
+    std::string value = t.string(key, fallback);
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == value) return i;
+    std::string suggestion = closest_match(value, std::set<std::string, std::less<>>(names.begin(), names.end()));
+    if (!suggestion.empty()) t.fail(key, fmt::format("unknown {} '{}' (did you mean '{}'?)", what, value, suggestion));
+    std::string listed;  // "a", "b" or "c"
+    for (std::size_t i = 0; i < names.size(); ++i)
+        listed += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + ("\"" + names[i] + "\"");
+    t.fail(key, fmt::format("unknown {} '{}' (use {})", what, value, listed));
+}
+
 }  // namespace lancer

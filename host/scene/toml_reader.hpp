@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -56,6 +57,16 @@ private:
     std::string what_;
     std::set<std::string, std::less<>> known_;
 };
+
+// Value checks shared by the readers; each fails at the key's value with a message naming it.
+// Colours are linear RGB; values above 1 are allowed (bright lights), negative ones are not.
+dvec3 check_color(TableReader& t, std::string_view key, dvec3 c);
+double check_range(TableReader& t, std::string_view key, double v, double lo, double hi);
+int check_int_range(TableReader& t, std::string_view key, int v, int lo, int hi);
+// The string at `key` (or `fallback`) as the index of one of `names`; anything else is an error
+// that lists them, or suggests the nearest: "unknown falloff 'inverse' (did you mean ...?)".
+std::size_t one_of(TableReader& t, std::string_view key, std::string_view what, const std::vector<std::string>& names,
+                   const std::string& fallback);
 
 SourceLocation location_of(const toml::node& node, const std::string& file);
 SourceLocation location_of(const toml::source_region& region, const std::string& file);

@@ -6,7 +6,6 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "cpu/cpu_renderer.hpp"
 #include "scene/camera.hpp"
 #include "support/test_support.hpp"
 
@@ -16,12 +15,9 @@ namespace {
 // GPU arithmetic is float: allow a few ulps of the [0, 1] range.
 constexpr float kTolerance = 2e-5f;
 
-enum class Backend { Gpu, Cpu };
+using test::Backend;
 
-FloatImage render(Backend backend, const Scene& scene) {
-    if (backend == Backend::Gpu) return test::gpu_renderer().render(scene, {});
-    return CpuRenderer().render(scene, {});
-}
+FloatImage render(Backend backend, const Scene& scene) { return test::render_on(backend, scene); }
 
 class Analytic : public testing::TestWithParam<Backend> {};
 
@@ -209,7 +205,7 @@ TEST_P(Analytic, MirrorShowsWhatItFacesUpToMaxDepth) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, Analytic, testing::Values(Backend::Gpu, Backend::Cpu),
-                         [](const auto& info) { return info.param == Backend::Gpu ? "gpu" : "cpu"; });
+                         [](const auto& info) { return test::backend_name(info.param); });
 
 }  // namespace
 }  // namespace lancer

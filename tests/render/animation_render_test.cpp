@@ -18,14 +18,10 @@
 namespace lancer {
 namespace {
 
-enum class Backend { Gpu, Cpu };
+using test::Backend;
+using test::backend_name;
 
-FloatImage render(Backend backend, const Scene& scene) {
-    if (backend == Backend::Gpu) return test::gpu_renderer().render(scene, {});
-    return CpuRenderer().render(scene, {});
-}
-
-std::string backend_name(Backend b) { return b == Backend::Gpu ? "gpu" : "cpu"; }
+FloatImage render(Backend backend, const Scene& scene) { return test::render_on(backend, scene); }
 
 bool identical(const FloatImage& a, const FloatImage& b) {
     return a.width == b.width && a.height == b.height &&
@@ -128,7 +124,7 @@ INSTANTIATE_TEST_SUITE_P(Heights, OrbitCorrectness,
                                           testing::Values(-5.0, 0.0, 2.0, 8.0, 30.0)),
                          [](const auto& info) {
                              double h = std::get<1>(info.param);
-                             return backend_name(std::get<0>(info.param)) + "_height_" + (h < 0 ? "minus_" : "") +
+                             return std::string(backend_name(std::get<0>(info.param))) + "_height_" + (h < 0 ? "minus_" : "") +
                                     std::to_string(static_cast<int>(std::abs(h)));
                          });
 
@@ -229,7 +225,7 @@ TEST_P(FrameZero, EqualsTheStillSceneBitForBit) {
     FloatImage a = render(GetParam(), scene_at(animated, frame_time(*animated.animation, 0)));
     FloatImage b = render(GetParam(), still);
     if (!identical(a, b)) {
-        std::string dir = test::save_comparison("frame-zero-" + backend_name(GetParam()), to_srgb8(a), to_srgb8(b));
+        std::string dir = test::save_comparison(std::string("frame-zero-") + backend_name(GetParam()), to_srgb8(a), to_srgb8(b));
         ADD_FAILURE() << "frame 0 differs from the still scene; images in " << dir;
     }
     // The animation does move: frame 1 is another picture.

@@ -41,6 +41,17 @@ TEST(Progressive, PassesEndOnTheWholeRenderBitForBit) {
     expect_bit_identical(render_in_passes(scene, {{0, 8}, {8, 1}}), whole);
 }
 
+// Area light samples are placed by a hash of the pixel and its grid sample, never of the pass:
+// jittered soft shadows, spots and glass end on the same bits too.
+TEST(Progressive, JitteredAreaLightsAndGlassEndOnTheWholeRender) {
+    Scene scene = load_scene(test::source_path("scenes/lights.toml"));
+    scene.render.width = 64;
+    scene.render.height = 36;
+    scene.render.samples = 3;
+    FloatImage whole = test::gpu_renderer().render(scene, {});
+    expect_bit_identical(render_in_passes(scene, {{0, 1}, {1, 3}, {4, 5}}), whole);
+}
+
 TEST(Progressive, PartialPassesHoldSumsAndRayCounts) {
     Scene scene = load_scene(test::source_path("scenes/seed.toml"));
     scene.render.width = 32;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include "cpu/cpu_renderer.hpp"
 #include "scene/load_scene.hpp"
 
 namespace lancer::test {
@@ -30,6 +31,13 @@ GpuRenderer& gpu_renderer() {
 }
 
 void release_gpu_renderer() { g_renderer.reset(); }
+
+FloatImage render_on(Backend backend, const Scene& scene) {
+    if (backend == Backend::Gpu) return gpu_renderer().render(scene, {});
+    return CpuRenderer().render(scene, {});
+}
+
+const char* backend_name(Backend backend) { return backend == Backend::Gpu ? "gpu" : "cpu"; }
 
 Scene scene_from_text(const std::string& toml) { return parse_scene(toml, "inline.toml"); }
 

@@ -19,6 +19,11 @@ GpuRenderer& gpu_renderer();
 // Destroys it (all Vulkan objects), so teardown messages of the validation layer are counted too.
 void release_gpu_renderer();
 
+// The two renderers, for tests that check both against the same expected values.
+enum class Backend { Gpu, Cpu };
+FloatImage render_on(Backend backend, const Scene& scene);  // the shared GPU renderer, or a CpuRenderer
+const char* backend_name(Backend backend);                   // "gpu" or "cpu", for test names
+
 // Loads a scene from text (for tests that build scenes inline).
 Scene scene_from_text(const std::string& toml);
 

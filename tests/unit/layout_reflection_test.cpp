@@ -90,6 +90,9 @@ TEST(Layout, HostOffsetsMatchGlslangReflection) {
     EXPECT_OFFSET("materials.texture_map", Material, texture_map);
     EXPECT_OFFSET("materials.color_pattern", Material, color_pattern);
     EXPECT_OFFSET("materials.bump_pattern", Material, bump_pattern);
+    EXPECT_OFFSET("materials.transmission", Material, transmission);
+    EXPECT_OFFSET("materials.absorption", Material, absorption);
+    EXPECT_OFFSET("materials.highlight", Material, highlight);
     EXPECT_OFFSET("textures.to_image_s", TextureInfo, to_image_s);
     EXPECT_OFFSET("textures.to_image_t", TextureInfo, to_image_t);
     EXPECT_OFFSET("textures.texel_offset", TextureInfo, texel_offset);
@@ -106,6 +109,13 @@ TEST(Layout, HostOffsetsMatchGlslangReflection) {
     EXPECT_OFFSET("patterns.colors", PatternInfo, colors);
     EXPECT_OFFSET("lights.position", Light, position);
     EXPECT_OFFSET("lights.color", Light, color);
+    EXPECT_OFFSET("lights.direction", Light, direction);
+    EXPECT_OFFSET("lights.spot", Light, spot);
+    EXPECT_OFFSET("lights.edge_u", Light, edge_u);
+    EXPECT_OFFSET("lights.edge_v", Light, edge_v);
+    EXPECT_OFFSET("lights.type", Light, type);
+    EXPECT_OFFSET("lights.samples", Light, samples);
+    EXPECT_OFFSET("lights.jitter", Light, jitter);
     EXPECT_OFFSET("band.y0", BandParams, y0);
     EXPECT_OFFSET("band.rows", BandParams, rows);
     EXPECT_OFFSET("band.sample_first", BandParams, sample_first);
