@@ -97,7 +97,12 @@ Shape read_bezier(TableReader& t) {
     if (surface.subdivision < 0 || surface.subdivision > 4)
         t.fail("subdivision", "subdivision must be between 0 and 4 (each patch becomes 4^n leaves on the GPU)");
     glm::dmat4 m = read_transform(t);
-    for (auto& p : surface.patches) p = surface::transformed(p, m);
+    for (auto& p : surface.patches) {
+        p = surface::transformed(p, m);
+        surface::PatchBounds box = surface::bounds(p);
+        check_world_extent(t, t.has("transform") ? "transform" : file ? "file" : control_points ? "control_points" : "patches",
+                           box.min, box.max);
+    }
     return surface;
 }
 
