@@ -16,7 +16,7 @@ constexpr int kMaxObjects = 1 << 20;
 // surface::kMaxPatchesPerFile patches; a parametric surface at most 65,536 cells): many objects
 // together must not exhaust memory either. Each parametric surface also becomes a function in
 // the GPU's shader, compiled when the scene is loaded.
-constexpr long long kMaxPatches = 1 << 18;
+constexpr long long kMaxPatches = 1 << 16;
 constexpr int kMaxParametricSurfaces = 32;
 constexpr long long kMaxSceneFileBytes = 128LL << 20;
 

@@ -3,7 +3,10 @@
 //   x = "(R + r*cos(v))*cos(u)"   y = "r*sin(v)"   z = "(R + r*cos(v))*sin(u)"
 //   u = [0, "2*pi"]   v = [0, "2*pi"]   params = { R = 1, r = 0.35 }
 // Errors inside an expression point at its exact column in the scene file.
+#include <limits>
+
 #include <fmt/format.h>
+#include <glm/common.hpp>
 
 #include "core/magnitude.hpp"
 #include "scene/parse_surfaces.hpp"
@@ -102,7 +105,12 @@ Shape read_parametric(TableReader& t) {
                 throw SceneError(column_in_string(*t.node(axes[i]), t.file(), origin->column), origin->what());
         throw SceneError(t.location(), std::string("parametric surface: ") + e.what());
     }
-    for (const auto& cell : object.cells) check_world_extent(t, t.has("transform") ? "transform" : "x", cell.lo, cell.hi);
+    dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (const auto& cell : object.cells) {
+        lo = glm::min(lo, cell.lo);
+        hi = glm::max(hi, cell.hi);
+    }
+    check_world_extent(t, t.has("transform") ? "transform" : "x", lo, hi);
     return object;
 }
 
