@@ -8,6 +8,8 @@
 
 #include "accel/bvh.hpp"
 #include "accel/shape_bounds.hpp"
+#include "cpu/cpu_renderer.hpp"
+#include "gpu/scene_packing.hpp"
 #include "scene/animation.hpp"
 #include "scene/camera.hpp"
 #include "scene/load_scene.hpp"
@@ -101,6 +103,47 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
     require(bvh.order.size() == boxes.size(), when + ": the BVH lost primitives");
 }
 
+namespace {
+
+template <class V>
+void require_finite_floats(const V& v, const std::string& what) {
+    for (int i = 0; i < 4; ++i) require(std::isfinite(v[i]), what + " is not finite in float");
+}
+
+// What the renderers make of an accepted scene, rendered tiny: the GPU's packed buffers (every
+// float finite: the magnitude limit at work) and the CPU reference's pixels (finite).
+void check_renderers_input(const Scene& accepted, const std::string& when) {
+    Scene scene = accepted;
+    scene.render.width = 3;
+    scene.render.height = 2;
+    scene.render.samples = 1;
+    scene.render.max_depth = std::min(scene.render.max_depth, 3);
+    gpu::PackedScene packed = gpu::pack_scene(scene);
+    gpu::FrameParams frame = gpu::pack_frame(scene, packed);
+    for (const auto& v : {frame.eye, frame.forward, frame.right, frame.up, frame.background, frame.ambient})
+        require_finite_floats(v, when + ": frame");
+    for (const auto& p : packed.primitives)
+        for (const auto& v : {p.p0, p.p1, p.p2}) require_finite_floats(v, when + ": primitive");
+    for (const auto& n : packed.nodes) {
+        require_finite_floats(n.lo, when + ": BVH node");
+        require_finite_floats(n.hi, when + ": BVH node");
+    }
+    for (const auto& leaf : packed.patches)
+        for (const auto& v : leaf.points) require_finite_floats(v, when + ": patch leaf");
+    for (const auto& c : packed.cells)
+        for (const auto& v : {c.p00, c.p10, c.p01, c.p11}) require_finite_floats(v, when + ": parametric cell");
+    for (const auto& m : packed.materials)
+        for (const auto& v : {m.color, m.color2, m.phong}) require_finite_floats(v, when + ": material");
+    for (const auto& l : packed.lights) {
+        require_finite_floats(l.position, when + ": light");
+        require_finite_floats(l.color, when + ": light");
+    }
+    FloatImage image = CpuRenderer(1).render(scene, {});
+    for (const auto& pixel : image.pixels) require_finite_floats(pixel, when + ": a pixel of the CPU reference");
+}
+
+}  // namespace
+
 void scene_entry(const std::uint8_t* data, std::size_t size) {
     // Patch files named in the scene are found beside the shipped scenes (file = "teapot.bpt").
     static const std::string path = std::string(LANCER_SOURCE_DIR) + "/scenes/fuzz-input.toml";
@@ -111,9 +154,16 @@ void scene_entry(const std::uint8_t* data, std::size_t size) {
         return;  // rejected with a message: the expected outcome for most inputs
     }
     check_scene_invariants(scene, "the scene");
-    if (!scene.animation) return;
+    if (!scene.animation) {
+        check_renderers_input(scene, "the scene");
+        return;
+    }
     const Animation& a = *scene.animation;
-    for (int frame : {0, a.frames / 2, a.frames - 1}) check_scene_invariants(scene_at(scene, frame_time(a, frame)), fmt::format("frame {}", frame));
+    for (int frame : {0, a.frames / 2, a.frames - 1}) {
+        Scene still = scene_at(scene, frame_time(a, frame));
+        check_scene_invariants(still, fmt::format("frame {}", frame));
+        check_renderers_input(still, fmt::format("frame {}", frame));
+    }
 }
 
 void expression_entry(const std::uint8_t* data, std::size_t size) {

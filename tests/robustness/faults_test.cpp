@@ -158,6 +158,7 @@ TEST(Faults, AFramePathThatIsADirectoryStopsTheAnimation) {
     auto r = test::run_lancer("render " + kAnimation + " --frames 0-2 -o " + dir + "/f_%d.png");
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_EQ(last_line(r.err), "lancer: error: cannot write '" + dir + "/f_1.png': it is a directory");
+    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
     EXPECT_EQ(listing(dir), "f_0.png f_1.png ");
     EXPECT_EQ(read_png(dir + "/f_0.png").width, 48);
 }
@@ -198,6 +199,7 @@ TEST_P(Interrupt, InTheMiddleOfAStillWritesNothing) {
     std::string expected = "lancer: interrupted by " + std::string(c.signal_number == SIGINT ? "SIGINT" : "SIGTERM") +
                            ": '" + out + "' was not written";
     EXPECT_EQ(last_line(lancer.output()), expected) << lancer.output();
+    EXPECT_EQ(lancer.output().find("validation"), std::string::npos) << lancer.output();
     EXPECT_EQ(listing(dir), "") << "no partial PNG, no temporary file";
 }
 
@@ -224,6 +226,7 @@ TEST_P(Interrupt, InTheMiddleOfAFrameKeepsTheFramesBefore) {
               "lancer: interrupted by " + std::string(c.signal_number == SIGINT ? "SIGINT" : "SIGTERM") + ": frame 1 ('" +
                   dir + "/f_1.png') was not written; frame(s) 0 are complete; run the same command again to resume")
         << lancer.output();
+    EXPECT_EQ(lancer.output().find("validation"), std::string::npos) << lancer.output();
     EXPECT_EQ(listing(dir), "f_0.png ") << "no partial frame, no temporary file";
     struct stat after {};
     ASSERT_EQ(::stat((dir + "/f_0.png").c_str(), &after), 0);

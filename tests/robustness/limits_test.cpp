@@ -126,6 +126,7 @@ TEST(GpuMemoryBudget, ASceneTooLargeForTheDeviceIsAClearError) {
               0u)
         << r.err;
     EXPECT_NE(r.err.find("maxStorageBufferRange"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line, no validation message: " << r.err;
     EXPECT_FALSE(test::file_exists(out));
 }
 

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Rebuilds each fuzz corpus in tests/fuzz/corpus/TARGET/ as the smallest set of inputs that keeps
+# the coverage of the corpus and of everything fuzzing runs have found since
+# (build-asan/fuzz-work/TARGET/, written by tests/fuzz/run.sh): libFuzzer's -merge=1.
+#
+#   tests/fuzz/minimize.sh [TARGET...]        (default: scene expression patch)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+targets=("$@")
+((${#targets[@]})) || targets=(scene expression patch)
+build="${LANCER_ASAN_BUILD:-build-asan}"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
+for target in "${targets[@]}"; do
+  merged=$(mktemp -d)
+  mkdir -p "$build/fuzz-work/$target"
+  "$build/fuzz/fuzz_$target" -merge=1 -timeout=10 -rss_limit_mb=2048 "$merged" "tests/fuzz/corpus/$target" \
+    "$build/fuzz-work/$target" >"$build/fuzz-merge-$target.log" 2>&1
+  rm -rf "tests/fuzz/corpus/$target"
+  mv "$merged" "tests/fuzz/corpus/$target"
+  chmod 755 "tests/fuzz/corpus/$target"
+  echo "minimize: $target: $(ls "tests/fuzz/corpus/$target" | wc -l) files, $(du -sh "tests/fuzz/corpus/$target" | cut -f1)" >&2
+done
