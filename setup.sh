@@ -4,8 +4,8 @@
 #   ./setup.sh render   install the packages, build, render scenes/seed.toml to seed.png
 #   ./setup.sh test     install the packages, build, run the whole test suite
 #   ./setup.sh build    install the packages and build only
-#   ./setup.sh sanitize also clang: the asan preset (ASan + UBSan) in build-asan/, whole suite under it
-#   ./setup.sh fuzz [S] also clang: the fuzz targets, each run for S seconds (default 60; tests/fuzz/run.sh)
+#   ./setup.sh sanitize the asan preset (ASan + UBSan) in build-asan/, and the whole suite under it
+#   ./setup.sh fuzz [S] also clang: the fuzz targets in build-fuzz/, each run for S seconds (default 60)
 #
 # Packages are installed only when one is missing, so re-running is quick.
 set -euo pipefail
@@ -25,9 +25,9 @@ packages=(
   ffmpeg
   libsdl2-dev xvfb xdotool x11-apps
 )
-# The sanitizer build and the fuzzers need clang, its runtimes (ASan, UBSan, libFuzzer) and
-# llvm-symbolizer for readable stack traces; the normal build does not.
-case "$mode" in sanitize|fuzz) packages+=(clang libclang-rt-14-dev llvm) ;; esac
+# The fuzzers need clang, its runtimes (ASan, UBSan, libFuzzer) and llvm-symbolizer for readable
+# stack traces; the other builds use g++ (whose sanitizer runtimes come with it).
+if [ "$mode" = fuzz ]; then packages+=(clang libclang-rt-14-dev llvm); fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -49,8 +49,8 @@ case "$mode" in
     exit
     ;;
   fuzz)
-    cmake --preset asan >/dev/null
-    cmake --build --preset asan --parallel --target fuzz_scene fuzz_expression fuzz_patch
+    cmake --preset fuzz >/dev/null
+    cmake --build --preset fuzz --parallel
     exec tests/fuzz/run.sh "${2:-60}"
     ;;
 esac

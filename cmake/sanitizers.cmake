@@ -15,8 +15,12 @@ if(LANCER_SANITIZE)
   # -fno-sanitize-recover: an undefined-behaviour report is an error that stops the program,
   # not a line in a log nobody reads. -fno-sanitize=vptr: the dynamic-type check needs the
   # typeinfo of every polymorphic class it sees, and Debian's glslang is built without RTTI.
-  add_compile_options(-fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=all -fno-omit-frame-pointer)
-  add_link_options(-fsanitize=address,undefined)
+  # float-cast-overflow: GCC's "undefined" leaves out the check that a float fits the integer it
+  # is converted to.
+  add_compile_options(-fsanitize=address,undefined,float-cast-overflow -fno-sanitize=vptr -fno-sanitize-recover=all
+                      -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined,float-cast-overflow)
+  add_compile_definitions(LANCER_SANITIZE)  # gpu/pin_loaded_libraries.cpp
   # The suppressions for leaks and reports inside the system's libraries (Mesa, SDL, X), each
   # explained in docs/robustness.md. Tests pass these to every process they start.
   set(LANCER_SANITIZER_DIR ${PROJECT_SOURCE_DIR}/tests/sanitizers)

@@ -136,7 +136,8 @@ void GpuRenderer::upload(gpu::Buffer& buffer, std::vector<T>& shadow, std::vecto
         descriptors_dirty_ = true;
         shadow.clear();
         shadow.shrink_to_fit();
-    } else if (items.size() == shadow.size() && std::memcmp(items.data(), shadow.data(), bytes) == 0) {
+    } else if (items.size() == shadow.size() && (bytes == 0 || std::memcmp(items.data(), shadow.data(), bytes) == 0)) {
+        // (bytes == 0 first: an empty vector's data() may be null, and memcmp must not see a null pointer)
         last_upload_.bytes_skipped += bytes;
         return;
     }

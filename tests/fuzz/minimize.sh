@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Rebuilds each fuzz corpus in tests/fuzz/corpus/TARGET/ as the smallest set of inputs that keeps
 # the coverage of the corpus and of everything fuzzing runs have found since
-# (build-asan/fuzz-work/TARGET/, written by tests/fuzz/run.sh): libFuzzer's -merge=1.
+# (build-fuzz/fuzz-work/TARGET/, written by tests/fuzz/run.sh): libFuzzer's -merge=1.
 #
 #   tests/fuzz/minimize.sh [TARGET...]        (default: scene expression patch)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 targets=("$@")
 ((${#targets[@]})) || targets=(scene expression patch)
-build="${LANCER_ASAN_BUILD:-build-asan}"
+build="${LANCER_FUZZ_BUILD:-build-fuzz}"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 for target in "${targets[@]}"; do
   merged=$(mktemp -d)

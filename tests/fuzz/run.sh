@@ -2,11 +2,11 @@
 # Runs each libFuzzer target for a bounded time on the sanitizer build (ASan + UBSan), starting
 # from its corpus and the reproducers of bugs found before. Fails (exit code != 0) on any crash,
 # sanitizer report, leak, timeout or memory blow-up; the input that caused it is written to
-# build-asan/fuzz-artifacts/TARGET/ (add it to tests/fuzz/regressions/TARGET/ once fixed).
+# build-fuzz/fuzz-artifacts/TARGET/ (add it to tests/fuzz/regressions/TARGET/ once fixed).
 #
 #   tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     (default 60 s; scene expression patch)
 #
-# Inputs the run finds interesting go to build-asan/fuzz-work/TARGET/, not into the repository;
+# Inputs the run finds interesting go to build-fuzz/fuzz-work/TARGET/, not into the repository;
 # tests/fuzz/minimize.sh merges them into the corpora.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -15,7 +15,7 @@ seconds="${1:-60}"
 shift || true
 targets=("$@")
 ((${#targets[@]})) || targets=(scene expression patch)
-build="${LANCER_ASAN_BUILD:-build-asan}"
+build="${LANCER_FUZZ_BUILD:-build-fuzz}"
 
 # Reports must be complete and fatal; leaks inside system libraries are not ours (see
 # docs/robustness.md). Stack traces need llvm-symbolizer (package llvm).
@@ -27,7 +27,7 @@ declare -A max_len=([scene]=16384 [expression]=5000 [patch]=16384)
 failed=()
 for target in "${targets[@]}"; do
   binary="$build/fuzz/fuzz_$target"
-  [ -x "$binary" ] || { echo "fuzz: $binary is missing: build the asan preset first (./setup.sh fuzz)" >&2; exit 2; }
+  [ -x "$binary" ] || { echo "fuzz: $binary is missing: build the fuzz preset first (./setup.sh fuzz)" >&2; exit 2; }
   work="$build/fuzz-work/$target"
   artifacts="$build/fuzz-artifacts/$target"
   mkdir -p "$work" "$artifacts"
