@@ -1,4 +1,4 @@
-# Sanitizer and fuzzing builds (the `asan` preset in CMakePresets.json; docs/robustness.md).
+# Sanitizer and fuzzing builds (the `asan` and `fuzz` presets in CMakePresets.json; docs/robustness.md).
 #
 #   LANCER_SANITIZE  every target with AddressSanitizer (LeakSanitizer included) and
 #                    UndefinedBehaviorSanitizer; any report aborts the program, so it fails its test.
@@ -8,7 +8,7 @@ option(LANCER_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitiz
 option(LANCER_FUZZ "Build the libFuzzer targets in tests/fuzz (needs clang and LANCER_SANITIZE)" OFF)
 
 if(LANCER_FUZZ AND NOT (CMAKE_CXX_COMPILER_ID STREQUAL "Clang" AND LANCER_SANITIZE))
-  message(FATAL_ERROR "LANCER_FUZZ needs clang (CMAKE_CXX_COMPILER=clang++) and LANCER_SANITIZE=ON: use the asan preset")
+  message(FATAL_ERROR "LANCER_FUZZ needs clang (CMAKE_CXX_COMPILER=clang++) and LANCER_SANITIZE=ON: use the fuzz preset")
 endif()
 
 if(LANCER_SANITIZE)
@@ -21,13 +21,15 @@ if(LANCER_SANITIZE)
                       -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined,float-cast-overflow)
   add_compile_definitions(LANCER_SANITIZE)  # gpu/pin_loaded_libraries.cpp
-  # The suppressions for leaks and reports inside the system's libraries (Mesa, SDL, X), each
-  # explained in docs/robustness.md. Tests pass these to every process they start.
-  set(LANCER_SANITIZER_DIR ${PROJECT_SOURCE_DIR}/tests/sanitizers)
-  set(LANCER_SANITIZER_ENV
-      "ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
-      "LSAN_OPTIONS=suppressions=${LANCER_SANITIZER_DIR}/lsan.supp:print_suppressions=0"
-      "UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
+  # Options and leak suppressions (tests/sanitizers/lsan.supp, each explained in
+  # docs/robustness.md) compiled into every program, so nothing depends on the environment.
+  set(LANCER_LSAN_SUPPRESSIONS_FILE ${PROJECT_SOURCE_DIR}/tests/sanitizers/lsan.supp)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${LANCER_LSAN_SUPPRESSIONS_FILE})
+  file(READ ${LANCER_LSAN_SUPPRESSIONS_FILE} LANCER_LSAN_SUPPRESSIONS)
+  configure_file(${PROJECT_SOURCE_DIR}/cmake/sanitizer_defaults.cpp.in
+                 ${PROJECT_BINARY_DIR}/generated/sanitizer_defaults.cpp @ONLY)
+  add_library(lancer_sanitizer_defaults OBJECT ${PROJECT_BINARY_DIR}/generated/sanitizer_defaults.cpp)
+  link_libraries(lancer_sanitizer_defaults)
 endif()
 
 # The libraries the fuzz targets exercise, with coverage feedback for libFuzzer.

@@ -9,7 +9,6 @@ cd "$(dirname "$0")/../.."
 targets=("$@")
 ((${#targets[@]})) || targets=(scene expression patch)
 build="${LANCER_FUZZ_BUILD:-build-fuzz}"
-export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 for target in "${targets[@]}"; do
   merged=$(mktemp -d)
   mkdir -p "$build/fuzz-work/$target"

@@ -17,11 +17,8 @@ targets=("$@")
 ((${#targets[@]})) || targets=(scene expression patch)
 build="${LANCER_FUZZ_BUILD:-build-fuzz}"
 
-# Reports must be complete and fatal; leaks inside system libraries are not ours (see
-# docs/robustness.md). Stack traces need llvm-symbolizer (package llvm).
-export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
-export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# The sanitizers' options and leak suppressions are compiled into the fuzzers
+# (cmake/sanitizers.cmake); stack traces need llvm-symbolizer (package llvm).
 
 declare -A max_len=([scene]=16384 [expression]=5000 [patch]=16384)
 failed=()

@@ -26,12 +26,7 @@ namespace fs = std::filesystem;
 const std::string kSeed = test::source_path("scenes/seed.toml");
 const std::string kAnimation = test::source_path("tests/data/anim/small.toml");  // 6 frames, 48x27
 
-std::string fresh_dir(const std::string& name) {
-    std::string dir = test::output_dir() + "/faults-" + name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+std::string fresh_dir(const std::string& name) { return test::fresh_dir("faults-" + name); }
 
 // The names in `dir`, sorted: a temporary file left behind shows up here.
 std::string listing(const std::string& dir) {

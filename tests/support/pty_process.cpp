@@ -1,5 +1,7 @@
 #include "support/pty_process.hpp"
 
+#include "support/child_process.hpp"
+
 #include <csignal>
 
 #include <poll.h>
@@ -10,20 +12,11 @@
 namespace lancer::test {
 
 PtyProcess::PtyProcess(const std::vector<std::string>& args) {
-    std::vector<std::string> argv_strings = {LANCER_EXE};
-    argv_strings.insert(argv_strings.end(), args.begin(), args.end());
     winsize size{};
     size.ws_col = 200;  // wide enough for the whole live line
     size.ws_row = 24;
     pid_ = ::forkpty(&master_, nullptr, nullptr, &size);
-    if (pid_ == 0) {
-        ::setenv("LANCER_VALIDATION", "1", 1);
-        std::vector<char*> argv;
-        for (auto& s : argv_strings) argv.push_back(s.data());
-        argv.push_back(nullptr);
-        ::execv(argv[0], argv.data());
-        ::_exit(127);
-    }
+    if (pid_ == 0) exec_lancer(args);
 }
 
 PtyProcess::~PtyProcess() {
