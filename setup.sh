@@ -4,13 +4,15 @@
 #   ./setup.sh render   install the packages, build, render scenes/seed.toml to seed.png
 #   ./setup.sh test     install the packages, build, run the whole test suite
 #   ./setup.sh build    install the packages and build only
+#   ./setup.sh sanitize the asan preset (ASan + UBSan) in build-asan/, and the whole suite under it
+#   ./setup.sh fuzz [S] also clang: the fuzz targets in build-fuzz/, each run for S seconds (default 60)
 #
 # Packages are installed only when one is missing, so re-running is quick.
 set -euo pipefail
 cd "$(dirname "$0")"
 
 mode="${1:-build}"
-case "$mode" in render|test|build) ;; *) echo "usage: $0 render|test|build" >&2; exit 2 ;; esac
+case "$mode" in render|test|build|sanitize|fuzz) ;; *) echo "usage: $0 render|test|build|sanitize|fuzz [seconds]" >&2; exit 2 ;; esac
 
 # Every build and test dependency, all from Debian 12 (see DEVELOPERS.md for what each is for).
 packages=(
@@ -24,6 +26,9 @@ packages=(
   libsdl2-dev xvfb xdotool x11-apps
   parallel
 )
+# The fuzzers need clang, its runtimes (ASan, UBSan, libFuzzer) and llvm-symbolizer for readable
+# stack traces; the other builds use g++ (whose sanitizer runtimes come with it).
+if [ "$mode" = fuzz ]; then packages+=(clang libclang-rt-14-dev llvm); fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -36,6 +41,20 @@ if ((${#missing[@]})); then
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+case "$mode" in
+  sanitize)
+    cmake --preset asan >/dev/null
+    cmake --build --preset asan --parallel
+    ctest --preset asan --parallel "$(nproc)"
+    exit
+    ;;
+  fuzz)
+    cmake --preset fuzz >/dev/null
+    cmake --build --preset fuzz --parallel
+    exec tests/fuzz/run.sh "${2:-60}"
+    ;;
+esac
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --parallel

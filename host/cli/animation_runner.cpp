@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "cli/frame_pattern.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "cli/still_render.hpp"
 #include "cli/video.hpp"
@@ -92,22 +93,42 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
         create_frame_directory(pattern->directory());
         check_output_writable(pattern->path(todo.front()));
 
+        Interrupts interrupts;
         auto start = Clock::now();
         std::unique_ptr<Renderer> renderer = make_renderer(options);
         renderer->prepare(scene_at(scene, frame_time(animation, todo.front())));
         double startup = seconds_since(start);
         std::vector<double> times;
+        std::vector<int> written;
         double rays = 0.0;
+        // Frames are written whole (write_png is atomic) or not at all: an interrupt stops the
+        // frame in progress, and the frames before it stay as they are, to be resumed.
+        auto stop = [&](int k, const std::string& path) {
+            progress.clear();
+            renderer.reset();
+            throw Interrupted(interrupts.signal_number(),
+                              fmt::format("frame {} ('{}') was not written; {} run the same command again to resume",
+                                          k, path,
+                                          written.empty() ? std::string("no frame was finished;")
+                                                          : fmt::format("frame(s) {} are complete;", format_frame_list(written))));
+        };
         for (int k : todo) {
             std::string path = pattern->path(k);
+            if (interrupts.requested()) stop(k, path);
             Scene frame = scene_at(scene, frame_time(animation, k));
             progress.begin(k, path);
             auto frame_start = Clock::now();
-            FloatImage image = renderer->render(frame, [&](double f) {
-                progress.update(f);
-                return true;
-            });
+            FloatImage image;
+            try {
+                image = renderer->render(frame, [&](double f) {
+                    progress.update(f);
+                    return !interrupts.requested();
+                });
+            } catch (const RenderCancelled&) {
+                stop(k, path);
+            }
             write_png(path, to_srgb8(image));
+            written.push_back(k);
             times.push_back(seconds_since(frame_start));
             rays += image.total_rays();
             progress.end(times.back());

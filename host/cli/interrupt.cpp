@@ -26,7 +26,7 @@ Interrupts::Interrupts() {
     struct sigaction action {};
     action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;
+    action.sa_flags = SA_RESTART | SA_RESETHAND;
     ::sigaction(SIGINT, &action, &g_previous_int);
     ::sigaction(SIGTERM, &action, &g_previous_term);
 }
@@ -39,6 +39,17 @@ Interrupts::~Interrupts() {
         fd = -1;
     }
 }
+
+std::string signal_name(int signal_number) {
+    switch (signal_number) {
+        case SIGINT: return "SIGINT";
+        case SIGTERM: return "SIGTERM";
+        default: return "signal " + std::to_string(signal_number);
+    }
+}
+
+Interrupted::Interrupted(int signal_number, const std::string& what_was_left)
+    : std::runtime_error("interrupted by " + signal_name(signal_number) + ": " + what_was_left), signal_(signal_number) {}
 
 bool Interrupts::requested() const { return g_signal != 0; }
 int Interrupts::fd() const { return g_pipe[0]; }

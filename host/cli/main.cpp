@@ -1,16 +1,25 @@
 // lancer's command line: parses options, runs the chosen subcommand, and turns every error into
 // one message and an exit code (0 ok, 1 internal failure, 2 bad input or environment).
+#include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "gpu/context.hpp"
+#include "gpu/vk_check.hpp"
 
 int main(int argc, char** argv) {
+    // Past a file size limit (ulimit -f), a write fails with EFBIG and is reported like a full
+    // disk, instead of SIGXFSZ killing the process half way through a file.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"lancer: an exact ray tracer on Vulkan compute"};
     app.set_version_flag("--version", std::string("lancer ") + lancer::kVersion);
     app.require_subcommand(0, 1);
@@ -34,17 +43,38 @@ int main(int argc, char** argv) {
         return 2;
     }
 
-    try {
-        if (list_devices) return lancer::list_devices();
-        for (const auto& command : commands)
-            if (command.app->parsed()) return command.run();
-        std::fputs(app.help().c_str(), stdout);
-        return 2;
-    } catch (const lancer::UserError& e) {
-        std::fprintf(stderr, "%s\n", lancer::format_error(e).c_str());
-        return 2;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "lancer: internal error: %s\n", e.what());
-        return 1;
+    const int code = [&]() -> int {
+        try {
+            if (list_devices) return lancer::list_devices();
+            for (const auto& command : commands)
+                if (command.app->parsed()) return command.run();
+            std::fputs(app.help().c_str(), stdout);
+            return 2;
+        } catch (const lancer::UserError& e) {
+            std::fprintf(stderr, "%s\n", lancer::format_error(e).c_str());
+            return 2;
+        } catch (const lancer::Interrupted& e) {
+            std::fprintf(stderr, "lancer: %s\n", e.what());
+            return 128 + e.signal_number();
+        } catch (const lancer::gpu::VulkanError& e) {
+            std::fprintf(stderr, "lancer: GPU error: %s\n", e.what());
+            return 1;
+        } catch (const std::bad_alloc&) {
+            std::fprintf(stderr, "lancer: error: out of memory: render a smaller image or a smaller scene\n");
+            return 2;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "lancer: internal error: %s\n", e.what());
+            return 1;
+        }
+    }();
+    // Error paths must be as clean as successful ones: a Vulkan validation message on the way out
+    // (the renderer, and so its teardown, is gone by now) is a bug. (Successful runs check this
+    // themselves and exit with 1.)
+    if (code != 0 && code != 1) {
+        if (std::uint32_t n = lancer::gpu::validation_message_count()) {
+            std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);
+            return 1;
+        }
     }
+    return code;
 }

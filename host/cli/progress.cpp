@@ -117,10 +117,14 @@ void FrameProgress::end(double seconds) {
 
 void FrameProgress::message(const std::string& line) {
     if (quiet_) return;
-    if (dirty_) std::fprintf(stderr, "\r\033[K");
-    dirty_ = false;
+    clear();
     std::fprintf(stderr, "%s\n", line.c_str());
     std::fflush(stderr);
+}
+
+void FrameProgress::clear() {
+    if (dirty_) std::fprintf(stderr, "\r\033[K");
+    dirty_ = false;
 }
 
 }  // namespace lancer

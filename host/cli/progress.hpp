@@ -54,6 +54,8 @@ public:
     void end(double seconds);
     // A line of its own, e.g. the summary (clears the live line first).
     void message(const std::string& line);
+    // Clears the live line (before an error message).
+    void clear();
 
 private:
     void draw(double fraction);

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "gpu/context.hpp"
 #include "gpu/gpu_renderer.hpp"
@@ -16,12 +17,19 @@ int render_still(const RenderOptions& options, const Scene& scene, const std::st
     check_output_writable(output);
     std::unique_ptr<Renderer> renderer = make_renderer(options);
 
+    Interrupts interrupts;
     ProgressLine progress(options.quiet);
     auto start = std::chrono::steady_clock::now();
-    FloatImage image = renderer->render(scene, [&](double f) {
-        progress.update(output, f);
-        return true;
-    });
+    FloatImage image;
+    try {
+        image = renderer->render(scene, [&](double f) {
+            progress.update(output, f);
+            return !interrupts.requested();
+        });
+    } catch (const RenderCancelled&) {
+        progress.clear();
+        throw Interrupted(interrupts.signal_number(), "'" + output + "' was not written");
+    }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_png(output, to_srgb8(image));
 

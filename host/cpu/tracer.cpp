@@ -35,9 +35,11 @@ dvec3 pigment_at(const Material& m, const dvec3& p) {
     if (!m.checker) return m.color;
     // First colour where floor(x)+floor(y)+floor(z) is even; the bias keeps a floor lying on an
     // integer plane on one side of it despite rounding.
+    // The parity by fmod, not by converting to an integer: a checker much finer than the scene
+    // (size 1e-12 at 1e3) has cell numbers beyond any integer type.
     dvec3 cell = glm::floor(p / m.checker->size + 1e-4);
-    long long parity = static_cast<long long>(cell.x + cell.y + cell.z) & 1;
-    return parity == 0 ? m.checker->color_a : m.checker->color_b;
+    bool odd = std::fmod(std::abs(cell.x + cell.y + cell.z), 2.0) == 1.0;
+    return odd ? m.checker->color_b : m.checker->color_a;
 }
 
 Tracer::Tracer(const Scene& scene, Acceleration acceleration, BvhCache* cache) : scene_(scene) {

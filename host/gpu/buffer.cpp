@@ -5,6 +5,21 @@
 #include "gpu/vk_check.hpp"
 
 namespace lancer::gpu {
+namespace {
+
+// Host-visible and coherent: mapped once, written and read directly. Cached memory makes reading
+// the output back fast; device-local helps the GPU read scenes.
+constexpr VkMemoryPropertyFlags kRequired = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+constexpr VkMemoryPropertyFlags kPreferred = VK_MEMORY_PROPERTY_HOST_CACHED_BIT | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+
+}  // namespace
+
+DeviceMemoryLimits buffer_memory_limits(const Context& context) {
+    const VkPhysicalDeviceMemoryProperties& memory = context.memory_properties();
+    std::uint32_t type = context.memory_type(~0u, kRequired, kPreferred);
+    return {context.info().name, context.limits().maxStorageBufferRange,
+            memory.memoryHeaps[memory.memoryTypes[type].heapIndex].size};
+}
 
 Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage)
     : device_(context.device()), size_(size) {
@@ -18,10 +33,7 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
         vkGetBufferMemoryRequirements(device_, buffer_, &req);
         VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         alloc.allocationSize = req.size;
-        // Cached memory makes reading the output back fast; device-local helps the GPU read scenes.
-        alloc.memoryTypeIndex = context.memory_type(
-            req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-            VK_MEMORY_PROPERTY_HOST_CACHED_BIT | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        alloc.memoryTypeIndex = context.memory_type(req.memoryTypeBits, kRequired, kPreferred);
         VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
         VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
         VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));

@@ -7,8 +7,13 @@
 #include <cstring>
 
 #include "gpu/context.hpp"
+#include "gpu/memory_budget.hpp"
 
 namespace lancer::gpu {
+
+// How large Buffers may get on this device: maxStorageBufferRange each (the shader binds each
+// whole), and together the heap of the memory type they are made from.
+DeviceMemoryLimits buffer_memory_limits(const Context& context);
 
 class Buffer {
 public:

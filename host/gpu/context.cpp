@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "gpu/pin_loaded_libraries.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace lancer::gpu {
@@ -163,9 +164,11 @@ std::vector<DeviceInfo> Context::list_devices() {
         auto devices = physical_devices(instance);
         for (std::uint32_t i = 0; i < devices.size(); ++i) result.push_back(describe(devices[i], i));
     } catch (...) {
+        pin_loaded_libraries();
         vkDestroyInstance(instance, nullptr);
         throw;
     }
+    pin_loaded_libraries();
     vkDestroyInstance(instance, nullptr);
     return result;
 }
@@ -237,6 +240,7 @@ void Context::release() noexcept {
         messenger_ = VK_NULL_HANDLE;
     }
     if (instance_) {
+        pin_loaded_libraries();
         vkDestroyInstance(instance_, nullptr);
         instance_ = VK_NULL_HANDLE;
     }

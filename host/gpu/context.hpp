@@ -49,6 +49,7 @@ public:
     VkCommandPool command_pool() const { return command_pool_; }
     const DeviceInfo& info() const { return info_; }
     const VkPhysicalDeviceLimits& limits() const { return limits_; }
+    const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_; }
 
     // A memory type with all of `required` flags (and as many of `preferred` as possible).
     std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,

@@ -140,7 +140,8 @@ void GpuRenderer::upload(gpu::Buffer& buffer, std::vector<T>& shadow, std::vecto
         descriptors_dirty_ = true;
         shadow.clear();
         shadow.shrink_to_fit();
-    } else if (items.size() == shadow.size() && std::memcmp(items.data(), shadow.data(), bytes) == 0) {
+    } else if (items.size() == shadow.size() && (bytes == 0 || std::memcmp(items.data(), shadow.data(), bytes) == 0)) {
+        // (bytes == 0 first: an empty vector's data() may be null, and memcmp must not see a null pointer)
         last_upload_.bytes_skipped += bytes;
         return;
     }
@@ -308,6 +309,8 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
     std::size_t rows = std::clamp<std::size_t>(band_pixels / width, gpu::WORKGROUP_Y, height);
     rows = std::min(rows, max_rows);
 
+    // Before anything is packed or allocated: a scene the device cannot hold is a clear error.
+    gpu::check_memory_budget(gpu::scene_buffer_needs(scene, rows * row_bytes), gpu::buffer_memory_limits(*context_));
     gpu::PipelineVariant variant = upload_scene(scene);
     variant.output_hits = output_hits;
     ensure_program(gpu::surface_functions_glsl(scene));

@@ -39,9 +39,10 @@ const char* result_name(VkResult result) {
 void throw_vulkan_error(VkResult result, const char* call, const char* file, int line) {
     std::string where = std::filesystem::path(file).filename().string() + ":" + std::to_string(line);
     std::string message = std::string("Vulkan call failed with ") + result_name(result) + ": " + call + " (" + where + ")";
-    if (result == VK_ERROR_DEVICE_LOST) message += "; the GPU driver reset or crashed (device lost)";
     if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
-        message += "; the device ran out of memory: render a smaller image or a smaller scene";
+        throw GpuOutOfMemory("the GPU ran out of memory (" + message +
+                             "): render a smaller image or a smaller scene, or with --backend cpu");
+    if (result == VK_ERROR_DEVICE_LOST) message += "; the GPU driver reset or crashed (device lost)";
     throw VulkanError(result, message);
 }
 

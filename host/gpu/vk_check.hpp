@@ -1,10 +1,12 @@
 #pragma once
 // Every Vulkan call goes through VK_CHECK: a failure becomes a VulkanError naming the VkResult,
-// the call and the source location.
+// the call and the source location (a GpuOutOfMemory when the driver is out of memory).
 #include <stdexcept>
 #include <string>
 
 #include <vulkan/vulkan.h>
+
+#include "core/error.hpp"
 
 namespace lancer::gpu {
 
@@ -15,6 +17,13 @@ public:
 
 private:
     VkResult result_;
+};
+
+// The driver ran out of device or host memory: the scene or the image is too large for this
+// machine, which the user can change (exit code 2), unlike a lost device or a bug.
+class GpuOutOfMemory : public UserError {
+public:
+    using UserError::UserError;
 };
 
 const char* result_name(VkResult result);

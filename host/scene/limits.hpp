@@ -1,6 +1,8 @@
 #pragma once
 // lancer's documented input limits (README: "Limits"). They are checked while loading, before
 // anything is allocated for the values they bound.
+#include "core/magnitude.hpp"
+
 namespace lancer::limits {
 
 constexpr int kMaxImageSide = 16384;
@@ -11,6 +13,13 @@ constexpr int kMaxLights = 256;
 constexpr int kMaxAreaLightSamples = 16;                   // 16 x 16 = 256 shadow rays per area light
 constexpr int kMaxMaterials = 65536;
 constexpr int kMaxObjects = 1 << 20;
+// Whole-scene totals of what single objects are already limited in (a patch file holds at most
+// surface::kMaxPatchesPerFile patches; a parametric surface at most 65,536 cells): many objects
+// together must not exhaust memory either. Each parametric surface also becomes a function in
+// the GPU's shader, compiled when the scene is loaded.
+constexpr long long kMaxPatches = 1 << 16;
+constexpr int kMaxParametricSurfaces = 32;
+constexpr long long kMaxSceneFileBytes = 128LL << 20;
 
 // Textures: the GPU keeps every texel of every texture in one storage buffer, and Vulkan
 // guarantees storage buffers of 2^27 bytes (maxStorageBufferRange), i.e. 2^25 RGBA8 texels.

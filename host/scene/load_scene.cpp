@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -115,6 +115,25 @@ Object read_object(TableReader& t, const std::map<std::string, std::uint32_t, st
     return o;
 }
 
+// The scene-wide limits on surfaces (limits.hpp): parametric surfaces are counted before one is
+// read (reading subdivides it, the expensive part), patches once an object's are known.
+struct SurfaceTotals {
+    int parametric = 0;
+    long long patches = 0;
+
+    void before(TableReader& t, const std::optional<std::string>& type) {
+        if (type == "parametric" && ++parametric > limits::kMaxParametricSurfaces)
+            t.fail("type", fmt::format("too many parametric surfaces (the limit is {} per scene)",
+                                       limits::kMaxParametricSurfaces));
+    }
+    void after(TableReader& t, const Object& o) {
+        const auto* b = std::get_if<BezierSurface>(&o.shape);
+        if (b && (patches += static_cast<long long>(b->patches.size())) > limits::kMaxPatches)
+            t.fail("type", fmt::format("too many Bezier patches: {} so far (the limit is {} per scene)", patches,
+                                       limits::kMaxPatches));
+    }
+};
+
 // Calls fn(table, index) for each element of an array of tables ([[light]], [[object]]).
 template <typename Fn>
 void for_each_table(const toml::array& array, const std::string& file, const std::string& what, Fn fn) {
@@ -191,11 +210,14 @@ Scene parse_scene(std::string_view text, const std::string& path) {
     if (const toml::array* objects = top.array("object")) {
         if (objects->size() > static_cast<std::size_t>(limits::kMaxObjects))
             top.fail("object", "too many objects (the limit is " + std::to_string(limits::kMaxObjects) + ")");
+        SurfaceTotals totals;
         for_each_table(*objects, path, "[[object]]", [&](const toml::table& t, std::size_t index) {
             std::string what = "object " + std::to_string(index + 1);
             if (auto type = t["type"].value<std::string>()) what += " ('" + *type + "')";
             TableReader o(t, path, what);
+            totals.before(o, t["type"].value<std::string>());
             scene.objects.push_back(read_object(o, material_index, default_material));
+            totals.after(o, scene.objects.back());
             if (auto* b = std::get_if<BezierSurface>(&scene.objects.back().shape); b && !b->source_file.empty())
                 scene.dependencies.push_back(b->source_file);
         });
@@ -210,10 +232,17 @@ Scene load_scene(const std::string& path) {
     if (std::filesystem::is_directory(path, ec)) throw UserError("cannot read scene file '" + path + "': it is a directory");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw UserError("cannot read scene file '" + path + "': " + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
+    // In pieces, stopping past the limit: /dev/zero or an endless pipe is an error, not a hang.
+    std::string text;
+    char piece[1 << 16];
+    while (in.read(piece, sizeof piece) || in.gcount() > 0) {
+        text.append(piece, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > static_cast<std::size_t>(limits::kMaxSceneFileBytes))
+            throw UserError(fmt::format("cannot read scene file '{}': it is larger than the limit of {} MiB", path,
+                                        limits::kMaxSceneFileBytes >> 20));
+    }
     if (in.bad()) throw UserError("cannot read scene file '" + path + "'");
-    return parse_scene(text.str(), path);
+    return parse_scene(text, path);
 }
 
 }  // namespace lancer

@@ -14,6 +14,7 @@
 #include <fmt/ranges.h>
 
 #include "scene/animation.hpp"
+#include "scene/camera.hpp"
 
 namespace lancer {
 namespace {
@@ -238,6 +239,18 @@ void read_animation(TableReader& top, const toml::table& root, Scene& scene) {
         double lean = a.camera_orbit->radius / std::hypot(a.camera_orbit->radius, a.camera_orbit->height);
         if (lean < 1e-5)
             o.fail("height", "the orbit looks straight down or up (height is too large for the radius)");
+        // And the camera must exist all the way round (a radius too small for the eye to leave
+        // the look-at point): checked where the frames will be, not first when one is rendered.
+        for (double time : {0.0, 0.25, 0.5, 0.75}) {
+            CameraSpec camera = scene.camera;
+            camera.eye = a.camera_orbit->position_at(time);
+            camera.look_at = a.camera_orbit->center;
+            try {
+                make_camera_basis(camera, 1, 1);
+            } catch (const UserError& e) {
+                o.fail(o.has("radius") ? "radius" : "", fmt::format("[animation.camera_orbit]: {}", e.what()));
+            }
+        }
     }
 
     Claims claims;

@@ -5,8 +5,10 @@
 // with optional weights (rational patches) shaped like the points, a transform, and the GPU's
 // subdivision level.
 #include <filesystem>
+#include <limits>
 
 #include <fmt/format.h>
+#include <glm/common.hpp>
 
 #include "scene/parse_surfaces.hpp"
 #include "scene/transform.hpp"
@@ -16,6 +18,7 @@ namespace lancer {
 namespace {
 
 using surface::BezierPatch;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // 16 control points from an array of 16 [x, y, z].
 std::array<dvec3, 16> read_points(const toml::node& node, const std::string& file, const std::string& what) {
@@ -97,7 +100,14 @@ Shape read_bezier(TableReader& t) {
     if (surface.subdivision < 0 || surface.subdivision > 4)
         t.fail("subdivision", "subdivision must be between 0 and 4 (each patch becomes 4^n leaves on the GPU)");
     glm::dmat4 m = read_transform(t);
-    for (auto& p : surface.patches) p = surface::transformed(p, m);
+    dvec3 lo(kInfinity), hi(-kInfinity);
+    for (auto& p : surface.patches) {
+        p = surface::transformed(p, m);
+        surface::PatchBounds box = surface::bounds(p);
+        lo = glm::min(lo, box.min);
+        hi = glm::max(hi, box.max);
+    }
+    check_world_extent(t, t.has("transform") ? "transform" : file ? "file" : control_points ? "control_points" : "patches", lo, hi);
     return surface;
 }
 

@@ -3,8 +3,12 @@
 //   x = "(R + r*cos(v))*cos(u)"   y = "r*sin(v)"   z = "(R + r*cos(v))*sin(u)"
 //   u = [0, "2*pi"]   v = [0, "2*pi"]   params = { R = 1, r = 0.35 }
 // Errors inside an expression point at its exact column in the scene file.
-#include <fmt/format.h>
+#include <limits>
 
+#include <fmt/format.h>
+#include <glm/common.hpp>
+
+#include "core/magnitude.hpp"
 #include "scene/parse_surfaces.hpp"
 #include "scene/string_position.hpp"
 #include "scene/transform.hpp"
@@ -93,9 +97,28 @@ Shape read_parametric(TableReader& t) {
     try {
         object.cells = surface::subdivide_surface(s);
     } catch (const UserError& e) {
+        // Nowhere finite: point at the operation where that starts, if one expression shows it.
+        for (int i = 0; i < 3; ++i)
+            if (auto origin = surface::where_non_finite_starts(*exprs[i], {s.u0, s.u1}, {s.v0, s.v1}))
+                throw SceneError(column_in_string(*t.node(axes[i]), t.file(), origin->column), origin->what());
         throw SceneError(t.location(), std::string("parametric surface: ") + e.what());
     }
+    dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (const auto& cell : object.cells) {
+        lo = glm::min(lo, cell.lo);
+        hi = glm::max(hi, cell.hi);
+    }
+    check_world_extent(t, t.has("transform") ? "transform" : "x", lo, hi);
     return object;
+}
+
+void check_world_extent(TableReader& t, std::string_view key, const dvec3& lo, const dvec3& hi) {
+    for (int i = 0; i < 3; ++i) {
+        double reach = std::max(std::abs(lo[i]), std::abs(hi[i]));
+        if (!(reach <= kMaxMagnitude))
+            t.fail(key, fmt::format("{}: the surface reaches {:g} on the {} axis, beyond lancer's limit of {:g} for "
+                                    "any coordinate", t.what(), reach, "xyz"[i], kMaxMagnitude));
+    }
 }
 
 }  // namespace lancer

@@ -9,4 +9,8 @@ namespace lancer {
 Shape read_bezier(TableReader& t);
 Shape read_parametric(TableReader& t);
 
+// Fails at `key` unless every coordinate of [lo, hi] is within kMaxMagnitude: geometry built by
+// transforms and equations must stay as representable as the numbers it came from.
+void check_world_extent(TableReader& t, std::string_view key, const dvec3& lo, const dvec3& hi);
+
 }  // namespace lancer

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "core/magnitude.hpp"
+
 namespace lancer {
 
 SourceLocation location_of(const toml::source_region& region, const std::string& file) {
@@ -42,6 +44,9 @@ double node_number(const toml::node& node, const std::string& file, const std::s
         throw SceneError(location_of(node, file), what + " must be a number, not " + type_name(node));
     }
     if (!std::isfinite(value)) throw SceneError(location_of(node, file), fmt::format("{} must be finite, not {}", what, value));
+    if (std::abs(value) > kMaxMagnitude)
+        throw SceneError(location_of(node, file),
+                         fmt::format("{} is {:g}, beyond lancer's limit of {:g} for any number", what, value, kMaxMagnitude));
     return value;
 }
 

@@ -1,6 +1,7 @@
 #include "surface/patch_file.hpp"
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -40,9 +41,15 @@ double read_weight(PatchLexer& lex, const Token& t) {
     return w;
 }
 
+// Room for `count` records of `lines` lines each, but no more than the file has: a short file
+// that declares many of them must not cost memory it does not hold.
+std::size_t capacity_for(const PatchLexer& lex, long long count, std::size_t lines) {
+    return std::min(static_cast<std::size_t>(count), lex.records_left() / lines + 1);
+}
+
 std::vector<BezierPatch> read_bpt(PatchLexer& lex, long long count) {
     std::vector<BezierPatch> patches;
-    patches.reserve(static_cast<std::size_t>(count));
+    patches.reserve(capacity_for(lex, count, 17));
     for (long long k = 0; k < count; ++k) {
         const std::string early = cat("expected ", count, " patches, found ", k);
         const Record& deg = lex.next(early);
@@ -72,22 +79,26 @@ std::vector<BezierPatch> read_bpt(PatchLexer& lex, long long count) {
 
 std::vector<BezierPatch> read_newell(PatchLexer& lex, long long count) {
     // Indices are range-checked once the vertex count is known; keep their tokens for the message.
-    std::vector<std::array<Token, 16>> index_tokens(static_cast<std::size_t>(count));
-    std::vector<std::array<long long, 16>> indices(static_cast<std::size_t>(count));
+    std::vector<std::array<Token, 16>> index_tokens;
+    std::vector<std::array<long long, 16>> indices;
+    index_tokens.reserve(capacity_for(lex, count, 1));
+    indices.reserve(capacity_for(lex, count, 1));
     for (long long k = 0; k < count; ++k) {
         const Record& r = lex.next(cat("expected ", count, " patches, found ", k));
         if (r.tokens.size() < 16)
             lex.fail_at_end_of(r, cat("a patch needs 16 vertex indices, found ", r.tokens.size()));
         if (r.tokens.size() > 16) lex.fail(r.tokens[16], "too many vertex indices: a patch has 16");
+        std::array<Token, 16>& tokens = index_tokens.emplace_back();
+        std::array<long long, 16>& numbers = indices.emplace_back();
         for (int i = 0; i < 16; ++i) {
-            index_tokens[k][i] = r.tokens[i];
-            indices[k][i] = lex.whole_number(r.tokens[i], "vertex index");
+            tokens[i] = r.tokens[i];
+            numbers[i] = lex.whole_number(r.tokens[i], "vertex index");
         }
     }
     long long vertex_count = read_count(lex, "vertex count", kMaxVerticesPerFile,
                                         cat("expected the vertex count after the ", count, " patches"));
     std::vector<dvec3> vertices;
-    vertices.reserve(static_cast<std::size_t>(vertex_count));
+    vertices.reserve(capacity_for(lex, vertex_count, 1));
     for (long long k = 0; k < vertex_count; ++k) {
         const Record& r = lex.next(cat("expected ", vertex_count, " vertices, found ", k));
         if (r.tokens.size() < 3)

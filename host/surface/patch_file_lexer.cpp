@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/magnitude.hpp"
+
 namespace lancer::surface::detail {
 namespace {
 
@@ -94,6 +96,8 @@ double PatchLexer::finite_number(const Token& t, const std::string& what) const 
     if (ec != std::errc() || end != s.data() + s.size())
         fail(t, "expected a number (" + what + "), found " + quoted(t.text));
     if (!std::isfinite(value)) fail(t, what + " must be finite, not " + quoted(t.text));
+    if (std::abs(value) > kMaxMagnitude)
+        fail(t, what + " " + quoted(t.text) + " is beyond lancer's limit of 1e12 for any number");
     return value;
 }
 

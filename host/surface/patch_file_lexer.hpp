@@ -28,6 +28,7 @@ public:
     PatchLexer(std::string_view text, std::string file_name);
 
     bool at_end() const { return next_ >= records_.size(); }
+    std::size_t records_left() const { return records_.size() - next_; }
     // The next record; past the end it throws "file ends early: <what_was_expected>".
     const Record& next(const std::string& what_was_expected);
     const Record& peek() const { return records_[next_]; }

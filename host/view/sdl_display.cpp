@@ -33,7 +33,9 @@ SdlDisplay::SdlDisplay(const std::string& title, int width, int height) : width_
         auto value = [&](const char* name) { return set(name) ? std::string(std::getenv(name)) : std::string(); };
         std::string where = driver_chosen ? "with SDL_VIDEODRIVER=" + value("SDL_VIDEODRIVER")
                                           : "on display '" + (set("DISPLAY") ? value("DISPLAY") : value("WAYLAND_DISPLAY")) + "'";
-        throw UserError(sdl_error("cannot open a window " + where));
+        std::string message = sdl_error("cannot open a window " + where);
+        SDL_Quit();  // what a failed SDL_Init did start (its D-Bus connection) is closed too
+        throw UserError(message);
     }
     // A picture larger than the screen gets a window that fits, showing it scaled down.
     int window_w = width, window_h = height;

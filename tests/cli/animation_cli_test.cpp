@@ -20,12 +20,7 @@ namespace fs = std::filesystem;
 const std::string kScene = test::source_path("tests/data/anim/small.toml");  // 6 frames, 10 fps, 48x27
 
 // A fresh, empty directory under build/test-output for one test.
-std::string fresh_dir(const std::string& name) {
-    std::string dir = test::output_dir() + "/anim-" + name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+std::string fresh_dir(const std::string& name) { return test::fresh_dir("anim-" + name); }
 
 std::string slurp(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -13,21 +13,25 @@ namespace lancer::test {
 
 ChildProcess::ChildProcess(const std::vector<std::string>& args, const std::string& cwd, const std::string& log_path)
     : log_path_(log_path) {
-    std::vector<std::string> argv_strings = {LANCER_EXE};
-    argv_strings.insert(argv_strings.end(), args.begin(), args.end());
     pid_ = ::fork();
     if (pid_ == 0) {
         int fd = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         ::dup2(fd, STDERR_FILENO);
         ::dup2(fd, STDOUT_FILENO);
         if (::chdir(cwd.c_str()) != 0) ::_exit(127);
-        ::setenv("LANCER_VALIDATION", "1", 1);
-        std::vector<char*> argv;
-        for (auto& s : argv_strings) argv.push_back(s.data());
-        argv.push_back(nullptr);
-        ::execv(argv[0], argv.data());
-        ::_exit(127);
+        exec_lancer(args);
     }
+}
+
+void exec_lancer(const std::vector<std::string>& args) {
+    std::vector<std::string> strings = {LANCER_EXE};
+    strings.insert(strings.end(), args.begin(), args.end());
+    ::setenv("LANCER_VALIDATION", "1", 1);
+    std::vector<char*> argv;
+    for (auto& s : strings) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
 }
 
 ChildProcess::~ChildProcess() {

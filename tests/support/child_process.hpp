@@ -10,6 +10,10 @@
 
 namespace lancer::test {
 
+// In a forked child: replaces it with LANCER_EXE `args`, with LANCER_VALIDATION=1 (exit code 127
+// if that fails).
+[[noreturn]] void exec_lancer(const std::vector<std::string>& args);
+
 class ChildProcess {
 public:
     // Runs LANCER_EXE with `args` in `cwd`, with LANCER_VALIDATION=1, stderr to `log_path`.

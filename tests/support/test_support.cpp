@@ -21,6 +21,13 @@ std::string output_dir() {
     return LANCER_TEST_OUTPUT_DIR;
 }
 
+std::string fresh_dir(const std::string& name) {
+    std::string dir = output_dir() + "/" + name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
 namespace {
 std::unique_ptr<GpuRenderer> g_renderer;
 }

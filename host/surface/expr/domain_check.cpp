@@ -107,6 +107,24 @@ public:
         }
     }
 
+    std::optional<ExprError> non_finite_origin() const {
+        auto never_finite = [&](int node) {
+            for (const auto& values : samples_)
+                if (std::isfinite(values[node])) return false;
+            return true;
+        };
+        if (!never_finite(expr_.root())) return std::nullopt;
+        for (int i = 0; i <= expr_.root(); ++i) {
+            const Node& n = expr_.nodes[i];
+            if (!never_finite(i) || (n.a >= 0 && never_finite(n.a)) || (n.b >= 0 && never_finite(n.b))) continue;
+            bool overflow = std::isinf(samples_.front()[i]);
+            return ExprError(overflow ? "this overflows to infinity everywhere on the domain (the largest number is about 1.8e308)"
+                                      : "this is not a number anywhere on the domain (such as 0 * infinity)",
+                             n.column);
+        }
+        return std::nullopt;
+    }
+
     void check() const {
         for (const Node& n : expr_.nodes) {
             auto r = restriction_of(n, function_name(n.op));
@@ -170,6 +188,11 @@ private:
 };
 
 }  // namespace
+
+std::optional<ExprError> where_non_finite_starts(const Expr& expr, Interval u, Interval v) {
+    if (u.is_empty() || v.is_empty() || !u.is_finite() || !v.is_finite()) return std::nullopt;
+    return DomainChecker(expr, {u, v}).non_finite_origin();
+}
 
 void check_expression_domain(const Expr& expr, Interval u, Interval v) {
     if (u.is_empty() || v.is_empty() || !u.is_finite() || !v.is_finite())

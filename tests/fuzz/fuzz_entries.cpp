@@ -1,0 +1,229 @@
+#include "fuzz/fuzz_entries.hpp"
+
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include "accel/bvh.hpp"
+#include "accel/shape_bounds.hpp"
+#include "cpu/cpu_renderer.hpp"
+#include "gpu/scene_packing.hpp"
+#include "scene/animation.hpp"
+#include "scene/camera.hpp"
+#include "scene/load_scene.hpp"
+#include "surface/expr/domain_check.hpp"
+#include "surface/expr/evaluate.hpp"
+#include "surface/expr/glsl_emitter.hpp"
+#include "surface/expr/parser.hpp"
+#include "surface/patch_file.hpp"
+
+namespace lancer::fuzz {
+namespace {
+
+std::string_view as_text(const std::uint8_t* data, std::size_t size) {
+    return {reinterpret_cast<const char*>(data), size};
+}
+
+void require(bool ok, const std::string& what) {
+    if (!ok) throw InvariantBroken(what);
+}
+
+void require_finite(double x, const std::string& what) { require(std::isfinite(x), what + " is not finite"); }
+void require_finite(const dvec3& v, const std::string& what) {
+    for (int i = 0; i < 3; ++i) require_finite(v[i], what);
+}
+
+void check_patch(const surface::BezierPatch& p, const std::string& what) {
+    for (const dvec3& point : p.points) require_finite(point, what + " control point");
+    for (double w : p.weights) require(std::isfinite(w) && w > 0.0, what + " weight is not finite and positive");
+}
+
+}  // namespace
+
+void check_scene_invariants(const Scene& scene, const std::string& when) {
+    const RenderSettings& r = scene.render;
+    require(r.width >= 1 && r.height >= 1 && r.samples >= 1 && r.max_depth >= 0, when + ": render settings");
+    require_finite(r.background, when + ": background");
+    require_finite(scene.ambient, when + ": ambient");
+    require_finite(scene.camera.eye, when + ": camera eye");
+    require_finite(scene.camera.look_at, when + ": camera look_at");
+    require_finite(scene.camera.up, when + ": camera up");
+    make_camera_basis(scene.camera, r.width, r.height);  // a UserError here escapes as a bug: the loader accepted it
+    for (const Light& l : scene.lights) {
+        require_finite(l.position, when + ": light position");
+        require_finite(l.color, when + ": light color");
+        require(l.color.r >= 0.0 && l.color.g >= 0.0 && l.color.b >= 0.0, when + ": light color is negative");
+        require(std::isfinite(l.falloff_distance) && l.falloff_distance > 0.0, when + ": light falloff_distance");
+        require_finite(l.direction, when + ": spot direction");
+        require(std::abs(glm::length(l.direction) - 1.0) < 1e-9, when + ": spot direction is not a unit vector");
+        require(0.0 <= l.inner_angle_deg && l.inner_angle_deg <= l.outer_angle_deg && l.outer_angle_deg < 180.0,
+                when + ": spot angles");
+        require(std::isfinite(l.tightness) && l.tightness >= 0.0, when + ": spot tightness");
+        require_finite(l.edge_u, when + ": area light edge_u");
+        require_finite(l.edge_v, when + ": area light edge_v");
+        require(l.samples >= 1, when + ": area light samples");
+    }
+    require(!scene.materials.empty(), when + ": no default material");
+    for (const Material& m : scene.materials) {
+        require_finite(m.color, when + ": material color");
+        for (double x : {m.ambient, m.diffuse, m.specular, m.shininess, m.reflection}) require_finite(x, when + ": material");
+        require_finite(m.transmission, when + ": material transmission");
+        require_finite(m.absorption, when + ": material absorption");
+        require(std::isfinite(m.ior) && m.ior > 0.0, when + ": material ior");
+        if (m.checker) {
+            require_finite(m.checker->color_a, when + ": checker");
+            require_finite(m.checker->color_b, when + ": checker");
+            require(std::isfinite(m.checker->size) && m.checker->size > 0.0, when + ": checker size");
+        }
+    }
+    std::vector<Aabb> boxes;
+    for (const Object& o : scene.objects) {
+        require(o.material < scene.materials.size(), when + ": material index");
+        std::visit(
+            [&](const auto& s) {
+                using T = std::decay_t<decltype(s)>;
+                if constexpr (std::is_same_v<T, Sphere>) {
+                    require_finite(s.center, when + ": sphere");
+                    require(std::isfinite(s.radius) && s.radius > 0.0, when + ": sphere radius");
+                } else if constexpr (std::is_same_v<T, Plane>) {
+                    require_finite(s.point, when + ": plane");
+                    require_finite(s.normal, when + ": plane normal");
+                } else if constexpr (std::is_same_v<T, Rectangle>) {
+                    require_finite(s.corner, when + ": rectangle");
+                    require_finite(s.edge_u, when + ": rectangle");
+                    require_finite(s.edge_v, when + ": rectangle");
+                } else if constexpr (std::is_same_v<T, Box>) {
+                    require_finite(s.min, when + ": box");
+                    require_finite(s.max, when + ": box");
+                } else if constexpr (std::is_same_v<T, BezierSurface>) {
+                    require(!s.patches.empty(), when + ": bezier object without patches");
+                    for (const auto& p : s.patches) check_patch(p, when + ": bezier");
+                } else if constexpr (std::is_same_v<T, ParametricObject>) {
+                    require(!s.cells.empty(), when + ": parametric surface without cells");
+                    for (const auto& c : s.cells) {
+                        require_finite(c.lo, when + ": parametric cell box");
+                        require_finite(c.hi, when + ": parametric cell box");
+                    }
+                }
+            },
+            o.shape);
+        if (auto box = shape_bounds(o.shape)) boxes.push_back(*box);
+    }
+    Bvh bvh = build_bvh(boxes);
+    require(bvh.order.size() == boxes.size(), when + ": the BVH lost primitives");
+}
+
+namespace {
+
+template <class V>
+void require_finite_floats(const V& v, const std::string& what) {
+    for (int i = 0; i < 4; ++i) require(std::isfinite(v[i]), what + " is not finite in float");
+}
+
+// What the renderers make of an accepted scene, rendered tiny: the GPU's packed buffers (every
+// float finite: the magnitude limit at work) and the CPU reference's pixels (finite).
+void check_renderers_input(const Scene& accepted, const std::string& when) {
+    Scene scene = accepted;
+    scene.render.width = 3;
+    scene.render.height = 2;
+    scene.render.samples = 1;
+    scene.render.max_depth = std::min(scene.render.max_depth, 3);
+    gpu::PackedScene packed = gpu::pack_scene(scene);
+    gpu::FrameParams frame = gpu::pack_frame(scene, packed);
+    for (const auto& v : {frame.eye, frame.forward, frame.right, frame.up, frame.background, frame.ambient})
+        require_finite_floats(v, when + ": frame");
+    for (const auto& p : packed.primitives)
+        for (const auto& v : {p.p0, p.p1, p.p2}) require_finite_floats(v, when + ": primitive");
+    for (const auto& n : packed.nodes) {
+        require_finite_floats(n.lo, when + ": BVH node");
+        require_finite_floats(n.hi, when + ": BVH node");
+    }
+    for (const auto& leaf : packed.patches)
+        for (const auto& v : leaf.points) require_finite_floats(v, when + ": patch leaf");
+    for (const auto& c : packed.cells)
+        for (const auto& v : {c.p00, c.p10, c.p01, c.p11}) require_finite_floats(v, when + ": parametric cell");
+    for (const auto& m : packed.materials)
+        for (const auto& v : {m.color, m.color2, m.phong}) require_finite_floats(v, when + ": material");
+    for (const auto& l : packed.lights) {
+        require_finite_floats(l.position, when + ": light");
+        require_finite_floats(l.color, when + ": light");
+    }
+    FloatImage image = CpuRenderer(1).render(scene, {});
+    for (const auto& pixel : image.pixels) require_finite_floats(pixel, when + ": a pixel of the CPU reference");
+}
+
+}  // namespace
+
+void scene_entry(const std::uint8_t* data, std::size_t size) {
+    // Patch files named in the scene are found beside the shipped scenes (file = "teapot.bpt").
+    static const std::string path = std::string(LANCER_SOURCE_DIR) + "/scenes/fuzz-input.toml";
+    Scene scene;
+    try {
+        scene = parse_scene(as_text(data, size), path);
+    } catch (const UserError&) {
+        return;  // rejected with a message: the expected outcome for most inputs
+    }
+    check_scene_invariants(scene, "the scene");
+    if (!scene.animation) {
+        check_renderers_input(scene, "the scene");
+        return;
+    }
+    const Animation& a = *scene.animation;
+    for (int frame : {0, a.frames / 2, a.frames - 1}) {
+        Scene still = scene_at(scene, frame_time(a, frame));
+        check_scene_invariants(still, fmt::format("frame {}", frame));
+        check_renderers_input(still, fmt::format("frame {}", frame));
+    }
+}
+
+void expression_entry(const std::uint8_t* data, std::size_t size) {
+    static const surface::Constants constants{{"a", 2.0}, {"R", 1.0}, {"r", 0.35}, {"k", -3.0}};
+    surface::Expr e;
+    try {
+        e = surface::parse_expression(as_text(data, size), constants);
+    } catch (const UserError&) {
+        return;
+    }
+    require(!e.nodes.empty(), "an accepted expression has no nodes");
+    for (std::size_t i = 0; i < e.nodes.size(); ++i) {
+        const surface::Node& n = e.nodes[i];
+        require(n.a < static_cast<int>(i) && n.b < static_cast<int>(i), "nodes are not in post-order");
+        require(n.column >= 0 && n.column <= static_cast<int>(size), "a node's column is outside the text");
+    }
+    // Any value is allowed here (NaN outside the domain); what must not happen is a crash or UB.
+    surface::evaluate(e, 0.25, 0.75);
+    surface::evaluate(e, surface::Interval(-1.0, 2.0), surface::Interval(0.0, 1.0));
+    surface::evaluate(e, surface::Dual<double>::variable_u(0.5), surface::Dual<double>::variable_v(-0.5));
+    surface::evaluate(e, surface::Dual<surface::Interval>::variable_u(surface::Interval(0.0, 1.0)),
+                      surface::Dual<surface::Interval>::variable_v(surface::Interval(1.0, 3.0)));
+    try {
+        surface::check_expression_domain(e, {0.0, 1.0}, {0.0, 1.0});
+    } catch (const surface::ExprError& error) {
+        require(error.column >= 0 && error.column <= static_cast<int>(size), "a domain error's column is outside the text");
+        return;
+    }
+    surface::emit_glsl_surface(e, e, e, "fuzz_surface");
+}
+
+void patch_entry(const std::uint8_t* data, std::size_t size) {
+    std::vector<surface::BezierPatch> patches;
+    try {
+        patches = surface::parse_patch_text(as_text(data, size), "fuzz.bpt");
+    } catch (const UserError&) {
+        return;
+    }
+    require(!patches.empty(), "an accepted patch file has no patches");
+    for (const auto& p : patches) {
+        check_patch(p, "patch");
+        surface::bounds(p);
+        auto [left, right] = surface::split_u(p, 0.5);
+        check_patch(left, "split patch");
+        require_finite(surface::evaluate(p, 0.5, 0.5), "patch point");
+        require_finite(surface::unit_normal(p, 0.0, 0.0), "patch normal");
+    }
+}
+
+}  // namespace lancer::fuzz

@@ -1,0 +1,45 @@
+#pragma once
+// The entry points of lancer's fuzz targets, shared by the libFuzzer binaries (tests/fuzz/*_fuzzer.cpp)
+// and by the replay test that runs every corpus and crash file in the normal suite.
+//
+// Each takes arbitrary bytes and feeds them to the product exactly as a user's file would reach
+// it. Input that is rejected with a UserError (the product's "bad input" path, a located message)
+// is fine; after input is accepted, the result must satisfy the model's invariants (every number
+// finite, and so on). Anything else is a bug: another exception (an InvariantBroken included)
+// escapes, and the fuzzer reports it as a crash; sanitizer reports, hangs and leaks are found by
+// the fuzzer itself.
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace lancer {
+struct Scene;
+}
+
+namespace lancer::fuzz {
+
+// A property the product promises about input it accepted does not hold.
+class InvariantBroken : public std::logic_error {
+public:
+    using std::logic_error::logic_error;
+};
+
+// Throws InvariantBroken unless `scene` keeps what an accepted scene promises its renderers:
+// every number finite, every index valid, a camera basis that exists, boxes for the BVH.
+void check_scene_invariants(const Scene& scene, const std::string& when);
+
+// TOML text -> scene model (parse_scene): every object type, patch files relative to scenes/,
+// and the [animation] table, evaluated at its first, middle and last frame; then the BVH, the
+// GPU's packed buffers (every float finite) and a 3 x 2 pixel render by the CPU reference
+// (every pixel finite).
+void scene_entry(const std::uint8_t* data, std::size_t size);
+
+// An expression of a parametric surface -> parsed expression, evaluated at a point, over a box,
+// with derivatives, checked over a domain, and emitted as GLSL.
+void expression_entry(const std::uint8_t* data, std::size_t size);
+
+// A patch file (.bpt or Newell) -> patches, bounded, split and evaluated.
+void patch_entry(const std::uint8_t* data, std::size_t size);
+
+}  // namespace lancer::fuzz

@@ -1,0 +1,179 @@
+// Every documented limit (README "Limits") gives a clear error, at the place in the file that
+// crosses it, before the memory it bounds is allocated. Limits of single values (image size,
+// samples, max_depth, frames, subdivision, magnitudes, expression length and nesting, patch
+// counts in a file) are bad files in tests/data/bad/ and tests/data/bad_patches/ and cases in
+// tests/unit/expr_parser_test.cpp; here are the ones that need a scene built to size. (The
+// object limit, 1,048,576, is checked the way the light limit is; a scene that large takes
+// seconds and most of a gigabyte just to parse, too much for the suite.)
+#include <filesystem>
+#include <map>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "gpu/memory_budget.hpp"
+#include "gpu/scene_packing.hpp"
+#include "gpu/vk_check.hpp"
+#include "scene/limits.hpp"
+#include "scene/load_scene.hpp"
+#include "support/test_support.hpp"
+
+namespace lancer {
+namespace {
+
+const std::string kHead = "[camera]\neye = [0, 0, -5]\nlook_at = [0, 0, 0]\n";
+
+// Parses `text` and returns "LINE:COL: message" of the SceneError it must raise.
+std::string error_of(const std::string& text) {
+    try {
+        parse_scene(text, "limits.toml");
+    } catch (const SceneError& e) {
+        return fmt::format("{}:{}: {}", e.where().line, e.where().column, e.what());
+    }
+    return "accepted";
+}
+
+std::string repeat(const std::string& block, long long n) {
+    std::string out;
+    out.reserve(block.size() * static_cast<std::size_t>(n));
+    for (long long i = 0; i < n; ++i) out += block;
+    return out;
+}
+
+TEST(Limits, Lights) {
+    const std::string light = "[[light]]\nposition = [0, 5, 0]\n";
+    EXPECT_EQ(error_of(kHead + repeat(light, limits::kMaxLights)), "accepted");
+    EXPECT_EQ(error_of(kHead + repeat(light, limits::kMaxLights + 1)), "4:1: too many lights (the limit is 256)");
+}
+
+TEST(Limits, Materials) {
+    std::string text = kHead;
+    for (int i = 0; i <= limits::kMaxMaterials; ++i) text += fmt::format("[material.m{}]\n", i);
+    EXPECT_EQ(error_of(text), "4:1: too many materials (the limit is 65536)");
+}
+
+TEST(Limits, ParametricSurfacesAreCountedBeforeTheyAreSubdivided) {
+    const std::string surface = "[[object]]\ntype = \"parametric\"\nx = \"u\"\ny = \"v\"\nz = \"0\"\nu = [0, 1]\nv = [0, 1]\n";
+    EXPECT_EQ(error_of(kHead + repeat(surface, limits::kMaxParametricSurfaces)), "accepted");
+    int line = 4 + 7 * limits::kMaxParametricSurfaces + 1;  // the type of the one too many
+    EXPECT_EQ(error_of(kHead + repeat(surface, limits::kMaxParametricSurfaces + 1)),
+              fmt::format("{}:8: too many parametric surfaces (the limit is 32 per scene)", line));
+}
+
+TEST(Limits, BezierPatchesInAllObjectsTogether) {
+    // The teapot's 32 patches, as many times as the limit allows, and once more.
+    const std::string teapot =
+        "[[object]]\ntype = \"bezier\"\nfile = \"" + test::source_path("scenes/teapot.bpt") + "\"\n";
+    const long long copies = limits::kMaxPatches / 32;
+    std::string text = kHead + repeat(teapot, copies);
+    EXPECT_EQ(error_of(text), "accepted");
+    int line = 4 + 3 * static_cast<int>(copies) + 1;
+    EXPECT_EQ(error_of(text + teapot),
+              fmt::format("{}:8: too many Bezier patches: 65568 so far (the limit is 65536 per scene)", line));
+}
+
+TEST(Limits, SceneFileSizeIsCheckedWhileReading) {
+    // /dev/zero never ends: reading stops past the limit instead of filling the memory.
+    try {
+        load_scene("/dev/zero");
+        FAIL() << "accepted";
+    } catch (const UserError& e) {
+        EXPECT_STREQ(e.what(), "cannot read scene file '/dev/zero': it is larger than the limit of 128 MiB");
+    }
+}
+
+// The GPU's limits, from numbers: each buffer within maxStorageBufferRange, all within the heap.
+TEST(GpuMemoryBudget, NamesTheBufferTheNeedAndTheLimit) {
+    Scene scene = test::scene_from_text(kHead + "[[object]]\ntype = \"bezier\"\nsubdivision = 4\nfile = \"" +
+                                        test::source_path("scenes/teapot.bpt") + "\"\n");
+    auto needs = gpu::scene_buffer_needs(scene, 1 << 20);
+    auto leaves = std::find_if(needs.begin(), needs.end(), [](const auto& n) { return n.what == "Bezier patch leaves"; });
+    ASSERT_NE(leaves, needs.end());
+    EXPECT_EQ(leaves->count, 32u * 256u);
+    EXPECT_EQ(leaves->bytes, 32u * 256u * sizeof(gpu::PatchLeaf));
+    EXPECT_NO_THROW(gpu::check_memory_budget(needs, {"big GPU", 1ull << 30, 8ull << 30}));
+    try {
+        gpu::check_memory_budget(needs, {"tiny GPU", 1 << 20, 8ull << 30});
+        FAIL() << "accepted";
+    } catch (const UserError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("the scene needs 2 MiB of GPU memory for its Bezier patch leaves (8192 of them), "
+                                              "more than tiny GPU allows in one buffer (1 MiB, maxStorageBufferRange)", 0),
+                  0u)
+            << e.what();
+    }
+    try {
+        gpu::check_memory_budget(needs, {"small GPU", 1ull << 30, 3 << 20});
+        FAIL() << "accepted";
+    } catch (const UserError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("the scene needs 5 MiB of GPU memory in all, more than small GPU has "
+                                              "(3 MiB in its memory heap)", 0),
+                  0u)
+            << e.what();
+    }
+}
+
+// End to end on this machine's device: patch leaves beyond maxStorageBufferRange (lavapipe:
+// 128 MiB) are refused before anything is packed, with exit code 2 and no output.
+TEST(GpuMemoryBudget, ASceneTooLargeForTheDeviceIsAClearError) {
+    std::string scene = test::output_dir() + "/limits-gpu-memory.toml";
+    std::string out = test::output_dir() + "/limits-gpu-memory.png";
+    std::filesystem::remove(out);
+    const std::string teapot = "[[object]]\ntype = \"bezier\"\nsubdivision = 4\nfile = \"" +
+                               test::source_path("scenes/teapot.bpt") + "\"\n";
+    test::write_file(scene, kHead + repeat(teapot, 60));  // 60 x 32 x 256 leaves of 288 bytes: 135 MiB
+    auto r = test::run_lancer("render " + scene + " --width 8 --height 8 -o " + out);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("lancer: error: the scene needs 135 MiB of GPU memory for its Bezier patch leaves (491520 of them), "
+                          "more than ", 0),
+              0u)
+        << r.err;
+    EXPECT_NE(r.err.find("maxStorageBufferRange"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line, no validation message: " << r.err;
+    EXPECT_FALSE(test::file_exists(out));
+}
+
+// What the driver reports becomes an error that says what happened and what to do.
+TEST(VulkanErrors, OutOfMemoryIsAUserErrorAndDeviceLossSaysSo) {
+    try {
+        gpu::throw_vulkan_error(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory(...)", "/x/buffer.cpp", 30);
+    } catch (const gpu::GpuOutOfMemory& e) {
+        EXPECT_STREQ(e.what(), "the GPU ran out of memory (Vulkan call failed with VK_ERROR_OUT_OF_DEVICE_MEMORY: "
+                               "vkAllocateMemory(...) (buffer.cpp:30)): render a smaller image or a smaller scene, or "
+                               "with --backend cpu");
+    }
+    EXPECT_THROW(gpu::throw_vulkan_error(VK_ERROR_OUT_OF_HOST_MEMORY, "vkCreateBuffer", "b.cpp", 1), UserError);
+    try {
+        gpu::throw_vulkan_error(VK_ERROR_DEVICE_LOST, "vkWaitForFences(...)", "gpu_renderer.cpp", 240);
+        FAIL();
+    } catch (const gpu::VulkanError& e) {
+        EXPECT_EQ(e.result(), VK_ERROR_DEVICE_LOST);
+        EXPECT_STREQ(e.what(), "Vulkan call failed with VK_ERROR_DEVICE_LOST: vkWaitForFences(...) (gpu_renderer.cpp:240); "
+                               "the GPU driver reset or crashed (device lost)");
+    }
+}
+
+// The budget is an upper bound of every buffer the packer really makes, for every shipped scene:
+// a buffer the budget forgot (a new feature's) fails here.
+TEST(GpuMemoryBudget, BoundsEveryPackedBufferOfEveryScene) {
+    for (const std::string& path : test::scene_files()) {
+        Scene scene = load_scene(path);
+        std::map<std::string, std::uint64_t> need;
+        for (const auto& n : gpu::scene_buffer_needs(scene, 0)) need[n.what] = n.bytes;
+        gpu::PackedScene p = gpu::pack_scene(scene, Acceleration::BvhAlways);
+        auto bytes = [](const auto& v) { return std::uint64_t(v.size() * sizeof(v[0])); };
+        const std::pair<const char*, std::uint64_t> packed[] = {
+            {"primitives", bytes(p.primitives)},   {"BVH nodes", bytes(p.nodes)},
+            {"Bezier patch leaves", bytes(p.patches)}, {"parametric surfaces", bytes(p.surfaces)},
+            {"parametric cells", bytes(p.cells)},  {"materials", bytes(p.materials)},
+            {"lights", bytes(p.lights)},           {"textures", bytes(p.textures)},
+            {"texture texels", bytes(p.texels)},   {"patterns", bytes(p.patterns)},
+            {"noise permutation", bytes(p.permutation)}};
+        for (const auto& [what, size] : packed) {
+            ASSERT_TRUE(need.count(what)) << "the budget has no entry for " << what;
+            EXPECT_GE(need[what], size) << path << ": " << what;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace lancer
