@@ -52,8 +52,10 @@ TEST(Farm, GnuParallelOverSshToTwoHostsRendersTheSameFrames) {
     std::string dir = fresh_dir("parallel");
     render_on_one_machine(dir);
     fs::create_directories(dir + "/farm");
-    // Chunks of 2 frames: three jobs over hostA and hostB, one job at a time on each.
-    std::string command = lancer_env() + "FAKE_SSH_LOG=ssh.log PARALLEL_SSH='" +
+    // Chunks of 2 frames: three jobs over hostA and hostB, one job at a time on each. HOME is an
+    // ancestor of the jobs' directory, as when the frames go under a user's home on the farm, so
+    // parallel sends the directory relative to HOME and the remote side must resolve it there.
+    std::string command = lancer_env() + "HOME='" + test::output_dir() + "' FAKE_SSH_LOG=ssh.log PARALLEL_SSH='" +
                           test::source_path("tests/data/farm/fake-ssh") + "' '" +
                           test::source_path("docs/farm/render-parallel.sh") + "' '" + kScene +
                           "' farm/f_%d.png 6 1/hostA,1/hostB 2";
