@@ -328,8 +328,8 @@ TEST_F(Watch, TextureEditsRerenderTheScene) {
     textured.replace(textured.find(color), color.size(), "texture = \"tex.png\"");
     test::write_file(dir / "scene.toml", textured);
     ASSERT_TRUE(wait_for_count("reload: ", 1)) << child->log();
-    const std::uint8_t* centre = output().at(16, 9);
-    EXPECT_GT(centre[0], centre[2]);  // red
+    Rgb8Image red = output();
+    EXPECT_GT(red.at(16, 9)[0], red.at(16, 9)[2]);
 
     write_texture(0, 0, 255);
     ASSERT_TRUE(wait_for_count("reload: tex.png changed", 1)) << child->log();
