@@ -12,9 +12,11 @@ vec3 material_pigment(Material m, vec3 p) {
     if (m.pattern == PATTERN_CHECKER) {
         // Solid 3-D checker, first colour where floor(x)+floor(y)+floor(z) is even (as POV-Ray).
         // The 1e-4 bias keeps surfaces lying on integer planes (the floor at y = 0) on one side.
+        // The parity by mod, as the CPU reference's fmod: converting a sum beyond int's range
+        // (a checker far finer than the scene) to int is undefined.
         vec3 cell = floor(p / m.checker_size + 1e-4);
-        int parity = int(cell.x + cell.y + cell.z) & 1;
-        return parity == 0 ? m.color.rgb : m.color2.rgb;
+        bool odd = mod(abs(cell.x + cell.y + cell.z), 2.0) == 1.0;
+        return odd ? m.color2.rgb : m.color.rgb;
     }
     return m.color.rgb;
 }
