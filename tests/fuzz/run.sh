@@ -6,6 +6,9 @@
 #
 #   tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     (default 60 s; scene expression patch)
 #
+# LANCER_FUZZ_SEED fixes libFuzzer's random seed (CI uses 1, so that a red run can be replayed
+# mutation for mutation); unset, every run explores from a new seed.
+#
 # Inputs the run finds interesting go to build-fuzz/fuzz-work/TARGET/, not into the repository;
 # tests/fuzz/minimize.sh merges them into the corpora.
 set -euo pipefail
@@ -16,6 +19,7 @@ shift || true
 targets=("$@")
 ((${#targets[@]})) || targets=(scene expression patch)
 build="${LANCER_FUZZ_BUILD:-build-fuzz}"
+seed="${LANCER_FUZZ_SEED:-0}"  # 0: libFuzzer picks one
 
 # The sanitizers' options and leak suppressions are compiled into the fuzzers
 # (cmake/sanitizers.cmake); stack traces need llvm-symbolizer (package llvm).
@@ -33,7 +37,7 @@ for target in "${targets[@]}"; do
   # -timeout: one input may take at most 10 s (the slowest legitimate one, a parametric surface
   # at its limits, takes about 1 s under ASan); -rss_limit_mb: 2 GiB of memory at most.
   if "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len="${max_len[$target]}" \
-       -dict="tests/fuzz/$target.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 \
+       -dict="tests/fuzz/$target.dict" -seed="$seed" -artifact_prefix="$artifacts/" -print_final_stats=1 \
        "$work" "tests/fuzz/corpus/$target" "tests/fuzz/regressions/$target" >"$log" 2>&1; then
     runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
     rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log")
