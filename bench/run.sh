@@ -74,7 +74,7 @@ row() {  # scene size spp name "wall render rays mib" pov_wall
   read -r wall render rays mib <<<"$5"
   local mrays ratio
   mrays=$(awk -v r="$rays" -v t="$render" 'BEGIN{ if (t > 0) printf "%.2f", r / t / 1e6; else print "-" }')
-  ratio=$(awk -v p="$6" -v w="$wall" 'BEGIN{ printf "%.2f", p / w }')
+  ratio=$(awk -v p="$6" -v w="$wall" 'BEGIN{ if (p == "-") print "-"; else printf "%.2f", p / w }')
   printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$1" "$2" "$3" "$4" "$wall" "$render" "$mrays" "$mib" "$ratio"
 }
 
