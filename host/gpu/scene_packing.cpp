@@ -9,6 +9,7 @@
 
 #include "accel/bvh.hpp"
 #include "accel/shape_bounds.hpp"
+#include "core/finite.hpp"
 #include "core/perlin_permutation.hpp"
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
@@ -72,12 +73,13 @@ struct PrimitivePacker {
             // surface is undefined at a corner (a cell at the edge of where it is defined, or
             // 0 * log(negative)), a point of the cell stands in: the centre of its (u, v) range,
             // else the centre of its proved box, so that the cell is not lost to one NaN.
-            auto finite = [](const dvec3& q) { return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z); };
-            const dvec3 mid_uv = surface::evaluate_surface(p.surface, 0.5 * (cell.u0 + cell.u1), 0.5 * (cell.v0 + cell.v1)).P;
-            const dvec3 stand_in = finite(mid_uv) ? mid_uv : 0.5 * (cell.lo + cell.hi);
+            auto stand_in = [&] {
+                dvec3 mid = surface::evaluate_surface(p.surface, 0.5 * (cell.u0 + cell.u1), 0.5 * (cell.v0 + cell.v1)).P;
+                return all_finite(mid) ? mid : 0.5 * (cell.lo + cell.hi);
+            };
             auto corner = [&](double u, double v) {
                 dvec3 q = surface::evaluate_surface(p.surface, u, v).P;
-                return v4(finite(q) ? q : stand_in, index);
+                return v4(all_finite(q) ? q : stand_in(), index);
             };
             ParametricCell c{vec4(float(cell.u0), float(cell.u1), float(cell.v0), float(cell.v1)),
                              corner(cell.u0, cell.v0), corner(cell.u1, cell.v0), corner(cell.u0, cell.v1),

@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/finite.hpp"
 #include "surface/expr/program.hpp"
 #include "surface/surface_bounds.hpp"
 
@@ -55,7 +56,7 @@ double surface_diagonal(const Program& program, const ParametricSurface& s) {
             double p[3];
             evaluate_program(program, s.u0 + (s.u1 - s.u0) * i / n, s.v0 + (s.v1 - s.v0) * j / n, p);
             dvec3 w(s.to_world * glm::dvec4(p[0], p[1], p[2], 1.0));
-            if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z)) continue;
+            if (!all_finite(w)) continue;
             lo = glm::min(lo, w);
             hi = glm::max(hi, w);
             any = true;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "core/finite.hpp"
 #include "cpu/shapes/bezier_algebra.hpp"
 #include "cpu/shapes/shapes.hpp"
 
@@ -26,7 +27,6 @@ constexpr double kPlaneAngle = 0.7137;
 // patch edges and corners (shared with neighbours) must not be lost to rounding.
 constexpr double kParameterSlack = 1e-6;
 
-bool finite(const dvec3& x) { return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z); }
 
 // The two planes through the ray: unit normals perpendicular to d and to each other.
 std::pair<dvec3, dvec3> ray_planes(const dvec3& d) {
@@ -141,12 +141,12 @@ std::vector<std::pair<double, double>> candidates(const Bicubic& f, const Bicubi
 std::vector<PatchHit> intersect_all(const BezierPatch& p, const Ray& ray, double t_min, double t_max) {
     const dvec3 d = ray.dir, o = ray.origin;
     const double dd = glm::dot(d, d);
-    if (!(dd > 0.0) || !std::isfinite(dd) || !finite(o)) return {};
+    if (!(dd > 0.0) || !std::isfinite(dd) || !all_finite(o)) return {};
 
     const surface::PatchBounds box = surface::bounds(p);
     const dvec3 center = 0.5 * (box.min + box.max);
     const double size = std::max({box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z});
-    if (!(size > 0.0) || !std::isfinite(size) || !finite(center)) return {};  // a point, or not finite
+    if (!(size > 0.0) || !std::isfinite(size) || !all_finite(center)) return {};  // a point, or not finite
     const double magnitude = std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.min.z),
                                        std::abs(box.max.x), std::abs(box.max.y), std::abs(box.max.z)});
     if (!may_hit_box(box, 1e-9 * (size + magnitude), ray, t_min, t_max)) return {};

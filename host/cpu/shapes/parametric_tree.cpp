@@ -9,6 +9,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/finite.hpp"
+
 namespace lancer::cpu {
 namespace {
 
@@ -29,7 +31,7 @@ double sampled_size(const surface::Program& program, const surface::ParametricSu
             double p[3];
             surface::evaluate_program(program, s.u0 + (s.u1 - s.u0) * i / n, s.v0 + (s.v1 - s.v0) * j / n, p);
             dvec3 q(p[0], p[1], p[2]);
-            if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) continue;
+            if (!all_finite(q)) continue;
             lo = glm::min(lo, q);
             hi = glm::max(hi, q);
         }
