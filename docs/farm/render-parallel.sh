@@ -17,6 +17,7 @@
 #
 # Frames that exist are skipped and frames are written atomically, so running this again after
 # a failure renders only what is missing. A failed job is retried, on another host if there is one.
+# The exit status is 0 only if every frame exists at the end.
 set -euo pipefail
 if (($# < 4)); then
   sed -n '2,20p' "$0" >&2
@@ -37,3 +38,15 @@ ranges() {
 # The command each job runs on its host, quoted for the remote shell.
 command=$(printf '%q render %q -o %q -q %s --frames' "$lancer" "$scene" "$pattern" "${LANCER_ARGS:-}")
 ranges | parallel --will-cite -S "$hosts" --workdir . --retries 3 --tag "$command {}"
+
+# parallel's exit status covers the jobs it saw fail, not a host that ran nothing and said yes, so
+# the frames themselves are the test of success. The pattern is lancer's (%d, %0Nd, %%): printf's.
+missing=()
+for ((k = 0; k < frames; ++k)); do
+  printf -v frame -- "$pattern" "$k"
+  [ -f "$frame" ] || missing+=("$frame")
+done
+if ((${#missing[@]})); then
+  echo "render-parallel: ${#missing[@]} of $frames frames missing after every job ended, the first: ${missing[0]}" >&2
+  exit 1
+fi

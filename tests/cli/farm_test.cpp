@@ -55,8 +55,9 @@ TEST(Farm, GnuParallelOverSshToTwoHostsRendersTheSameFrames) {
     // Chunks of 2 frames: three jobs over hostA and hostB, one job at a time on each. HOME is an
     // ancestor of the jobs' directory, as when the frames go under a user's home on the farm, so
     // parallel sends the directory relative to HOME and the remote side must resolve it there.
+    // SHELL is unset, as under CI: the remote side must get it from "sshd", not from the caller.
     std::string command = lancer_env() + "HOME='" + test::output_dir() + "' FAKE_SSH_LOG=ssh.log PARALLEL_SSH='" +
-                          test::source_path("tests/data/farm/fake-ssh") + "' '" +
+                          test::source_path("tests/data/farm/fake-ssh") + "' env -u SHELL '" +
                           test::source_path("docs/farm/render-parallel.sh") + "' '" + kScene +
                           "' farm/f_%d.png 6 1/hostA,1/hostB 2";
     ASSERT_EQ(run_in(dir, command), 0) << test::read_file(dir + "/log.txt");
@@ -72,6 +73,19 @@ TEST(Farm, GnuParallelOverSshToTwoHostsRendersTheSameFrames) {
     ASSERT_EQ(run_in(dir, command), 0) << test::read_file(dir + "/log.txt");
     expect_same_frames(dir, "farm");
     EXPECT_EQ(fs::last_write_time(dir + "/farm/f_0.png"), before);
+}
+
+// parallel counts a job as done when its ssh exits 0, which a broken host can do having run
+// nothing; the recipe then fails, naming what is missing, instead of reporting success.
+TEST(Farm, GnuParallelFailsWhenAHostRendersNothing) {
+    std::string dir = fresh_dir("parallel-idle-host");
+    fs::create_directories(dir + "/farm");
+    std::string command = lancer_env() + "PARALLEL_SSH=true '" + test::source_path("docs/farm/render-parallel.sh") +
+                          "' '" + kScene + "' farm/f_%03d.png 6 1/hostA 2";
+    EXPECT_EQ(run_in(dir, command), 1);
+    std::string log = test::read_file(dir + "/log.txt");
+    EXPECT_NE(log.find("6 of 6 frames missing"), std::string::npos) << log;
+    EXPECT_NE(log.find("farm/f_000.png"), std::string::npos) << log;
 }
 
 TEST(Farm, SlurmArrayTasksTogetherRenderTheSequence) {
