@@ -1,6 +1,6 @@
 // Ray/bicubic Bezier patch, exactly, by elimination (the CPU reference for patch sets):
 // the ray becomes two planes; their equations on the patch, f(u, v) = g(u, v) = 0, have bidegree
-// (3, 3); the resultant in v is solved as an 18x18 generalized eigenproblem (bezier_algebra);
+// (3, 3); the resultant in v is solved as a generalized eigenproblem, 18x18 at most (bezier_algebra);
 // v comes back from the univariate cubics; a 2x2 Newton polish and residual tests decide.
 // The eigenvalue filters are those of the design notes on exact parametric surfaces (section
 // 1.4); the acceptance test is tighter than the notes' 1e-7 (see below), and the eigenvector

@@ -8,8 +8,8 @@
 namespace lancer::cpu::bezier_algebra {
 namespace {
 
-constexpr int kN = 6;       // Sylvester matrix size: 2 x (degree in v)
-constexpr int kK = 3 * kN;  // pencil size: (degree in u) x kN
+constexpr int kN = 6;       // largest Sylvester matrix: 2 x (degree in v)
+constexpr int kK = 3 * kN;  // largest pencil: (degree in u) x kN
 
 // beta(3, i, k): the coefficient of x^k in the cubic Bernstein polynomial B_i(x).
 constexpr double kBeta[4][4] = {
@@ -29,6 +29,18 @@ std::vector<double>& workspace() {
         work.resize(info == 0 ? std::max<std::size_t>(8 * kK, static_cast<std::size_t>(query)) : 64 * kK);
     }
     return work;
+}
+
+// The degree in x (0 to 3) that f and g really have together: the highest power of x with a
+// coefficient above rounding in either. Degree-elevated patches (every rational quadric) have
+// exact zeros there that the transform to ray planes turns into ~1e-16 noise.
+int joint_degree(const Bicubic& f, const Bicubic& g, bool in_u, double tol) {
+    for (int d = 3; d > 0; --d)
+        for (int i = 0; i < 4; ++i) {
+            double a = in_u ? f[d][i] : f[i][d], b = in_u ? g[d][i] : g[i][d];
+            if (std::abs(a) > tol || std::abs(b) > tol) return d;
+        }
+    return 0;
 }
 
 }  // namespace
@@ -75,38 +87,52 @@ double coefficient_norm(const Bicubic& c) {
 }
 
 bool resultant_roots(const Bicubic& f, const Bicubic& g, double lo, double hi, std::vector<double>& roots) {
-    // Sylvester matrix in v: Syl(u) [1, v, ..., v^5]^T = [f, v f, v^2 f, g, v g, v^2 g]^T, split by
-    // powers of u as M_0 + u M_1 + u^2 M_2 + u^3 M_3; (M_k)[r][r + l] = c_f[k][l], (M_k)[3 + r][r + l] = c_g[k][l].
+    // The Sylvester matrix must be built for the degree in v that f and g really have: with both
+    // leading coefficients zero the formal resultant vanishes identically, the pencil is singular,
+    // and dggev's eigenvalues are whatever rounding makes them (they changed with OpenBLAS's
+    // kernel). Dropping coefficients at rounding level moves the roots by as little; the caller's
+    // Newton polish on the full f and g removes that. The degree in u sets the pencil's size.
+    const double tol = 1e-10 * (coefficient_norm(f) + coefficient_norm(g));
+    const int dv = joint_degree(f, g, /*in_u=*/false, tol);
+    const int du = joint_degree(f, g, /*in_u=*/true, tol);
+    if (dv == 0 || du == 0) return true;  // f and g do not both vary: the patch is a curve or a point
+    const int n = 2 * dv;                 // Sylvester matrix size
+    const int size = du * n;              // pencil size
+
+    // Sylvester matrix in v: Syl(u) [1, v, ..., v^(n-1)]^T = [f, v f, ..., g, v g, ...]^T, split by
+    // powers of u as M_0 + u M_1 + ... + u^du M_du; (M_k)[r][r + l] = c_f[k][l], (M_k)[dv + r][r + l] = c_g[k][l].
     double m[4][kN][kN] = {};
-    for (int k = 0; k < 4; ++k)
-        for (int r = 0; r < 3; ++r)
-            for (int l = 0; l < 4; ++l) {
+    for (int k = 0; k <= du; ++k)
+        for (int r = 0; r < dv; ++r)
+            for (int l = 0; l <= dv; ++l) {
                 m[k][r][r + l] = f[k][l];
-                m[k][3 + r][r + l] = g[k][l];
+                m[k][dv + r][r + l] = g[k][l];
             }
-    // First companion form on z = [V; u V; u^2 V]: A z = u B z with
-    // A = [[0 I 0], [0 0 I], [-M0 -M1 -M2]], B = diag(I, I, M3). Column-major: X[col * kK + row].
+    // First companion form on z = [V; u V; ...; u^(du-1) V]: A z = u B z with
+    // A = [[0 I 0 ...], ..., [-M0 -M1 ... -M(du-1)]], B = diag(I, ..., I, M_du). Column-major:
+    // X[col * size + row].
     double a[kK * kK] = {}, b[kK * kK] = {};
-    for (int p = 0; p < 2; ++p)
-        for (int r = 0; r < kN; ++r) {
-            a[((p + 1) * kN + r) * kK + p * kN + r] = 1.0;
-            b[(p * kN + r) * kK + p * kN + r] = 1.0;
+    for (int p = 0; p + 1 < du; ++p)
+        for (int r = 0; r < n; ++r) {
+            a[((p + 1) * n + r) * size + p * n + r] = 1.0;
+            b[(p * n + r) * size + p * n + r] = 1.0;
         }
-    for (int q = 0; q < 3; ++q)
-        for (int r = 0; r < kN; ++r)
-            for (int c = 0; c < kN; ++c) a[(q * kN + c) * kK + 2 * kN + r] = -m[q][r][c];
-    for (int r = 0; r < kN; ++r)
-        for (int c = 0; c < kN; ++c) b[(2 * kN + c) * kK + 2 * kN + r] = m[3][r][c];
+    const int last = (du - 1) * n;  // first row and column of the last block
+    for (int q = 0; q < du; ++q)
+        for (int r = 0; r < n; ++r)
+            for (int c = 0; c < n; ++c) a[(q * n + c) * size + last + r] = -m[q][r][c];
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) b[(last + c) * size + last + r] = m[du][r][c];
 
     double ar[kK], ai[kK], be[kK];
     std::vector<double>& work = workspace();
-    lapack_int info = LAPACKE_dggev_work(LAPACK_COL_MAJOR, 'N', 'N', kK, a, kK, b, kK, ar, ai, be, nullptr, 1, nullptr,
-                                         1, work.data(), static_cast<lapack_int>(work.size()));
+    lapack_int info = LAPACKE_dggev_work(LAPACK_COL_MAJOR, 'N', 'N', size, a, size, b, size, ar, ai, be, nullptr, 1,
+                                         nullptr, 1, work.data(), static_cast<lapack_int>(work.size()));
     if (info != 0) return false;
-    for (int e = 0; e < kK; ++e) {
+    for (int e = 0; e < size; ++e) {
         double scale = std::max({std::abs(ar[e]), std::abs(ai[e]), std::abs(be[e])});
         if (!(scale > 0.0) || !std::isfinite(scale)) continue;  // alpha = beta = 0: singular pencil
-        if (std::abs(be[e]) <= 1e-12 * scale) continue;         // infinite: M3 singular
+        if (std::abs(be[e]) <= 1e-12 * scale) continue;         // infinite: M_du singular
         if (std::abs(ai[e] / be[e]) > 1e-5) continue;           // complex
         double u = ar[e] / be[e];
         if (u >= lo && u <= hi) roots.push_back(u);

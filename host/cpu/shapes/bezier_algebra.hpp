@@ -27,8 +27,10 @@ double horner(const Cubic& c, double x);
 // Sum of |coefficients|: the scale that residual tests are relative to.
 double coefficient_norm(const Bicubic& c);
 
-// The real roots u in [lo, hi] of Res_v(f, g)(u) = 0, as the real finite eigenvalues of the 18x18
-// first companion linearisation of the 6x6 Sylvester matrix in v (LAPACK dggev). Eigenvalues
+// The real roots u in [lo, hi] of Res_v(f, g)(u) = 0, as the real finite eigenvalues of the first
+// companion linearisation of the Sylvester matrix in v (LAPACK dggev): 18x18 from a 6x6 matrix for
+// bicubics, smaller where f and g together have a lower degree in u or v (a degree-elevated patch).
+// Coefficients below 1e-10 of the pair's size count as zero in deciding the degree. Eigenvalues
 // with |imaginary part| up to 1e-5 count as real: near-double roots at silhouettes come out as
 // close complex pairs and the caller's Newton polish decides. Returns false if LAPACK failed.
 bool resultant_roots(const Bicubic& f, const Bicubic& g, double lo, double hi, std::vector<double>& roots);
