@@ -2,9 +2,7 @@
 // crosses it, before the memory it bounds is allocated. Limits of single values (image size,
 // samples, max_depth, frames, subdivision, magnitudes, expression length and nesting, patch
 // counts in a file) are bad files in tests/data/bad/ and tests/data/bad_patches/ and cases in
-// tests/unit/expr_parser_test.cpp; here are the ones that need a scene built to size. (The
-// object limit, 1,048,576, is checked the way the light limit is; a scene that large takes
-// seconds and most of a gigabyte just to parse, too much for the suite.)
+// tests/unit/expr_parser_test.cpp; here are the ones that need a scene built to size.
 #include <filesystem>
 #include <map>
 
@@ -44,6 +42,14 @@ TEST(Limits, Lights) {
     const std::string light = "[[light]]\nposition = [0, 5, 0]\n";
     EXPECT_EQ(error_of(kHead + repeat(light, limits::kMaxLights)), "accepted");
     EXPECT_EQ(error_of(kHead + repeat(light, limits::kMaxLights + 1)), "4:1: too many lights (the limit is 256)");
+}
+
+TEST(Limits, Objects) {
+    // As an inline array of empty tables the 1,048,576 objects take 3 MB and a fraction of a
+    // second to parse. At the limit the count passes and the first object's own error comes next.
+    auto objects = [](long long n) { return "object = [" + repeat("{},", n - 1) + "{}]\n" + kHead; };
+    EXPECT_EQ(error_of(objects(limits::kMaxObjects)), "1:11: object 1: missing required key 'type'");
+    EXPECT_EQ(error_of(objects(limits::kMaxObjects + 1)), "1:10: too many objects (the limit is 1048576)");
 }
 
 TEST(Limits, Materials) {
