@@ -36,6 +36,18 @@ SceneFiles::SceneFiles(FileWatcher& watcher, const std::string& scene_file)
 void SceneFiles::watch(const Scene& scene) {
     std::set<fs::path> files = {FileWatcher::identity(scene_file_)};
     for (const std::string& d : scene.dependencies) files.insert(FileWatcher::identity(d));
+    replace(std::move(files));
+}
+
+void SceneFiles::watch_failure(const UserError& error) {
+    const auto* located = dynamic_cast<const SceneError*>(&error);
+    if (!located || located->where().file.empty() || !fs::is_regular_file(located->where().file)) return;
+    std::set<fs::path> files = files_;
+    files.insert(FileWatcher::identity(located->where().file));
+    replace(std::move(files));
+}
+
+void SceneFiles::replace(std::set<fs::path> files) {
     if (files == files_) return;
     watcher_.watch_files(files);
     files_ = std::move(files);

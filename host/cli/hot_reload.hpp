@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/file_watcher.hpp"
+#include "core/error.hpp"
 #include "cli/render_options.hpp"
 #include "scene/scene.hpp"
 
@@ -22,8 +23,8 @@ std::string resolve_shader_dir(const std::string& given);
 // of its animation. --frame for a scene without [animation] is an error.
 Scene load_scene_at_frame(const RenderOptions& options, std::optional<int> frame);
 
-// Keeps `watcher` on exactly the files of the scene last loaded. Until a scene loads, that is
-// the scene file alone; a scene that fails to load changes nothing.
+// Keeps `watcher` on the files of the scene last loaded. Until a scene loads, that is the scene
+// file alone. A scene that fails to load adds only the file its error is in.
 class SceneFiles {
 public:
     SceneFiles(FileWatcher& watcher, const std::string& scene_file);
@@ -31,12 +32,18 @@ public:
     // After each successful load: watch the scene file and `scene.dependencies`, and stop
     // watching files it no longer references.
     void watch(const Scene& scene);
+    // After a failed load: also watch the file the error points into when it is not one already
+    // watched (a broken patch file that the edited scene has just begun to reference), so that
+    // fixing that file reloads the scene.
+    void watch_failure(const UserError& error);
     // Whether a path the watcher reported is one of the scene's files.
     bool contains(const std::filesystem::path& changed) const { return files_.count(changed) > 0; }
     // How many files the scene references besides itself.
     std::size_t references() const { return files_.size() - 1; }
 
 private:
+    void replace(std::set<std::filesystem::path> files);
+
     FileWatcher& watcher_;
     std::string scene_file_;
     std::set<std::filesystem::path> files_;  // FileWatcher::identity() of each

@@ -56,6 +56,7 @@ struct WatchCommand {
                 return true;
             } catch (const UserError& e) {
                 std::fprintf(stderr, "%s\n", format_error(e).c_str());
+                scene_files.watch_failure(e);
                 return false;
             }
         };

@@ -282,6 +282,7 @@ private:
             say("reload: " + changes.names + " changed: scene reloaded");
         } catch (const UserError& e) {
             print_error(e);
+            scene_files_->watch_failure(e);
             std::fprintf(stderr, "reload: %s changed: scene error, keeping the last good scene and picture\n",
                          changes.names.c_str());
         }

@@ -237,6 +237,22 @@ TEST_F(WatchTest, ReferencedFilesAreWatchedForAsLongAsTheSceneReferencesThem) {
     EXPECT_EQ(output().bytes, render("scene.toml").bytes);
 }
 
+// The scene is edited to reference a patch file that is broken: the error is reported, and that
+// file is watched from then on, so fixing it (not touching the scene again) shows the patch.
+TEST_F(WatchTest, ABrokenFileTheSceneBeginsToReferenceIsWatchedUntilFixed) {
+    test::write_file(dir / "a.bpt", square_patch(-2, -1, 1.5));
+    test::write_file(dir / "b.bpt", "1\n3 3\n0 0 0\n");  // 1 of 16 points
+    test::write_file(dir / "scene.toml", patch_scene("a.bpt"));
+    start({"scene.toml"});
+    test::write_file(dir / "scene.toml", patch_scene("b.bpt"));
+    ASSERT_TRUE(wait_for_count("reload: scene.toml changed: scene error", 1)) << child->log();
+    EXPECT_NE(child->log().find("b.bpt:"), std::string::npos) << child->log();
+
+    test::write_file(dir / "b.bpt", square_patch(0.5, -1, 1.5));
+    ASSERT_TRUE(wait_for_count("reload: b.bpt changed: scene reloaded", 1)) << child->log();
+    EXPECT_EQ(output().bytes, render("scene.toml").bytes);
+}
+
 // A scene is whatever file the scene argument names (`render` accepts any name), not a .toml.
 TEST_F(WatchTest, ASceneFileNotNamedTomlReloadsOnEdit) {
     test::write_file(dir / "sphere.scene", scene_text("0"));

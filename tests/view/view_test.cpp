@@ -473,6 +473,23 @@ TEST_F(View, EditsOfTheSceneAndOfTheFilesItReferencesReloadIt) {
     EXPECT_EQ(log().find("compil"), std::string::npos) << log();
 }
 
+// The scene is edited to reference a broken patch file: that file is watched from then on, so
+// fixing it (not touching the scene again) shows the patch.
+TEST_F(View, ABrokenFileTheSceneBeginsToReferenceIsWatchedUntilFixed) {
+    start();
+    test::write_file(dir / "panel.bpt", "1\n3 3\n0 0 0\n");  // 1 of 16 points
+    test::write_file(dir / "scene.toml", scene_text(file_camera()) +
+                                             "[[object]]\ntype = \"bezier\"\nfile = \"panel.bpt\"\nmaterial = \"red\"\n");
+    ASSERT_TRUE(wait_for_count("reload: scene.toml changed: scene error", 1)) << log();
+    int refined = test::count_occurrences(log(), "view: refined");
+    test::write_file(dir / "panel.bpt", standing_patch(0.5, 2));
+    ASSERT_TRUE(wait_for_count("reload: panel.bpt changed: scene reloaded", 1)) << log();
+    ASSERT_TRUE(wait_for_count("view: refined", refined + 1)) << log();
+    auto r = test::run_lancer("render " + (dir / "scene.toml").string() + " -q -o " + (dir / "panel.png").string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(dump().bytes, read_png((dir / "panel.png").string()).bytes);
+}
+
 // A burst that breaks a shader and edits the scene: the new scene is shown all the same, drawn
 // with the last good shaders.
 TEST_F(View, ABrokenShaderInTheSameBurstAsASceneEditStillShowsTheScene) {
