@@ -25,6 +25,35 @@ import sys
 import tomllib
 
 
+# The keys this converter translates, per table. Any other key changes lancer's picture in a way
+# the POV-Ray twin would not show (refraction, textures, area lights, ...), so it is refused
+# rather than dropped: a benchmark must compare the same picture. ("subdivision" only changes how
+# lancer's GPU path organises the work; "name" only labels.)
+TRANSLATED = {
+    "top": {"render", "camera", "ambient", "light", "material", "object"},
+    "render": {"width", "height", "samples", "max_depth", "background"},
+    "camera": {"eye", "look_at", "up", "fov"},
+    "ambient": {"color"},
+    "light": {"position", "color", "name"},
+    "material": {"color", "checker", "ambient", "diffuse", "specular", "shininess", "reflection"},
+    "checker": {"colors", "size"},
+    "sphere": {"center", "radius"},
+    "plane": {"point", "normal"},
+    "rectangle": {"corner", "edge_u", "edge_v"},
+    "box": {"min", "max"},
+    "bezier": {"file", "control_points", "patches", "transform", "subdivision"},
+    "parametric": {"x", "y", "z", "u", "v", "params", "transform"},
+}
+OBJECT_KEYS = {"type", "material", "name"}
+
+
+def check_keys(table, allowed, what):
+    for key in table:
+        if key not in allowed:
+            sys.exit(f"toml_to_pov: {what}: '{key}' is not translated to POV-Ray; "
+                     f"the twin would not be the same picture")
+
+
 def vec(v):
     return "<%s>" % ", ".join("%.9g" % float(x) for x in v)
 
@@ -83,6 +112,9 @@ def read_bpt(path):
             line = line.split("#", 1)[0].replace(",", " ")
             numbers.extend(float(x) for x in line.split())
     count = int(numbers[0])
+    if len(numbers) != 1 + count * (2 + 16 * 3):
+        sys.exit(f"toml_to_pov: {path}: not {count} patches of 16 points (x, y, z): "
+                 "rational patches (a weight per point) are not translated to POV-Ray")
     pos, patches = 1, []
     for _ in range(count):
         pos += 2  # "3 3"
@@ -173,8 +205,9 @@ def analytic_torus(o):
 
 def objects(scene, base, torus_as):
     out = []
-    for o in scene.get("object", []):
+    for i, o in enumerate(scene.get("object", [])):
         t = o["type"]
+        check_keys(o, TRANSLATED.get(t, set()) | OBJECT_KEYS, f"object {i + 1} ('{t}')")
         if t == "sphere":
             body = f"sphere {{ {vec(o['center'])}, {o['radius']:.9g}\n"
         elif t == "plane":
@@ -208,6 +241,15 @@ def main():
     args = ap.parse_args()
     with open(args.scene, "rb") as f:
         scene = tomllib.load(f)
+    check_keys(scene, TRANSLATED["top"], "the scene")
+    for table in ("render", "camera", "ambient"):
+        check_keys(scene.get(table, {}), TRANSLATED[table], f"[{table}]")
+    for i, light in enumerate(scene.get("light", [])):
+        plain = {k: v for k, v in light.items() if not (k == "type" and v == "point")}
+        check_keys(plain, TRANSLATED["light"], f"light {i + 1}")
+    for name, m in scene.get("material", {}).items():
+        check_keys(m, TRANSLATED["material"], f"material '{name}'")
+        check_keys(m.get("checker", {}), TRANSLATED["checker"], f"material '{name}' checker")
     r = scene.get("render", {})
     amb = scene.get("ambient", {}).get("color", [1, 1, 1])
     print(f"// Generated from {args.scene} by bench/toml_to_pov.py. Do not edit.")
