@@ -60,14 +60,24 @@ vec3 shade_local(Material m, vec3 pigment, vec3 p, vec3 n, vec3 shading_n, vec3 
     vec3 color = m.phong.x * pigment * frame.ambient.rgb;
     vec3 mirrored = reflect(view_dir, shading_n);
     vec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
-    for (uint i = 0u; i < frame.light_count; ++i) {
-        Light light = lights[i];
-        // One call site (each inlines the shadow ray's whole intersection code): a point or spot
-        // light is one sample at its position.
-        uint count = light_sample_count(light);
-        for (uint s = 0u; s < count; ++s) {
-            vec3 q = light_sample_position(light, i, s, seed);
-            add_light(color, m, pigment, p, n, shading_n, view_dir, mirrored, origin, light, q, count, media, scale, rays);
+    // One loop over every sample of every light (a point or spot light is one sample at its
+    // position), with one call site: each inlines the shadow ray's whole intersection code. Not a
+    // loop over samples inside the loop over lights: lavapipe keeps even a one-trip inner loop
+    // around that much code (the teapot was 6% slower, A/B). The light is fetched once, at its
+    // first sample (fetching it at every sample cost the area-light scene 5%).
+    uint s = 0u;
+    Light light;
+    uint count = 0u;
+    for (uint i = 0u; i < frame.light_count;) {
+        if (s == 0u) {
+            light = lights[i];
+            count = light_sample_count(light);
+        }
+        vec3 q = light_sample_position(light, i, s, seed);
+        add_light(color, m, pigment, p, n, shading_n, view_dir, mirrored, origin, light, q, count, media, scale, rays);
+        if (++s >= count) {
+            s = 0u;
+            ++i;
         }
     }
     return color;
