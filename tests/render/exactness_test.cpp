@@ -10,7 +10,6 @@
 
 #include "cpu/cpu_renderer.hpp"
 #include "scene/camera.hpp"
-#include "scene/load_scene.hpp"
 #include "support/test_support.hpp"
 #include "surface/bezier_patch.hpp"
 
@@ -32,9 +31,7 @@ struct Agreement {
 };
 
 TEST(Exactness, GpuBezierClippingAgreesWithLapack) {
-    Scene scene = load_scene(test::source_path("scenes/teapot.toml"));
-    scene.render.width = 64;
-    scene.render.height = 48;
+    Scene scene = test::shipped_scene("teapot", 64, 48);
     const auto& teapot = std::get<BezierSurface>(scene.objects[1].shape);
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), height(-0.5, 1.0);
@@ -101,11 +98,8 @@ namespace {
 // shared corners, must all hit on the GPU, where the reference hits (no cracks between
 // patches or between the GPU's sub-patch leaves).
 TEST(Exactness, NoCracksAlongSharedPatchEdges) {
-    Scene scene = load_scene(test::source_path("scenes/teapot.toml"));
+    Scene scene = test::shipped_scene("teapot", 3, 3, 1);
     scene.objects.erase(scene.objects.begin() + 2);  // the chrome sphere would only occlude
-    scene.render.width = 3;
-    scene.render.height = 3;
-    scene.render.samples = 1;
     const auto& patches = std::get<BezierSurface>(scene.objects[1].shape).patches;
     // An edge as (patch, which): 0 = u=0, 1 = u=1, 2 = v=0, 3 = v=1.
     auto edge_points = [&](std::size_t p, int which) {
@@ -190,9 +184,7 @@ namespace {
 // Parametric surfaces: the GPU's Newton from cell seeds against the reference's certified
 // interval Newton, over views of the torus from several directions.
 TEST(Exactness, GpuNewtonAgreesWithIntervalNewtonOnTheTorus) {
-    Scene scene = load_scene(test::source_path("scenes/torus.toml"));
-    scene.render.width = 48;
-    scene.render.height = 36;
+    Scene scene = test::shipped_scene("torus", 48, 36);
     const auto& torus = std::get<ParametricObject>(scene.objects[1].shape).surface;
     std::mt19937 rng(9);
     std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), height(-0.3, 0.9);

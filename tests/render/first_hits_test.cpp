@@ -6,16 +6,13 @@
 #include <gtest/gtest.h>
 
 #include "cpu/cpu_renderer.hpp"
-#include "scene/load_scene.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
 namespace {
 
 TEST(FirstHits, GpuAgreesWithReferenceRayByRay) {
-    Scene scene = load_scene(test::source_path("scenes/shadows.toml"));
-    scene.render.width = 96;
-    scene.render.height = 54;
+    Scene scene = test::shipped_scene("shadows", 96, 54);
     FloatImage gpu = test::gpu_renderer().render_hits(scene);
     FloatImage cpu = CpuRenderer().render_hits(scene);
     int hits = 0, mismatched = 0;

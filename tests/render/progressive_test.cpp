@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/load_scene.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
@@ -32,10 +31,7 @@ void expect_bit_identical(const FloatImage& a, const FloatImage& b) {
 }
 
 TEST(Progressive, PassesEndOnTheWholeRenderBitForBit) {
-    Scene scene = load_scene(test::source_path("scenes/seed.toml"));
-    scene.render.width = 96;
-    scene.render.height = 54;
-    scene.render.samples = 3;
+    Scene scene = test::shipped_scene("seed", 96, 54, 3);
     FloatImage whole = test::gpu_renderer().render(scene, {});
     expect_bit_identical(render_in_passes(scene, {{0, 1}, {1, 1}, {2, 2}, {4, 5}}), whole);
     expect_bit_identical(render_in_passes(scene, {{0, 8}, {8, 1}}), whole);
@@ -44,19 +40,13 @@ TEST(Progressive, PassesEndOnTheWholeRenderBitForBit) {
 // Area light samples are placed by a hash of the pixel and its grid sample, never of the pass:
 // jittered soft shadows, spots and glass end on the same bits too.
 TEST(Progressive, JitteredAreaLightsAndGlassEndOnTheWholeRender) {
-    Scene scene = load_scene(test::source_path("scenes/lights.toml"));
-    scene.render.width = 64;
-    scene.render.height = 36;
-    scene.render.samples = 3;
+    Scene scene = test::shipped_scene("lights", 64, 36, 3);
     FloatImage whole = test::gpu_renderer().render(scene, {});
     expect_bit_identical(render_in_passes(scene, {{0, 1}, {1, 3}, {4, 5}}), whole);
 }
 
 TEST(Progressive, PartialPassesHoldSumsAndRayCounts) {
-    Scene scene = load_scene(test::source_path("scenes/seed.toml"));
-    scene.render.width = 32;
-    scene.render.height = 18;
-    scene.render.samples = 2;
+    Scene scene = test::shipped_scene("seed", 32, 18, 2);
     FloatImage sums;
     test::gpu_renderer().render_samples(scene, 0, 2, sums, {});
     FloatImage whole = test::gpu_renderer().render(scene, {});
@@ -94,9 +84,7 @@ radius = 1
 }
 
 TEST(Progressive, ACancelledPassThrows) {
-    Scene scene = load_scene(test::source_path("scenes/seed.toml"));
-    scene.render.width = 64;
-    scene.render.height = 36;
+    Scene scene = test::shipped_scene("seed", 64, 36);
     FloatImage sums;
     EXPECT_THROW(test::gpu_renderer().render_samples(scene, 0, 1, sums, [](double) { return false; }), RenderCancelled);
 }

@@ -4,16 +4,13 @@
 #include <gtest/gtest.h>
 
 #include "gpu/embedded_shaders.hpp"
-#include "scene/load_scene.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
 namespace {
 
 TEST(RuntimeCompile, EmbeddedSourcesMatchEmbeddedSpirv) {
-    Scene scene = load_scene(test::source_path("scenes/seed.toml"));
-    scene.render.width = 96;
-    scene.render.height = 54;
+    Scene scene = test::shipped_scene("seed", 96, 54);
     GpuRenderer& renderer = test::gpu_renderer();
     Rgb8Image build_time = to_srgb8(renderer.render(scene, {}));
     renderer.use_shaders(gpu::embedded_tree());

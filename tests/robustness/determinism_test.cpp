@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include "cpu/cpu_renderer.hpp"
-#include "scene/load_scene.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
@@ -35,11 +34,7 @@ TEST_P(Determinism, TwoRunsWriteTheSamePngBytes) {
 INSTANTIATE_TEST_SUITE_P(Backends, Determinism, testing::Values("gpu", "cpu"));
 
 Scene small(const char* name) {
-    Scene scene = load_scene(test::source_path(std::string("scenes/") + name + ".toml"));
-    scene.render.width = 48;
-    scene.render.height = 27;
-    scene.render.samples = 2;
-    return scene;
+    return test::shipped_scene(name, 48, 27, 2);
 }
 
 bool same_floats(const FloatImage& a, const FloatImage& b) {

@@ -48,6 +48,14 @@ const char* backend_name(Backend backend) { return backend == Backend::Gpu ? "gp
 
 Scene scene_from_text(const std::string& toml) { return parse_scene(toml, "inline.toml"); }
 
+Scene shipped_scene(const std::string& name, int width, int height, int samples) {
+    Scene scene = load_scene(source_path("scenes/" + name + ".toml"));
+    scene.render.width = width;
+    scene.render.height = height;
+    if (samples > 0) scene.render.samples = samples;
+    return scene;
+}
+
 std::string save_comparison(const std::string& name, const Rgb8Image& a, const Rgb8Image& b) {
     std::string dir = output_dir() + "/" + name;
     std::filesystem::create_directories(dir);

@@ -27,6 +27,8 @@ const char* backend_name(Backend backend);                   // "gpu" or "cpu", 
 
 // Loads a scene from text (for tests that build scenes inline).
 Scene scene_from_text(const std::string& toml);
+// scenes/NAME.toml at a test's image size; `samples` 0 keeps the scene's own.
+Scene shipped_scene(const std::string& name, int width, int height, int samples = 0);
 
 // Writes a.png, b.png and diff.png under output_dir()/name and returns the directory.
 std::string save_comparison(const std::string& name, const Rgb8Image& a, const Rgb8Image& b);
