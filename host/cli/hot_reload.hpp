@@ -9,8 +9,8 @@
 #include <string>
 
 #include "cli/file_watcher.hpp"
-#include "core/error.hpp"
 #include "cli/render_options.hpp"
+#include "core/error.hpp"
 #include "scene/scene.hpp"
 
 namespace lancer {
