@@ -48,22 +48,9 @@ GpuRenderer::~GpuRenderer() {
     pipelines_.clear();
 }
 
-namespace {
-
-// `tree` with surface_functions.glsl replaced by generated code (when there is any).
-gpu::ShaderTree with_surface_code(gpu::ShaderTree tree, const std::string& surface_code) {
-    if (surface_code.empty()) return tree;
-    return [tree = std::move(tree), surface_code](const std::string& name) -> std::optional<std::string> {
-        if (name == "surface_functions.glsl") return surface_code;
-        return tree(name);
-    };
-}
-
-}  // namespace
-
 void GpuRenderer::use_shaders(const gpu::ShaderTree& tree, const std::string& display_root) {
     std::vector<std::uint32_t> spirv =
-        gpu::compile_compute(with_surface_code(tree, surface_code_), gpu::kTraceShader, {}, display_root);
+        gpu::compile_compute(gpu::with_files(tree, generated_), gpu::kTraceShader, {}, display_root);
     // Prove the new code builds before dropping the old pipelines (the plain variant is cheap).
     auto probe = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv, gpu::ShaderFeatures{});
     VK_CHECK(vkDeviceWaitIdle(context_->device()));  // old pipelines may still be in use
@@ -86,16 +73,16 @@ std::vector<std::string> GpuRenderer::notes() const {
                         bands_rerendered_)};
 }
 
-void GpuRenderer::ensure_program(const std::string& surface_code) {
-    if (surface_code == surface_code_) return;
+void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated) {
+    if (generated == generated_) return;
     std::vector<std::uint32_t> spirv =
-        surface_code.empty() && base_is_embedded_
+        generated.empty() && base_is_embedded_
             ? gpu::embedded_trace_spirv()
-            : gpu::compile_compute(with_surface_code(base_tree_, surface_code), gpu::kTraceShader, {}, display_root_);
+            : gpu::compile_compute(gpu::with_files(base_tree_, generated), gpu::kTraceShader, {}, display_root_);
     VK_CHECK(vkDeviceWaitIdle(context_->device()));
     pipelines_.clear();
     spirv_ = std::move(spirv);
-    surface_code_ = surface_code;
+    generated_ = generated;
 }
 
 void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features) {
@@ -109,11 +96,12 @@ std::string GpuRenderer::description() const {
     return "gpu: " + info.name + " (" + info.type + ", " + info.driver + ")";
 }
 
-gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes) {
+gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated) {
     const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
     gpu::PackedScene packed = gpu::pack_scene(scene, {acceleration_, &bvh_cache_, &limits});
     gpu::check_memory_budget(gpu::buffer_needs(packed, output_bytes), limits);
     resources_.upload(packed, gpu::pack_frame(scene, packed));
+    if (std::string code = gpu::surface_functions_glsl(scene); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;
     features.check_loop_limit = context_->info().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
     return features;
@@ -213,9 +201,10 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
     std::size_t rows = std::clamp<std::size_t>(band_pixels / width, gpu::WORKGROUP_Y, height);
     rows = std::min(rows, max_rows);
 
-    gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes);
+    gpu::ShaderFiles generated;
+    gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, generated);
     features.output_hits = output_hits;
-    ensure_program(gpu::surface_functions_glsl(scene));
+    ensure_program(generated);
     select_pipeline(features);
     const gpu::Buffer& output = resources_.output(rows * row_bytes);
 

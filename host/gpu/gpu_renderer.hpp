@@ -57,11 +57,11 @@ public:
 
 private:
     // Packs the scene within the device's limits and uploads it; returns the shader features
-    // it needs.
-    gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes);
-    // Makes spirv_ the tracer built from base_tree_ with `surface_code` as surface_functions.glsl
-    // ("" = the file as it is in the tree), compiling only when that changed.
-    void ensure_program(const std::string& surface_code);
+    // it needs, and adds the generated shader files it needs to `generated`.
+    gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated);
+    // Makes spirv_ the tracer built from base_tree_ with `generated` in place of the files of
+    // the same names, compiling only when that changed.
+    void ensure_program(const gpu::ShaderFiles& generated);
     void select_pipeline(const gpu::ShaderFeatures& features);
     struct SampleRange {
         std::uint32_t first, count;
@@ -81,7 +81,7 @@ private:
     gpu::ShaderTree base_tree_;
     bool base_is_embedded_ = true;
     std::string display_root_;
-    std::string surface_code_;
+    gpu::ShaderFiles generated_;  // code generated for the current scene, by file name
     std::vector<std::uint32_t> spirv_;
     std::map<gpu::ShaderFeatures, std::unique_ptr<gpu::ComputePipeline>> pipelines_;
     gpu::ComputePipeline* pipeline_ = nullptr;  // the one for the current render

@@ -265,6 +265,12 @@ PackedScene pack_scene(const Scene& scene, const PackOptions& options) {
     if (!packed.patterns.empty()) packed.permutation.assign(kPerlinPermutation.begin(), kPerlinPermutation.end());
     for (const lancer::Light& l : scene.lights) packed.lights.push_back(pack_light(l));
     ShaderFeatures& f = packed.features;
+    for (const Primitive& p : packed.primitives) {
+        f.has_sphere |= p.type == SHAPE_SPHERE;
+        f.has_plane |= p.type == SHAPE_PLANE;
+        f.has_rectangle |= p.type == SHAPE_RECTANGLE;
+        f.has_box |= p.type == SHAPE_BOX;
+    }
     f.has_bezier = !packed.patches.empty();
     f.has_bvh = !packed.nodes.empty();
     f.has_textures = !packed.textures.empty();

@@ -131,6 +131,14 @@ ShaderTree directory_tree(const std::string& root) {
     };
 }
 
+ShaderTree with_files(ShaderTree tree, ShaderFiles files) {
+    if (files.empty()) return tree;
+    return [tree = std::move(tree), files = std::move(files)](const std::string& name) -> std::optional<std::string> {
+        if (auto file = files.find(name); file != files.end()) return file->second;
+        return tree(name);
+    };
+}
+
 std::vector<std::uint32_t> compile_compute(const ShaderTree& tree, const std::string& entry,
                                            const std::vector<ShaderDefine>& defines, const std::string& display_root) {
     Compiled c = compile(tree, entry, defines, display_root);

@@ -5,6 +5,7 @@
 // line they occur in, included files too.
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -18,6 +19,11 @@ namespace lancer::gpu {
 using ShaderTree = std::function<std::optional<std::string>(const std::string& name)>;
 
 ShaderTree directory_tree(const std::string& root);
+
+// Files that stand in for files of a tree, by name (code generated for a scene).
+using ShaderFiles = std::map<std::string, std::string>;
+// `tree` with `files` in place of the files of the same names.
+ShaderTree with_files(ShaderTree tree, ShaderFiles files);
 
 struct ShaderDefine {
     std::string name;
