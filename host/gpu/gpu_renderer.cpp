@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <type_traits>
 
+#include "core/cancel.hpp"
+#include "gpu/driver_memory.hpp"
 #include "gpu/embedded_shaders.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/scene_packing.hpp"
@@ -22,9 +24,20 @@ constexpr std::size_t kBandPixels = 128 * 1024;
 
 }  // namespace
 
+namespace {
+
+// Runs before the context is made: under a memory limit too small for the driver, a clear error
+// rather than a crash inside it.
+std::shared_ptr<gpu::Context> make_context(const gpu::ContextOptions& options) {
+    gpu::check_driver_startup_memory();
+    return std::make_shared<gpu::Context>(options);
+}
+
+}  // namespace
+
 GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration acceleration)
-    : context_(std::make_unique<gpu::Context>(options)),
-      layout_(std::make_unique<gpu::TraceLayout>(*context_)),
+    : context_(make_context(options)),
+      layout_(std::make_shared<gpu::TraceLayout>(*context_)),
       base_tree_(gpu::embedded_tree()),
       spirv_(gpu::embedded_trace_spirv()),
       acceleration_(acceleration) {
@@ -96,7 +109,8 @@ void GpuRenderer::use_shaders(const gpu::ShaderTree& tree, const std::string& di
     std::vector<std::uint32_t> spirv =
         gpu::compile_compute(with_surface_code(tree, surface_code_), gpu::kTraceShader, {}, display_root);
     // Prove the new code builds before dropping the old pipelines (the plain variant is cheap).
-    auto probe = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv, gpu::PipelineVariant{});
+    auto probe = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv, gpu::PipelineVariant{});
+    if (!probe->wait([] { return !cancellation_requested(); })) throw Cancelled();
     VK_CHECK(vkDeviceWaitIdle(context_->device()));  // old pipelines may still be in use
     pipelines_.clear();
     pipelines_[gpu::PipelineVariant{}] = std::move(probe);
@@ -118,10 +132,11 @@ void GpuRenderer::ensure_program(const std::string& surface_code) {
     surface_code_ = surface_code;
 }
 
-void GpuRenderer::select_pipeline(const gpu::PipelineVariant& variant) {
+void GpuRenderer::select_pipeline(const gpu::PipelineVariant& variant, const ProgressFn& progress) {
     auto& slot = pipelines_[variant];
-    if (!slot) slot = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv_, variant);
-    pipeline_ = slot.get();
+    if (!slot) slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv_, variant);
+    pipeline_ = slot->wait([&] { return !progress || progress(0.0); });
+    if (!pipeline_) throw RenderCancelled();
 }
 
 std::string GpuRenderer::description() const {
@@ -273,12 +288,12 @@ FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     return image;
 }
 
-void GpuRenderer::prepare(const Scene& scene) {
+void GpuRenderer::prepare(const Scene& scene, const ProgressFn& progress) {
     // A 1x1 render of the scene: the same pipeline variant (it depends on the scene's contents,
     // not its size), compiled by the driver at this first dispatch, and the scene's buffers.
     Scene tiny = scene;
     tiny.render.width = tiny.render.height = tiny.render.samples = 1;
-    render(tiny, {});
+    render(tiny, progress ? [&](double) { return progress(0.0); } : ProgressFn{});
 }
 
 FloatImage GpuRenderer::render_hits(const Scene& scene) {
@@ -310,11 +325,15 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
     rows = std::min(rows, max_rows);
 
     // Before anything is packed or allocated: a scene the device cannot hold is a clear error.
-    gpu::check_memory_budget(gpu::scene_buffer_needs(scene, rows * row_bytes), gpu::buffer_memory_limits(*context_));
+    const std::vector<gpu::BufferNeed> needs = gpu::scene_buffer_needs(scene, rows * row_bytes);
+    gpu::check_memory_budget(needs, gpu::buffer_memory_limits(*context_));
+    std::uint64_t buffer_bytes = 0;
+    for (const gpu::BufferNeed& need : needs) buffer_bytes += need.bytes;
+    gpu::check_render_memory(scene, buffer_bytes);
     gpu::PipelineVariant variant = upload_scene(scene);
     variant.output_hits = output_hits;
     ensure_program(gpu::surface_functions_glsl(scene));
-    select_pipeline(variant);
+    select_pipeline(variant, progress);
     ensure_output(rows * row_bytes);
     update_descriptors();
 

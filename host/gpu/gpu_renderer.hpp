@@ -32,7 +32,7 @@ public:
     std::string description() const override;
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
     FloatImage render_hits(const Scene& scene) override;
-    void prepare(const Scene& scene) override;
+    void prepare(const Scene& scene, const ProgressFn& progress) override;
 
     // Progressive rendering (the viewer): traces samples [first, first + count) of every pixel's
     // N x N grid, continuing `sums`, which holds what the passes before left (ignored, and
@@ -68,7 +68,9 @@ private:
     // Makes spirv_ the tracer built from base_tree_ with `surface_code` as surface_functions.glsl
     // ("" = the file as it is in the tree), compiling only when that changed.
     void ensure_program(const std::string& surface_code);
-    void select_pipeline(const gpu::PipelineVariant& variant);
+    // Makes pipeline_ the one for `variant`, building it first if needed (on a thread of its
+    // own: `progress` can cancel the wait, RenderCancelled, and the build goes on for later).
+    void select_pipeline(const gpu::PipelineVariant& variant, const ProgressFn& progress);
     void ensure_output(std::size_t bytes);
     void update_descriptors();
     struct SampleRange {
@@ -82,8 +84,9 @@ private:
     void dispatch_band(const gpu::BandParams& band, std::uint32_t per_pass, std::uint32_t width, double done,
                        const ProgressFn& progress);
 
-    std::unique_ptr<gpu::Context> context_;
-    std::unique_ptr<gpu::TraceLayout> layout_;
+    // Shared with pipeline builds still running (gpu::PipelineBuild).
+    std::shared_ptr<gpu::Context> context_;
+    std::shared_ptr<gpu::TraceLayout> layout_;
     // Where the tracer's sources come from, the generated surface code compiled in, its SPIR-V,
     // and the pipelines built from that so far, one per variant used.
     gpu::ShaderTree base_tree_;
@@ -91,7 +94,7 @@ private:
     std::string display_root_;
     std::string surface_code_;
     std::vector<std::uint32_t> spirv_;
-    std::map<gpu::PipelineVariant, std::unique_ptr<gpu::ComputePipeline>> pipelines_;
+    std::map<gpu::PipelineVariant, std::unique_ptr<gpu::PipelineBuild>> pipelines_;
     gpu::ComputePipeline* pipeline_ = nullptr;  // the one for the current render
     gpu::Buffer frame_, primitives_, nodes_, patches_, surfaces_, cells_, materials_, lights_, output_;
     gpu::Buffer textures_, texels_, patterns_, permutation_;
