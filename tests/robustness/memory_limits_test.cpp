@@ -15,18 +15,18 @@
 namespace lancer {
 namespace {
 
-struct Run {
+struct LimitedRun {
     int exit_code;
     std::string err;
 };
 
 // `lancer ARGS` under an address-space limit of `mib` MiB, killed after 120 s.
-Run run_limited(int mib, const std::string& args) {
+LimitedRun run_limited(int mib, const std::string& args) {
     std::string err = test::output_dir() + "/limited-" + std::to_string(::getpid()) + ".err";
     std::string command = "timeout -s KILL 120 prlimit --as=" + std::to_string(std::uint64_t(mib) << 20) + " " +
                           LANCER_EXE + " " + args + " >/dev/null 2>" + err + " </dev/null";
     int status = std::system(command.c_str());
-    Run r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), test::read_file(err)};
+    LimitedRun r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), test::read_file(err)};
     std::remove(err.c_str());
     return r;
 }
@@ -43,7 +43,7 @@ bool sanitized() {
 // such a limit, and exit() waited for it: even --version never ended.
 TEST(MemoryLimits, VersionEndsUnderASmallLimit) {
     if (sanitized()) GTEST_SKIP() << "address-space limits do not apply under ASan";
-    Run r = run_limited(200, "--version");
+    LimitedRun r = run_limited(200, "--version");
     EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 
@@ -53,7 +53,7 @@ TEST_P(MemoryLimit, EndsWithAPictureOrOneClearMessage) {
     if (sanitized()) GTEST_SKIP() << "address-space limits do not apply under ASan";
     const int mib = GetParam();
     std::string out = test::fresh_dir("memory-limit-" + std::to_string(mib)) + "/out.png";
-    Run r = run_limited(mib, "render " + test::source_path("scenes/seed.toml") +
+    LimitedRun r = run_limited(mib, "render " + test::source_path("scenes/seed.toml") +
                                  " --width 32 --height 18 --samples 1 -o " + out);
     if (r.exit_code == 0) {
         EXPECT_EQ(read_png(out).width, 32);
@@ -73,7 +73,7 @@ INSTANTIATE_TEST_SUITE_P(MiB, MemoryLimit, testing::Values(64, 200, 300, 450, 60
 TEST(MemoryLimits, CpuBackendRendersUnderASmallLimit) {
     if (sanitized()) GTEST_SKIP() << "address-space limits do not apply under ASan";
     std::string out = test::fresh_dir("memory-limit-cpu") + "/out.png";
-    Run r = run_limited(200, "render " + test::source_path("scenes/seed.toml") +
+    LimitedRun r = run_limited(200, "render " + test::source_path("scenes/seed.toml") +
                                  " --backend cpu --width 32 --height 18 --samples 1 -o " + out);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(read_png(out).width, 32);

@@ -142,6 +142,36 @@ TEST_P(Signals, WhileEncodingAVideo) {
     EXPECT_NE(::kill(ffmpeg, 0), 0) << "the stand-in ffmpeg still runs";
 }
 
+// The driver's compile of a tracer with the largest expression surfaces accepted (two of 256
+// operations: several seconds of LLVM, more on a loaded machine), with Mesa's shader cache off
+// so that it is really compiled. The live line shows 0 % while lancer waits for the compile on
+// its worker thread; the signal must end lancer at once, not when LLVM is done.
+TEST_P(Signals, WhileTheDriverCompilesThePipeline) {
+    const int sig = GetParam();
+    std::string dir = test::fresh_dir("signals-compile-" + name_of(sig));
+    std::string product;
+    for (int i = 0; i < 256; ++i) product += (i ? "*" : "") + std::string(i % 2 ? "v" : "u");  // 255 operations
+    std::string surfaces;
+    for (int k = 0; k < 2; ++k)
+        surfaces += "[[object]]\ntype = \"parametric\"\nx = \"u + " + std::to_string(2 * k) + "\"\ny = \"v\"\nz = \"" +
+                    product + "\"\nu = [0, 1]\nv = [0, 1]\n";  // and x's addition: 256
+    test::write_file(dir + "/scene.toml", "[render]\nwidth = 32\nheight = 18\nsamples = 1\n[camera]\neye = [1.5, 0.5, -4]\n"
+                                          "look_at = [1.5, 0.5, 0]\n[[light]]\nposition = [0, 3, -5]\n" + surfaces);
+    ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+    test::PtyProcess lancer({"render", dir + "/scene.toml", "-o", dir + "/out.png"});
+    ::unsetenv("MESA_SHADER_CACHE_DISABLE");
+    ASSERT_TRUE(lancer.read_until([](const std::string& s) { return s.find(" 0%") != std::string::npos; }))
+        << lancer.output();
+    lancer.send(sig);
+    auto sent = std::chrono::steady_clock::now();
+    EXPECT_EQ(lancer.wait_exit(60s), 128 + sig) << lancer.output();
+    // Bounded generously for a loaded machine; waiting for the compile took minutes.
+    EXPECT_LT(std::chrono::steady_clock::now() - sent, 10s);
+    EXPECT_EQ(last_message(lancer.output()),
+              "lancer: interrupted by " + signal_text(sig) + ": '" + dir + "/out.png' was not written");
+    EXPECT_EQ(listing(dir), "scene.toml ");
+}
+
 INSTANTIATE_TEST_SUITE_P(Each, Signals, testing::Values(SIGINT, SIGTERM), [](const auto& info) { return name_of(info.param); });
 
 }  // namespace
