@@ -25,8 +25,7 @@ const char* kStage = R"(
     [[light]]
     position = [-3, 4, -5]
     [material.m]
-    color = [0.8, 0.5, 0.2]
-    checker = { color = [0.2, 0.3, 0.8], size = 0.25 }
+    checker = { colors = [[0.8, 0.5, 0.2], [0.2, 0.3, 0.8]], size = 0.25 }
     [[object]]
     material = "m"
 )";
