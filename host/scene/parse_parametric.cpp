@@ -111,8 +111,10 @@ Shape read_parametric(TableReader& t) {
     std::tie(s.v0, s.v1) = read_range(t, "v", constants);
     for (int i = 0; i < 3; ++i) {
         try {
-            surface::check_float_constants(*exprs[i]);
             surface::check_expression_domain(*exprs[i], {s.u0, s.u1}, {s.v0, s.v1});
+            // Infinite in double already (1e308*1e308): that error, at the operation, comes first.
+            if (auto origin = surface::where_non_finite_starts(*exprs[i], {s.u0, s.u1}, {s.v0, s.v1})) throw *origin;
+            surface::check_float_constants(*exprs[i]);
         } catch (const surface::ExprError& e) {
             throw SceneError(column_in_string(*t.node(axes[i]), t.file(), e.column), e.what());
         }
