@@ -26,7 +26,7 @@ constexpr int kMaxParametricSurfaces = 32;
 // (docs/robustness.md, "Expression cost").
 constexpr int kMaxSurfaceOperations = 256;
 constexpr int kMaxSceneSurfaceOperations = 512;
-constexpr double kMaxWeightRatio = 1e12;  // largest / smallest weight of a rational patch (float on the GPU)
+constexpr double kMaxWeightRatio = 1e18;  // largest / smallest weight of a rational patch (float on the GPU)
 constexpr long long kMaxSceneFileBytes = 128LL << 20;
 
 // Textures: the GPU keeps every texel of every texture in one storage buffer, and Vulkan
