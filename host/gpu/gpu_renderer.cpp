@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "core/cancel.hpp"
+#include "gpu/driver_memory.hpp"
 #include "gpu/embedded_shaders.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/scene_packing.hpp"
@@ -21,9 +23,20 @@ constexpr std::size_t kBandPixels = 128 * 1024;
 
 }  // namespace
 
+namespace {
+
+// Runs before the context is made: under a memory limit too small for the driver, a clear error
+// rather than a crash inside it.
+std::shared_ptr<gpu::Context> make_context(const gpu::ContextOptions& options) {
+    gpu::check_driver_startup_memory();
+    return std::make_shared<gpu::Context>(options);
+}
+
+}  // namespace
+
 GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration acceleration)
-    : context_(std::make_unique<gpu::Context>(options)),
-      layout_(std::make_unique<gpu::TraceLayout>(*context_)),
+    : context_(make_context(options)),
+      layout_(std::make_shared<gpu::TraceLayout>(*context_)),
       base_tree_(gpu::embedded_tree()),
       spirv_(gpu::embedded_trace_spirv()),
       resources_(*context_, layout_->set_layout()),
@@ -52,7 +65,8 @@ void GpuRenderer::use_shaders(const gpu::ShaderTree& tree, const std::string& di
     std::vector<std::uint32_t> spirv =
         gpu::compile_compute(gpu::with_files(tree, generated_), gpu::kTraceShader, {}, display_root);
     // Prove the new code builds before dropping the old pipelines (the plain variant is cheap).
-    auto probe = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv, gpu::ShaderFeatures{});
+    auto probe = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv, gpu::ShaderFeatures{});
+    if (!probe->wait([] { return !cancellation_requested(); })) throw Cancelled();
     VK_CHECK(vkDeviceWaitIdle(context_->device()));  // old pipelines may still be in use
     pipelines_.clear();
     pipelines_[gpu::ShaderFeatures{}] = std::move(probe);
@@ -85,10 +99,11 @@ void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated) {
     generated_ = generated;
 }
 
-void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features) {
+void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress) {
     auto& slot = pipelines_[features];
-    if (!slot) slot = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv_, features);
-    pipeline_ = slot.get();
+    if (!slot) slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv_, features);
+    pipeline_ = slot->wait([&] { return !progress || progress(0.0); });
+    if (!pipeline_) throw RenderCancelled();
 }
 
 std::string GpuRenderer::description() const {
@@ -99,7 +114,11 @@ std::string GpuRenderer::description() const {
 gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated) {
     const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
     gpu::PackedScene packed = gpu::pack_scene(scene, {acceleration_, &bvh_cache_, &limits});
-    gpu::check_memory_budget(gpu::buffer_needs(packed, output_bytes), limits);
+    const std::vector<gpu::BufferNeed> needs = gpu::buffer_needs(packed, output_bytes);
+    gpu::check_memory_budget(needs, limits);
+    std::uint64_t buffer_bytes = 0;
+    for (const gpu::BufferNeed& need : needs) buffer_bytes += need.bytes;
+    gpu::check_render_memory(scene, buffer_bytes);
     resources_.upload(packed, gpu::pack_frame(scene, packed));
     if (std::string code = gpu::surface_functions_glsl(scene); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;
@@ -165,12 +184,12 @@ FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     return image;
 }
 
-void GpuRenderer::prepare(const Scene& scene) {
+void GpuRenderer::prepare(const Scene& scene, const ProgressFn& progress) {
     // A 1x1 render of the scene: the same pipeline variant (it depends on the scene's contents,
     // not its size), compiled by the driver at this first dispatch, and the scene's buffers.
     Scene tiny = scene;
     tiny.render.width = tiny.render.height = tiny.render.samples = 1;
-    render(tiny, {});
+    render(tiny, progress ? [&](double) { return progress(0.0); } : ProgressFn{});
 }
 
 FloatImage GpuRenderer::render_hits(const Scene& scene) {
@@ -205,7 +224,7 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
     gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, generated);
     features.output_hits = output_hits;
     ensure_program(generated);
-    select_pipeline(features);
+    select_pipeline(features, progress);
     const gpu::Buffer& output = resources_.output(rows * row_bytes);
 
     if (!continues) image = FloatImage(rs.width, rs.height);

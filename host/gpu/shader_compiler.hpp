@@ -30,9 +30,9 @@ struct ShaderDefine {
     std::string value;
 };
 
-class ShaderCompileError : public UserError {
+class ShaderCompileError : public MultiLineUserError {
 public:
-    using UserError::UserError;
+    using MultiLineUserError::MultiLineUserError;
 };
 
 // Compiles `entry` (e.g. "trace.comp") as a Vulkan 1.2 compute shader. Throws ShaderCompileError
