@@ -37,7 +37,7 @@ run() {  # prints "wall user" of one render
   local cmd; cmd=$(command_for "$1")
   /usr/bin/time -f "%U" -o "$out/time" $cmd "$scene" --width "${size%x*}" --height "${size#*x}" \
     -o "$out/image.png" 2>"$out/log" >/dev/null
-  local wall; wall=$(tail -n 1 "$out/log" | sed -E 's/.*: ([0-9.]+) s, .*/\1/')
+  local wall; wall=$(grep "Mrays/s" "$out/log" | tail -n 1 | sed -E 's/.*: ([0-9.]+) s, .*/\1/')
   echo "$wall $(tail -n 1 "$out/time")"
 }
 

@@ -42,7 +42,7 @@ run_lancer() {  # scene width height backend
   local log; log=$(mktemp)
   /usr/bin/time -f "%e %M" -o "$log.time" build/lancer render "$1" --width "$2" --height "$3" --backend "$4" \
     -o "$out/$(basename "$1" .toml)-lancer-$4.png" 2>"$log"
-  local line; line=$(tail -n 1 "$log")
+  local line; line=$(grep "Mrays/s" "$log" | tail -n 1)
   local render rays; render=$(sed -E 's/.*: ([0-9.]+) s, .*/\1/' <<<"$line")
   rays=$(sed -E 's/.*\(([0-9.]+) M rays\).*/\1/' <<<"$line")
   read -r wall kib <"$log.time"

@@ -9,11 +9,11 @@
 
 #include <fmt/format.h>
 
-#include "cli/frame_pattern.hpp"
-#include "cli/interrupt.hpp"
+#include "app/frame_pattern.hpp"
+#include "app/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "cli/still_render.hpp"
-#include "cli/video.hpp"
+#include "app/video.hpp"
 #include "gpu/context.hpp"
 #include "image/image.hpp"
 #include "scene/animation.hpp"

@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli/render_options.hpp"
+#include "app/render_options.hpp"
 
 namespace lancer {
 

@@ -10,8 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/interrupt.hpp"
 #include "cli/commands.hpp"
-#include "cli/interrupt.hpp"
 #include "core/cancel.hpp"
 #include "core/error.hpp"
 #include "core/escape.hpp"
@@ -20,6 +20,7 @@
 #include "gpu/context.hpp"
 #include "gpu/pipeline.hpp"
 #include "gpu/vk_check.hpp"
+#include "view/view_command.hpp"
 
 namespace {
 

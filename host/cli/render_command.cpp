@@ -4,8 +4,8 @@
 
 #include "cli/animation_runner.hpp"
 #include "cli/commands.hpp"
-#include "cli/frame_pattern.hpp"
-#include "cli/render_options.hpp"
+#include "app/frame_pattern.hpp"
+#include "app/render_options.hpp"
 #include "cli/still_render.hpp"
 #include "gpu/context.hpp"
 

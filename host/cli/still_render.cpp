@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/interrupt.hpp"
+#include "app/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "gpu/context.hpp"
 

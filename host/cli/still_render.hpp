@@ -2,7 +2,7 @@
 // One static scene -> one PNG, with the progress line and the summary line.
 #include <string>
 
-#include "cli/render_options.hpp"
+#include "app/render_options.hpp"
 
 namespace lancer {
 

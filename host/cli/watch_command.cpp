@@ -10,9 +10,9 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "cli/file_watcher.hpp"
-#include "cli/hot_reload.hpp"
-#include "cli/render_options.hpp"
+#include "app/file_watcher.hpp"
+#include "app/hot_reload.hpp"
+#include "app/render_options.hpp"
 #include "core/cancel.hpp"
 #include "gpu/context.hpp"
 #include "gpu/shader_compiler.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// A request to stop, from a signal (SIGINT, SIGTERM: cli/interrupt.cpp sets it), visible to every
+// A request to stop, from a signal (SIGINT, SIGTERM: app/interrupt.cpp sets it), visible to every
 // module: long work that is not a render (loading a scene, subdividing a surface, a blocking
 // open of a FIFO) checks it and stops by throwing Cancelled. Renders stop through their
 // progress callback instead (RenderCancelled).

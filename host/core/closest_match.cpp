@@ -33,4 +33,11 @@ std::string closest_match(std::string_view word, const std::set<std::string, std
     return best;
 }
 
+std::string did_you_mean(std::string_view word, const std::set<std::string, std::less<>>& candidates,
+                         std::string_view otherwise) {
+    std::string suggestion = closest_match(word, candidates);
+    if (suggestion.empty()) return std::string(otherwise);
+    return " (did you mean '" + suggestion + "'?)";
+}
+
 }  // namespace lancer

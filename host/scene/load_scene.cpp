@@ -86,12 +86,7 @@ Object read_object(TableReader& t, const std::map<std::string, std::uint32_t, st
     const auto& readers = shape_readers();
     auto reader = readers.find(type);
     if (reader == readers.end()) {
-        std::set<std::string, std::less<>> names;
-        for (const auto& [name, fn] : readers) names.insert(name);
-        std::string message = "unknown object type '" + type + "'";
-        std::string suggestion = closest_match(type, names);
-        if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
-        t.fail("type", message);
+        t.fail("type", "unknown object type '" + type + "'" + did_you_mean(type, names_of(readers)));
     }
     Object o;
     o.where = t.location();
@@ -102,12 +97,7 @@ Object read_object(TableReader& t, const std::map<std::string, std::uint32_t, st
         std::string name = t.string("material", "");
         auto found = materials.find(name);
         if (found == materials.end()) {
-            std::set<std::string, std::less<>> names;
-            for (const auto& [n, i] : materials) names.insert(n);
-            std::string message = "unknown material '" + name + "'";
-            std::string suggestion = closest_match(name, names);
-            if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
-            t.fail("material", message);
+            t.fail("material", "unknown material '" + name + "'" + did_you_mean(name, names_of(materials)));
         }
         o.material = found->second;
     } else {

@@ -68,13 +68,8 @@ std::size_t resolve_reference(TableReader& t, const toml::table& table, std::str
     std::string name = node->as_string()->get();
     auto found = names.find(name);
     if (found == names.end()) {
-        std::set<std::string, std::less<>> candidates;
-        for (const auto& [n, i] : names) candidates.insert(n);
-        std::string message = fmt::format("no {} is named '{}'", what, name);
-        std::string suggestion = closest_match(name, candidates);
-        if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
-        else if (candidates.empty()) message += fmt::format(" (give the {} a name = \"{}\")", what, name);
-        throw SceneError(at, message);
+        std::string hint = names.empty() ? fmt::format(" (give the {} a name = \"{}\")", what, name) : "";
+        throw SceneError(at, fmt::format("no {} is named '{}'", what, name) + did_you_mean(name, names_of(names), hint));
     }
     return found->second;
 }
@@ -83,10 +78,8 @@ Interpolation read_interpolation(TableReader& t) {
     std::string name = t.string("interpolation", "linear");
     if (name == "linear") return Interpolation::Linear;
     if (name == "smooth") return Interpolation::Smooth;
-    std::string message = "unknown interpolation '" + name + "' (use \"linear\" or \"smooth\")";
-    std::string suggestion = closest_match(name, {"linear", "smooth"});
-    if (!suggestion.empty()) message = "unknown interpolation '" + name + "' (did you mean '" + suggestion + "'?)";
-    t.fail("interpolation", message);
+    t.fail("interpolation", "unknown interpolation '" + name + "'" +
+                                did_you_mean(name, {"linear", "smooth"}, " (use \"linear\" or \"smooth\")"));
 }
 
 // An orbit's keys. The defaults make the orbit pass through `start` (the camera's eye, the
@@ -146,10 +139,8 @@ std::map<std::string, Track, std::less<>> read_keys(TableReader& t, const std::v
 
         for (auto&& [name, value] : *key) {
             if (name.str() == "time" || allowed.count(name.str())) continue;
-            std::string message = fmt::format("{}: unknown animated property '{}'", kr.what(), name.str());
-            std::string suggestion = closest_match(name.str(), allowed);
-            if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
-            else message += fmt::format(" ({} animate {})", owner, allowed_list);
+            std::string message = fmt::format("{}: unknown animated property '{}'", kr.what(), name.str()) +
+                                  did_you_mean(name.str(), allowed, fmt::format(" ({} animate {})", owner, allowed_list));
             throw SceneError(location_of(name.source(), t.file()), message);
         }
         std::set<std::string, std::less<>> properties;

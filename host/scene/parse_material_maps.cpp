@@ -18,18 +18,13 @@ template <typename T>
 T choose(const toml::node& node, const std::string& file, const std::string& what,
          const std::map<std::string, T, std::less<>>& choices) {
     auto text = node.value<std::string>();
-    std::set<std::string, std::less<>> names;
     std::string list;
-    for (const auto& [name, value] : choices) {
-        names.insert(name);
-        list += (list.empty() ? "\"" : ", \"") + name + "\"";
-    }
+    for (const auto& [name, value] : choices) list += (list.empty() ? "\"" : ", \"") + name + "\"";
     if (!text) throw SceneError(location_of(node, file), fmt::format("{} must be a string: one of {}", what, list));
     auto found = choices.find(*text);
     if (found != choices.end()) return found->second;
-    std::string message = fmt::format("unknown {} '{}'", what, *text);
-    std::string suggestion = closest_match(*text, names);
-    message += suggestion.empty() ? fmt::format(" (expected one of {})", list) : " (did you mean '" + suggestion + "'?)";
+    std::string message = fmt::format("unknown {} '{}'", what, *text) +
+                          did_you_mean(*text, names_of(choices), fmt::format(" (expected one of {})", list));
     throw SceneError(location_of(node, file), message);
 }
 

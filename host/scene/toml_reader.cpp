@@ -154,9 +154,7 @@ void TableReader::accept(std::string_view key) { known_.emplace(key); }
 void TableReader::finish() const {
     for (auto&& [key, value] : table_) {
         if (known_.count(key.str())) continue;
-        std::string message = what_ + ": unknown key '" + std::string(key.str()) + "'";
-        std::string suggestion = closest_match(key.str(), known_);
-        if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
+        std::string message = what_ + ": unknown key '" + std::string(key.str()) + "'" + did_you_mean(key.str(), known_);
         throw SceneError(location_of(key.source(), file_), message);
     }
 }
@@ -192,12 +190,10 @@ std::size_t one_of(TableReader& t, std::string_view key, std::string_view what, 
     std::string value = t.string(key, fallback);
     for (std::size_t i = 0; i < names.size(); ++i)
         if (names[i] == value) return i;
-    std::string suggestion = closest_match(value, std::set<std::string, std::less<>>(names.begin(), names.end()));
-    if (!suggestion.empty()) t.fail(key, fmt::format("unknown {} '{}' (did you mean '{}'?)", what, value, suggestion));
     std::string listed;  // "a", "b" or "c"
     for (std::size_t i = 0; i < names.size(); ++i)
         listed += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + ("\"" + names[i] + "\"");
-    t.fail(key, fmt::format("unknown {} '{}' (use {})", what, value, listed));
+    t.fail(key, fmt::format("unknown {} '{}'", what, value) + did_you_mean(value, names_of(names), " (use " + listed + ")"));
 }
 
 }  // namespace lancer

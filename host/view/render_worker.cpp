@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "cli/frame_pattern.hpp"
-#include "cli/video.hpp"
+#include "app/frame_pattern.hpp"
+#include "app/video.hpp"
 #include "core/cancel.hpp"
 #include "gpu/shader_compiler.hpp"
 #include "scene/animation.hpp"

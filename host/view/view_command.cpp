@@ -1,7 +1,7 @@
 // `lancer view`: the command line of the interactive viewer (view/viewer.hpp does the work).
 #include <memory>
 
-#include "cli/commands.hpp"
+#include "view/view_command.hpp"
 #include "scene/animation.hpp"
 #include "view/viewer.hpp"
 

@@ -10,10 +10,10 @@
 #include <SDL.h>
 #include <fmt/format.h>
 
-#include "cli/file_watcher.hpp"
-#include "cli/frame_pattern.hpp"
-#include "cli/hot_reload.hpp"
-#include "cli/video.hpp"
+#include "app/file_watcher.hpp"
+#include "app/frame_pattern.hpp"
+#include "app/hot_reload.hpp"
+#include "app/video.hpp"
 #include "gpu/context.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "view/camera_controller.hpp"

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "cli/render_options.hpp"
+#include "app/render_options.hpp"
 
 namespace lancer::view {
 

@@ -1,4 +1,4 @@
-// The GPU computes in float, the reference in double. Where float cannot follow (issue 18: a
+// The GPU computes in float, the reference in double. Where float cannot follow (a
 // constant beyond float's range, weights below it), the GPU must either draw what the reference
 // draws or the scene must be refused at load; never a different picture without a word.
 #include <string>

@@ -28,16 +28,6 @@ const std::string kAnimation = test::source_path("tests/data/anim/small.toml"); 
 
 std::string fresh_dir(const std::string& name) { return test::fresh_dir("faults-" + name); }
 
-// The names in `dir`, sorted: a temporary file left behind shows up here.
-std::string listing(const std::string& dir) {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    std::string out;
-    for (const auto& n : names) out += n + " ";
-    return out;
-}
-
 std::string trim(std::string s) {
     while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
     return s;
@@ -143,7 +133,7 @@ TEST(Faults, FileSizeLimit) {
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 2);
     EXPECT_EQ(test::read_file(dir + ".err"), "lancer: error: cannot write '" + dir + "/out.png': File too large\n");
-    EXPECT_EQ(listing(dir), "");
+    EXPECT_EQ(test::listing(dir), "");
 }
 
 // A frame path that is a directory, met after frame 0 was written: frame 0 stays.
@@ -154,7 +144,7 @@ TEST(Faults, AFramePathThatIsADirectoryStopsTheAnimation) {
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_EQ(last_line(r.err), "lancer: error: cannot write '" + dir + "/f_1.png': it is a directory");
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
-    EXPECT_EQ(listing(dir), "f_0.png f_1.png ");
+    EXPECT_EQ(test::listing(dir), "f_0.png f_1.png ");
     EXPECT_EQ(read_png(dir + "/f_0.png").width, 48);
 }
 
@@ -195,7 +185,7 @@ TEST_P(Interrupt, InTheMiddleOfAStillWritesNothing) {
                            ": '" + out + "' was not written";
     EXPECT_EQ(last_line(lancer.output()), expected) << lancer.output();
     EXPECT_EQ(lancer.output().find("validation"), std::string::npos) << lancer.output();
-    EXPECT_EQ(listing(dir), "") << "no partial PNG, no temporary file";
+    EXPECT_EQ(test::listing(dir), "") << "no partial PNG, no temporary file";
 }
 
 // An animation interrupted while its second frame is half done: the first frame is complete and
@@ -222,7 +212,7 @@ TEST_P(Interrupt, InTheMiddleOfAFrameKeepsTheFramesBefore) {
                   dir + "/f_1.png') was not written; frame(s) 0 are complete; run the same command again to resume")
         << lancer.output();
     EXPECT_EQ(lancer.output().find("validation"), std::string::npos) << lancer.output();
-    EXPECT_EQ(listing(dir), "f_0.png ") << "no partial frame, no temporary file";
+    EXPECT_EQ(test::listing(dir), "f_0.png ") << "no partial frame, no temporary file";
     struct stat after {};
     ASSERT_EQ(::stat((dir + "/f_0.png").c_str(), &after), 0);
     EXPECT_EQ(before.st_ino, after.st_ino);

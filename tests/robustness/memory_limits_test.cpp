@@ -1,6 +1,6 @@
 // lancer under an address-space limit (`ulimit -v`, `prlimit --as`, as batch schedulers set):
 // at every limit a run ends with a picture or with one clear message (exit code 2), never with
-// a crash inside the driver or a hang (issue 18). Each run is bounded by `timeout`, so a hang
+// a crash inside the driver or a hang. Each run is bounded by `timeout`, so a hang
 // fails the test instead of stalling it.
 #include <sys/wait.h>
 

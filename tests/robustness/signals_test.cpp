@@ -1,4 +1,4 @@
-// SIGINT and SIGTERM in every phase of a run (issue 18): loading (a FIFO as the scene or as a
+// SIGINT and SIGTERM in every phase of a run: loading (a FIFO as the scene or as a
 // texture, which blocks the open until a writer comes), the pipeline compile, encoding a video.
 // Each run must end promptly with the interrupted line and 128 + the signal, and leave nothing
 // behind: no temporary file, no ffmpeg. (The dispatch phase: Interrupt.* in faults_test.cpp.)
@@ -23,15 +23,6 @@ using namespace std::chrono_literals;
 const std::string kAnimation = test::source_path("tests/data/anim/small.toml");  // 6 frames, 48x27
 
 std::string signal_text(int signal_number) { return signal_number == SIGINT ? "SIGINT" : "SIGTERM"; }
-
-std::string listing(const std::string& dir) {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    std::string out;
-    for (const auto& n : names) out += n + " ";
-    return out;
-}
 
 // The last line that starts with "lancer:" (a terminal's output also holds live lines).
 std::string last_message(const std::string& text) {
@@ -71,7 +62,7 @@ TEST_P(Signals, WhileOpeningAFifoAsTheScene) {
     lancer.send(sig);
     EXPECT_EQ(lancer.wait_exit(10s), 128 + sig) << lancer.output();
     EXPECT_EQ(last_message(lancer.output()), "lancer: interrupted by " + signal_text(sig) + ": nothing was written");
-    EXPECT_EQ(listing(dir), "scene.toml ");
+    EXPECT_EQ(test::listing(dir), "scene.toml ");
 }
 
 TEST_P(Signals, WhileOpeningAFifoAsATexture) {
@@ -95,7 +86,7 @@ TEST_P(Signals, WhileOpeningAFifoAsATexture) {
     lancer.send(sig);
     EXPECT_EQ(lancer.wait_exit(10s), 128 + sig) << lancer.output();
     EXPECT_EQ(last_message(lancer.output()), "lancer: interrupted by " + signal_text(sig) + ": nothing was written");
-    EXPECT_EQ(listing(dir), "scene.toml wood.png ");
+    EXPECT_EQ(test::listing(dir), "scene.toml wood.png ");
 }
 
 // `lancer watch` on a FIFO: the signal that ends watch (exit code 0) must not be swallowed.
@@ -136,8 +127,8 @@ TEST_P(Signals, WhileEncodingAVideo) {
     EXPECT_EQ(lancer.wait_exit(10s), 128 + sig) << lancer.output();
     EXPECT_EQ(last_message(lancer.output()), "lancer: interrupted by " + signal_text(sig) + ": '" + dir +
                                                  "/out.webm' was not written; the frames are complete");
-    EXPECT_EQ(listing(dir), "bin ffmpeg.pid frames ") << "no video, no hidden temporary";
-    EXPECT_EQ(listing(frames), "f_0.png f_1.png f_2.png f_3.png f_4.png f_5.png ");
+    EXPECT_EQ(test::listing(dir), "bin ffmpeg.pid frames ") << "no video, no hidden temporary";
+    EXPECT_EQ(test::listing(frames), "f_0.png f_1.png f_2.png f_3.png f_4.png f_5.png ");
     pid_t ffmpeg = std::stoi(test::read_file(dir + "/ffmpeg.pid"));
     EXPECT_NE(::kill(ffmpeg, 0), 0) << "the stand-in ffmpeg still runs";
 }
@@ -169,7 +160,7 @@ TEST_P(Signals, WhileTheDriverCompilesThePipeline) {
     EXPECT_LT(std::chrono::steady_clock::now() - sent, 10s);
     EXPECT_EQ(last_message(lancer.output()),
               "lancer: interrupted by " + signal_text(sig) + ": '" + dir + "/out.png' was not written");
-    EXPECT_EQ(listing(dir), "scene.toml ");
+    EXPECT_EQ(test::listing(dir), "scene.toml ");
 }
 
 INSTANTIATE_TEST_SUITE_P(Each, Signals, testing::Values(SIGINT, SIGTERM), [](const auto& info) { return name_of(info.param); });

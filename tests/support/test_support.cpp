@@ -28,6 +28,15 @@ std::string fresh_dir(const std::string& name) {
     return dir;
 }
 
+std::string listing(const std::string& dir) {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    std::string out;
+    for (const auto& n : names) out += n + " ";
+    return out;
+}
+
 namespace {
 std::unique_ptr<GpuRenderer> g_renderer;
 }

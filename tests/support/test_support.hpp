@@ -13,6 +13,8 @@ namespace lancer::test {
 std::string source_path(const std::string& relative);  // under the repository root
 std::string output_dir();                               // build/test-output, created on demand
 std::string fresh_dir(const std::string& name);         // output_dir()/name, emptied or created
+// The names in `dir`, sorted and space-separated: a temporary file left behind shows up here.
+std::string listing(const std::string& dir);
 
 // One GPU renderer per test process (pipeline JIT and device creation are paid once), created
 // with VK_LAYER_KHRONOS_validation enabled.

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/file_watcher.hpp"
+#include "app/file_watcher.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {

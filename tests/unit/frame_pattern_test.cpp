@@ -1,7 +1,7 @@
 // Frame names, --frames ranges and the short frame lists of messages.
 #include <gtest/gtest.h>
 
-#include "cli/frame_pattern.hpp"
+#include "app/frame_pattern.hpp"
 #include "core/error.hpp"
 
 namespace lancer {

@@ -1,4 +1,4 @@
-// Bounds on what untrusted input can make lancer do before it allocates (issue 18): image files
+// Bounds on what untrusted input can make lancer do before it allocates: image files
 // whose data is far more than their header says (decompression bombs), shader trees whose
 // includes never end, output names at the file system's limit, names with control characters.
 #include <cstdint>

@@ -202,13 +202,11 @@ private:
         if (find_function(n))
             throw ExprError(fmt::format("'{}' is a function: write {}(...)", n, n), token.column);
         // A one-letter name is within one edit of every other one; suggesting there is noise.
-        std::string suggestion = n.size() >= 2 ? closest_match(n, variable_names()) : "";
-        if (!suggestion.empty())
-            throw ExprError(fmt::format("unknown variable '{}' (did you mean '{}'?)", n, suggestion), token.column);
         std::string known = "pi, e";
         for (const auto& [constant, value] : constants_) known += ", " + constant;
-        throw ExprError(fmt::format("unknown variable '{}' (the variables are u and v; constants: {})", n, known),
-                        token.column);
+        std::string listed = " (the variables are u and v; constants: " + known + ")";
+        std::string ending = n.size() >= 2 ? did_you_mean(n, variable_names(), listed) : listed;
+        throw ExprError(fmt::format("unknown variable '{}'", n) + ending, token.column);
     }
 
     int call(const Token& token) {
@@ -220,10 +218,7 @@ private:
                 throw ExprError(fmt::format("'{}' is a constant, not a function", n), token.column);
             std::set<std::string, std::less<>> names;
             for (const auto& f : function_table()) names.emplace(f.name);
-            std::string suggestion = closest_match(n, names);
-            if (!suggestion.empty())
-                throw ExprError(fmt::format("unknown function '{}' (did you mean '{}'?)", n, suggestion), token.column);
-            throw ExprError(fmt::format("unknown function '{}'", n), token.column);
+            throw ExprError(fmt::format("unknown function '{}'", n) + did_you_mean(n, names), token.column);
         }
         take();  // '('
         std::vector<int> arguments;

@@ -1,4 +1,4 @@
-#include "cli/interrupt.hpp"
+#include "app/interrupt.hpp"
 
 #include <csignal>
 

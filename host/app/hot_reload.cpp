@@ -1,4 +1,4 @@
-#include "cli/hot_reload.hpp"
+#include "app/hot_reload.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "cli/frame_pattern.hpp"
+#include "app/frame_pattern.hpp"
 
 #include <algorithm>
 #include <cctype>

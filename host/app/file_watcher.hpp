@@ -13,7 +13,7 @@
 #include <set>
 #include <string>
 
-#include "cli/interrupt.hpp"
+#include "app/interrupt.hpp"
 
 namespace lancer {
 

@@ -1,4 +1,4 @@
-#include "cli/render_options.hpp"
+#include "app/render_options.hpp"
 
 #include <cctype>
 #include <filesystem>

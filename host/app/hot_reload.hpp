@@ -8,8 +8,8 @@
 #include <set>
 #include <string>
 
-#include "cli/file_watcher.hpp"
-#include "cli/render_options.hpp"
+#include "app/file_watcher.hpp"
+#include "app/render_options.hpp"
 #include "core/error.hpp"
 #include "scene/scene.hpp"
 

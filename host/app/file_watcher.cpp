@@ -1,4 +1,4 @@
-#include "cli/file_watcher.hpp"
+#include "app/file_watcher.hpp"
 
 #include <algorithm>
 #include <cerrno>

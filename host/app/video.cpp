@@ -1,4 +1,4 @@
-#include "cli/video.hpp"
+#include "app/video.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -19,7 +19,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/interrupt.hpp"
+#include "app/interrupt.hpp"
 #include "core/cancel.hpp"
 #include "core/error.hpp"
 #include "core/temporary_name.hpp"
