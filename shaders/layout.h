@@ -60,6 +60,7 @@ LANCER_CONST SHAPE_RECTANGLE = 2;  // p0 = (corner, 0), p1 = (edge_u, 0), p2 = (
 LANCER_CONST SHAPE_BOX = 3;        // p0 = (min, 0), p1 = (max, 0)
 LANCER_CONST SHAPE_BEZIER = 4;     // data = index of its PatchLeaf
 LANCER_CONST SHAPE_PARAMETRIC = 5; // data = index of its ParametricCell, p0 = (box min, 0), p1 = (box max, 0)
+LANCER_CONST SHAPE_IMPLICIT = 6;   // data = index of its SurfaceInfo, p0 = (box min, 0), p1 = (box max, 0) in its own coordinates
 
 // Material::pattern values.
 LANCER_CONST PATTERN_SOLID = 0;
@@ -108,13 +109,15 @@ struct PatchLeaf {
     vec4 domain;      // (u0, u1, v0, v1): where this leaf lies in its patch's parameter square
 };
 
-// Per parametric surface: the affine map from the user's (x, y, z) to world space, so moving an
-// object only rewrites this buffer, never the generated shader code.
+// Per expression surface, so moving an object only rewrites this buffer, never the generated
+// shader code. A parametric surface: the affine map from the user's (x, y, z) to world space,
+// world = (dot(row0.xyz, p) + row0.w, dot(row1.xyz, p) + row1.w, dot(row2.xyz, p) + row2.w).
+// An implicit surface: the inverse map, from world space to the coordinates f is written in.
 struct SurfaceInfo {
-    vec4 row0;  // world = (dot(row0.xyz, p) + row0.w, dot(row1.xyz, p) + row1.w, dot(row2.xyz, p) + row2.w)
+    vec4 row0;
     vec4 row1;
     vec4 row2;
-    vec4 domain;  // (u0, u1, v0, v1) of the whole surface
+    vec4 domain;  // parametric: (u0, u1, v0, v1) of the whole surface; implicit: unused
 };
 
 // One cell of a parametric surface's domain: where Newton's method looks for roots. The corner

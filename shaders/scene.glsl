@@ -21,7 +21,9 @@ layout(constant_id = SPEC_HAS_BVH) const bool SCENE_HAS_BVH = true;
 #include "shapes/rectangle.glsl"
 #include "shapes/box.glsl"
 #include "shapes/bezier.glsl"
+#include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/surface_codegen.cpp)
 #include "shapes/parametric.glsl"
+#include "shapes/implicit.glsl"
 
 // uv: the surface's own parameters at the hit, for shapes that have them.
 bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv) {
@@ -35,6 +37,9 @@ bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out floa
         case SHAPE_BEZIER: return SCENE_HAS_BEZIER && bezier_intersect(p, ray, t_min, t_max, t_hit, uv);
 #if LANCER_PARAMETRIC_SURFACES
         case SHAPE_PARAMETRIC: return parametric_intersect(p, ray, t_min, t_max, t_hit, uv);
+#endif
+#if LANCER_IMPLICIT_SURFACES
+        case SHAPE_IMPLICIT: return implicit_intersect(p, ray, t_min, t_max, t_hit, uv);
 #endif
     }
     return false;
@@ -50,6 +55,9 @@ vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
         case SHAPE_BEZIER: if (SCENE_HAS_BEZIER) return bezier_normal(prim, uv); break;
 #if LANCER_PARAMETRIC_SURFACES
         case SHAPE_PARAMETRIC: return parametric_normal(prim, uv);
+#endif
+#if LANCER_IMPLICIT_SURFACES
+        case SHAPE_IMPLICIT: return implicit_normal(prim, p);
 #endif
     }
     return vec3(0.0, 0.0, 1.0);

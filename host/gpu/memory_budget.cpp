@@ -24,6 +24,7 @@ std::vector<BufferNeed> scene_buffer_needs(const Scene& scene, std::uint64_t out
             primitives += p->cells.size();
             bounded += p->cells.size();
         } else {
+            surfaces += std::holds_alternative<ImplicitObject>(o.shape);
             ++primitives;
             bounded += !std::holds_alternative<Plane>(o.shape);
         }

@@ -19,6 +19,7 @@ constexpr int kMaxObjects = 1 << 20;
 // the GPU's shader, compiled when the scene is loaded.
 constexpr long long kMaxPatches = 1 << 16;
 constexpr int kMaxParametricSurfaces = 32;
+constexpr int kMaxImplicitSurfaces = 32;  // each also a function in the shader
 constexpr long long kMaxSceneFileBytes = 128LL << 20;
 
 // Textures: the GPU keeps every texel of every texture in one storage buffer, and Vulkan

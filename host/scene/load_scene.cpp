@@ -115,16 +115,21 @@ Object read_object(TableReader& t, const std::map<std::string, std::uint32_t, st
     return o;
 }
 
-// The scene-wide limits on surfaces (limits.hpp): parametric surfaces are counted before one is
-// read (reading subdivides it, the expensive part), patches once an object's are known.
+// The scene-wide limits on surfaces (limits.hpp): parametric and implicit surfaces are counted
+// before one is read (reading subdivides or expands it, the expensive part), patches once an
+// object's are known.
 struct SurfaceTotals {
     int parametric = 0;
+    int implicit = 0;
     long long patches = 0;
 
     void before(TableReader& t, const std::optional<std::string>& type) {
         if (type == "parametric" && ++parametric > limits::kMaxParametricSurfaces)
             t.fail("type", fmt::format("too many parametric surfaces (the limit is {} per scene)",
                                        limits::kMaxParametricSurfaces));
+        if (type == "implicit" && ++implicit > limits::kMaxImplicitSurfaces)
+            t.fail("type", fmt::format("too many implicit surfaces (the limit is {} per scene)",
+                                       limits::kMaxImplicitSurfaces));
     }
     void after(TableReader& t, const Object& o) {
         const auto* b = std::get_if<BezierSurface>(&o.shape);

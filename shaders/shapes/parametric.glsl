@@ -10,8 +10,6 @@
 layout(std430, set = 0, binding = BINDING_SURFACES) readonly buffer SurfaceBlock { SurfaceInfo surfaces[]; };
 layout(std430, set = 0, binding = BINDING_CELLS) readonly buffer CellBlock { ParametricCell cells[]; };
 
-#include "surface_functions.glsl"
-
 const int NEWTON_STEPS = 12;
 
 // S and its partials in world space.

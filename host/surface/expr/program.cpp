@@ -50,12 +50,12 @@ private:
         if (n.a >= 0) n.a = map[n.a];
         // The exponent of PowInt/PowConst is already in `value`.
         n.b = (n.op == Op::PowInt || n.op == Op::PowConst || n.b < 0) ? -1 : map[n.b];
-        if (n.op != Op::U && n.op != Op::V && n.op != Op::Constant && is_constant(n.a) && is_constant(n.b)) {
+        if (n.op != Op::Variable && n.op != Op::Constant && is_constant(n.a) && is_constant(n.b)) {
             double operands[2] = {n.a >= 0 ? nodes_[n.a].value : 0.0, n.b >= 0 ? nodes_[n.b].value : 0.0};
             Node local = n;
             local.a = n.a >= 0 ? 0 : -1;
             local.b = n.b >= 0 ? 1 : -1;
-            double folded = apply_node<double>(local, operands, 0.0, 0.0);
+            double folded = apply_node<double>(local, operands, nullptr);
             // A non-finite constant stays an operation, so that intervals still see its domain.
             if (std::isfinite(folded)) return add_constant(folded, n.column);
         }
@@ -87,10 +87,16 @@ Program compile_program(std::span<const Expr* const> expressions) {
 }
 
 template <class T>
-void evaluate_program(const Program& program, const T& u, const T& v, T* out) {
+void evaluate_program(const Program& program, std::span<const T> variables, T* out) {
     T* values = scratch_values<T>(program.nodes.size());
-    evaluate_nodes(program.nodes.data(), static_cast<int>(program.nodes.size()), u, v, values);
+    evaluate_nodes(program.nodes.data(), static_cast<int>(program.nodes.size()), variables.data(), values);
     for (std::size_t i = 0; i < program.outputs.size(); ++i) out[i] = values[program.outputs[i]];
+}
+
+template <class T>
+void evaluate_program(const Program& program, const T& u, const T& v, T* out) {
+    const T uv[] = {u, v};
+    evaluate_program<T>(program, std::span<const T>(uv), out);
 }
 
 namespace {
@@ -123,9 +129,14 @@ bool proved_smooth(const Node& n, const Dual<Interval>* values) {
 }  // namespace
 
 bool evaluate_program_on_box(const Program& program, const Interval& u, const Interval& v, Dual<Interval>* out) {
+    const Dual<Interval> uv[] = {Dual<Interval>::variable_u(u), Dual<Interval>::variable_v(v)};
+    return evaluate_program_on_box(program, std::span<const Dual<Interval>>(uv), out);
+}
+
+bool evaluate_program_on_box(const Program& program, std::span<const Dual<Interval>> variables, Dual<Interval>* out) {
     const int count = static_cast<int>(program.nodes.size());
     Dual<Interval>* values = scratch_values<Dual<Interval>>(program.nodes.size());
-    evaluate_nodes(program.nodes.data(), count, Dual<Interval>::variable_u(u), Dual<Interval>::variable_v(v), values);
+    evaluate_nodes(program.nodes.data(), count, variables.data(), values);
     for (std::size_t i = 0; i < program.outputs.size(); ++i) out[i] = values[program.outputs[i]];
     for (int i = 0; i < count; ++i) {
         const Node& n = program.nodes[i];
@@ -139,5 +150,9 @@ template void evaluate_program(const Program&, const double&, const double&, dou
 template void evaluate_program(const Program&, const Interval&, const Interval&, Interval*);
 template void evaluate_program(const Program&, const Dual<double>&, const Dual<double>&, Dual<double>*);
 template void evaluate_program(const Program&, const Dual<Interval>&, const Dual<Interval>&, Dual<Interval>*);
+template void evaluate_program(const Program&, std::span<const double>, double*);
+template void evaluate_program(const Program&, std::span<const Interval>, Interval*);
+template void evaluate_program(const Program&, std::span<const Dual<double>>, Dual<double>*);
+template void evaluate_program(const Program&, std::span<const Dual<Interval>>, Dual<Interval>*);
 
 }  // namespace lancer::surface
