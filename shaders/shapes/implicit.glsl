@@ -15,12 +15,16 @@
 //     short whose enclosure still holds 0 is where the ray touches the surface (a double root)
 //     or passes a singular point, to within float rounding. It is a hit, as on the CPU reference,
 //     if f is defined at its middle.
+// The generated functions are called from one place each here (and once more in Newton's
+// loop): lavapipe inlines every call into both call sites of trace_scene, so each extra call
+// would cost compile time and registers.
 #if LANCER_IMPLICIT_SURFACES
 
 const int IMPLICIT_STACK = 24;        // pieces waiting: halving to IMPLICIT_EPS takes at most 20 levels
 const int IMPLICIT_MAX_PIECES = 512;  // pieces examined per ray and surface; beyond, a miss
 const float IMPLICIT_EPS = 1e-6;      // of the box's diagonal, along the ray: a piece this short is a point
-const int IMPLICIT_NEWTON_STEPS = 16;
+const int IMPLICIT_NEWTON_STEPS = 24;
+const int IMPLICIT_MEAN_VALUE_AFTER = 16;  // pieces examined before the mean-value form narrows enclosures
 
 // The ray's origin and direction in the surface's coordinates.
 void implicit_local_ray(SurfaceInfo info, Ray ray, out vec3 o, out vec3 d) {
@@ -30,13 +34,15 @@ void implicit_local_ray(SurfaceInfo info, Ray ray, out vec3 o, out vec3 d) {
 }
 
 // The root of f(o + s d) in [a, b], where f is monotone and fa = f(a), fb = f(b) differ in sign:
-// Newton's method from the regula falsi point, a bisection whenever a step would leave the
-// bracket, which shrinks around the root at every step.
+// Newton's method from the regula falsi point, each step kept 1% of the bracket inside it (a
+// root at an end of the bracket, where rounding puts Newton's step just outside, then still
+// shrinks the bracket a hundredfold per step), the bracket shrinking around the root at every
+// step.
 float implicit_refine(uint surface, vec3 o, vec3 d, float a, float b, float fa, float fb) {
     if (fa == 0.0) return a;
     if (fb == 0.0) return b;
-    const float tolerance = 1e-7 * (b - a) + 1e-30;
-    float x = a + (b - a) * clamp(fa / (fa - fb), 0.0, 1.0);
+    const float tolerance = 1e-7 * (b - a);
+    float x = a + (b - a) * clamp(fa / (fa - fb), 0.01, 0.99);
     for (int k = 0; k < IMPLICIT_NEWTON_STEPS; ++k) {
         float df;
         float fx = implicit_eval(surface, o + x * d, d, df);
@@ -47,12 +53,22 @@ float implicit_refine(uint surface, vec3 o, vec3 d, float a, float b, float fa, 
         } else {
             b = x;
         }
-        float next = x - fx / df;
-        if (!(next > a && next < b)) next = 0.5 * (a + b);
-        if (abs(next - x) <= tolerance || b - a <= tolerance) return next;
-        x = next;
+        float step = fx / df;
+        if (abs(step) <= tolerance || b - a <= tolerance) return clamp(x - step, a, b);
+        float margin = 0.01 * (b - a);
+        x = isnan(step) ? 0.5 * (a + b) : clamp(x - step, a + margin, b - margin);
     }
     return x;
+}
+
+// f at two points of the ray: one call site, so the generated code is inlined once here.
+vec2 implicit_pair(uint surface, vec3 o, vec3 d, vec2 s) {
+    vec2 values;
+    for (int k = 0; k < 2; ++k) {
+        float unused;
+        values[k] = implicit_eval(surface, o + s[k] * d, d, unused);
+    }
+    return values;
 }
 
 bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit) {
@@ -73,41 +89,54 @@ bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out f
     int waiting = 0;
     vec2 piece = vec2(0.0, t1 - t0);
     for (int n = 0; n < IMPLICIT_MAX_PIECES; ++n) {
-        vec2 f, df;
-        implicit_interval(surface, base, d, piece, f, df);
-        bool split = false;
-        if (f.x <= 0.0 && f.y >= 0.0) {
-            float dummy;
-            if (df.x > 0.0 || df.y < 0.0) {  // monotone
-                float fa = implicit_eval(surface, base + piece.x * d, d, dummy);
-                float fb = implicit_eval(surface, base + piece.y * d, d, dummy);
-                if (isnan(fa) || isnan(fb)) {
-                    split = true;
-                } else if (fa == 0.0 || fb == 0.0 || (fa < 0.0) != (fb < 0.0)) {
-                    float s = implicit_refine(surface, base, d, piece.x, piece.y, fa, fb);
-                    t_hit = t0 + s;
-                    vec3 p = base + s * d;
-                    uv_hit = (p.xy - lo.xy) / (hi.xy - lo.xy);
-                    return true;
-                }
+        // f's enclosure over the piece; after many pieces (a ray that skims the surface, where
+        // the natural enclosure stays wide) narrowed by the mean-value form f(m) + f'(piece)
+        // (piece - m), which costs a second enclosure, at the piece's middle.
+        float m = 0.5 * (piece.x + piece.y);
+        vec2 f = vec2(-I_INF, I_INF), df;
+        for (int k = 0; k < (n < IMPLICIT_MEAN_VALUE_AFTER ? 1 : 2); ++k) {
+            vec2 fk, dfk;
+            implicit_interval(surface, base, d, k == 0 ? piece : vec2(m), fk, dfk);
+            if (k == 0) {
+                df = dfk;
+                if (fk.x > 0.0 || fk.y < 0.0 || isinf(df.x) || isinf(df.y)) k = 1;  // settled, or no use
             } else {
-                split = true;
+                fk = i_add(fk, i_mul(df, piece - m));
             }
-            if (split && piece.y - piece.x <= eps) {
-                float s = 0.5 * (piece.x + piece.y);
-                if (!isnan(implicit_eval(surface, base + s * d, d, dummy))) {
-                    t_hit = t0 + s;
-                    vec3 p = base + s * d;
-                    uv_hit = (p.xy - lo.xy) / (hi.xy - lo.xy);
-                    return true;
+            f = vec2(max(f.x, fk.x), min(f.y, fk.y));
+        }
+        bool may_hold_root = f.x <= 0.0 && f.y >= 0.0;
+        bool monotone = df.x > 0.0 || df.y < 0.0;
+        bool point = piece.y - piece.x <= eps;
+        bool split = may_hold_root && !monotone && !point;
+        if (may_hold_root && (monotone || point)) {
+            // Monotone: a root exactly where f changes sign between the ends. A point: a touching
+            // (or singular) hit, where f is defined.
+            vec2 at = monotone ? piece : vec2(m);
+            vec2 v = implicit_pair(surface, base, d, at);
+            bool defined = !isnan(v.x) && !isnan(v.y);
+            bool hit = false;
+            float s = m;
+            if (monotone && defined) {
+                if (v.x == 0.0 || v.y == 0.0 || (v.x < 0.0) != (v.y < 0.0)) {
+                    s = implicit_refine(surface, base, d, piece.x, piece.y, v.x, v.y);
+                    hit = true;
                 }
-                split = false;
+            } else if (point) {
+                hit = defined;
+            } else {
+                split = true;  // monotone, but f undefined at an end
+            }
+            if (hit) {
+                t_hit = t0 + s;
+                vec3 p = base + s * d;
+                uv_hit = (p.xy - lo.xy) / (hi.xy - lo.xy);
+                return true;
             }
         }
         if (split && waiting < IMPLICIT_STACK) {
-            float middle = 0.5 * (piece.x + piece.y);
-            stack[waiting++] = vec2(middle, piece.y);
-            piece = vec2(piece.x, middle);
+            stack[waiting++] = vec2(m, piece.y);
+            piece = vec2(piece.x, m);
             continue;
         }
         if (waiting == 0) return false;

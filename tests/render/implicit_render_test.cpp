@@ -147,7 +147,9 @@ TEST(ImplicitExactness, GpuRootsAgreeWithTheCertifiedRoots) {
 
 // A ray along the line y = 1, z = 0 touches the unit sphere x^2 + y^2 + z^2 = 1 at (0, 1, 0):
 // f = x^2 along it, a double root. Both backends report it as a hit (docs/scene-format.md); a
-// ray 1e-3 higher misses on both.
+// ray 1e-3 higher misses on both. Where a double root lies is only defined to the square root of
+// the arithmetic's precision: in float, 1 + x^2 is 1 for |x| < 2.4e-4, so the GPU's t may be off
+// by that much.
 TEST(ImplicitTouching, ATouchingRayIsAHitOnBothBackends) {
     const std::string scene_text = R"(
         [render]
@@ -170,7 +172,7 @@ TEST(ImplicitTouching, ATouchingRayIsAHitOnBothBackends) {
     Scene touching = at("1"), missing = at("1.001");
     glm::vec4 g = test::gpu_renderer().render_hits(touching).at(0, 0);
     glm::vec4 c = CpuRenderer().render_hits(touching).at(0, 0);
-    EXPECT_NEAR(g.x, 5.0, 5e-5);
+    EXPECT_NEAR(g.x, 5.0, 5e-4);
     EXPECT_NEAR(c.x, 5.0, 1e-6);
     EXPECT_LT(test::gpu_renderer().render_hits(missing).at(0, 0).x, 0.0f);
     EXPECT_LT(CpuRenderer().render_hits(missing).at(0, 0).x, 0.0f);
