@@ -11,8 +11,9 @@
 namespace lancer::gpu {
 
 // "" when the scene has no expression surfaces (the tracer then uses the file as shipped).
-// Surface k is the k-th ParametricObject or ImplicitObject of scene.objects, the index of its
-// SurfaceInfo (scene_packing.cpp).
+// Parametric surface k is the k-th ParametricObject of scene.objects, the index of its
+// SurfaceInfo; implicit surface k the k-th ImplicitObject, the index of its ImplicitInfo
+// (scene_packing.cpp).
 std::string surface_functions_glsl(const Scene& scene);
 
 }  // namespace lancer::gpu

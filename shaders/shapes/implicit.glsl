@@ -5,7 +5,7 @@
 // f, its derivative along the ray, its gradient and its interval enclosure are generated from
 // the expression (host/gpu/surface_codegen.cpp, shaders/interval.glsl), so no Lipschitz bound
 // is needed: a piece of the ray on which f's enclosure excludes 0 holds no root, however steep
-// f is. The ray is carried into the surface's coordinates (SurfaceInfo: world -> local; t is
+// f is. The ray is carried into the surface's coordinates (ImplicitInfo: world -> local; t is
 // kept), clipped to the box and re-origined at its entry. Pieces of it are examined nearest
 // first:
 //   * f's enclosure over the piece excludes 0: no root;
@@ -27,7 +27,7 @@ const int IMPLICIT_NEWTON_STEPS = 24;
 const int IMPLICIT_MEAN_VALUE_AFTER = 16;  // pieces examined before the mean-value form narrows enclosures
 
 // The ray's origin and direction in the surface's coordinates.
-void implicit_local_ray(SurfaceInfo info, Ray ray, out vec3 o, out vec3 d) {
+void implicit_local_ray(ImplicitInfo info, Ray ray, out vec3 o, out vec3 d) {
     mat3 rows = mat3(info.row0.xyz, info.row1.xyz, info.row2.xyz);  // columns hold the map's rows
     o = ray.origin * rows + vec3(info.row0.w, info.row1.w, info.row2.w);
     d = ray.dir * rows;
@@ -74,7 +74,7 @@ vec2 implicit_pair(uint surface, vec3 o, vec3 d, vec2 s) {
 bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit) {
     uint surface = prim.data;
     vec3 o, d;
-    implicit_local_ray(surfaces[surface], ray, o, d);
+    implicit_local_ray(implicit_at(surface), ray, o, d);
     vec3 lo = prim.p0.xyz, hi = prim.p1.xyz;
     vec3 inv = safe_inverse(d);
     vec3 ta = (lo - o) * inv, tb = (hi - o) * inv;
@@ -149,7 +149,7 @@ bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out f
 // the world -> local map. Where it vanishes (a singular point) the gradient a little away
 // along the box's diagonal is taken, as on the CPU reference.
 vec3 implicit_normal(Primitive prim, vec3 p) {
-    SurfaceInfo info = surfaces[prim.data];
+    ImplicitInfo info = implicit_at(prim.data);
     mat3 rows = mat3(info.row0.xyz, info.row1.xyz, info.row2.xyz);
     vec3 local = p * rows + vec3(info.row0.w, info.row1.w, info.row2.w);
     vec3 step = (prim.p1.xyz - prim.p0.xyz) * 0.57735027;

@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "support/compute_harness.hpp"
+#include "support/gpu_kernel.hpp"
 #include "surface/expr/evaluate.hpp"
 #include "surface/expr/glsl_emitter.hpp"
 #include "surface/expr/parser.hpp"
@@ -22,6 +22,22 @@ namespace lancer {
 namespace {
 
 using surface::Dual;
+
+// Runs `code` (functions and main(), reading and writing pixels[]) as a test kernel: `data`
+// holds 4 floats per vec4 of pixels[].
+std::vector<float> run_compute(const std::string& code, const std::vector<float>& data, std::uint32_t invocations) {
+    const std::string source = "#version 450\n#extension GL_GOOGLE_include_directive : require\n"
+                               "#extension GL_EXT_control_flow_attributes : require\n#include \"interface.glsl\"\n"
+                               "layout(local_size_x = 1) in;\n" +
+                               code;
+    std::vector<glm::vec4> io(data.size() / 4);
+    for (std::size_t i = 0; i < io.size(); ++i) io[i] = glm::vec4(data[4 * i], data[4 * i + 1], data[4 * i + 2], data[4 * i + 3]);
+    std::vector<glm::vec4> out = test::GpuKernel(source).run(io, invocations);
+    std::vector<float> result(out.size() * 4);
+    for (std::size_t i = 0; i < out.size(); ++i)
+        for (int k = 0; k < 4; ++k) result[4 * i + k] = out[i][k];
+    return result;
+}
 
 struct Case {
     const char* name;
@@ -49,15 +65,15 @@ const Case kCases[] = {
 const char* kMain = R"(
 void main() {
     uint i = 5u * gl_GlobalInvocationID.x;
-    vec3 o = data[i].xyz, d = data[i + 1u].xyz;
-    vec2 s = vec2(data[i].w, data[i + 1u].w);
+    vec3 o = pixels[i].xyz, d = pixels[i + 1u].xyz;
+    vec2 s = vec2(pixels[i].w, pixels[i + 1u].w);
     vec2 f, df;
     test_interval(o, d, s, f, df);
-    data[i + 2u] = vec4(f, df);
+    pixels[i + 2u] = vec4(f, df);
     float dd;
     float value = test(o, d, dd);
-    data[i + 3u] = vec4(test_gradient(o), value);
-    data[i + 4u] = vec4(dd, 0.0, 0.0, 0.0);
+    pixels[i + 3u] = vec4(test_gradient(o), value);
+    pixels[i + 4u] = vec4(dd, 0.0, 0.0, 0.0);
 }
 )";
 
@@ -95,7 +111,7 @@ TEST_P(GlslImplicitOnDevice, ValuesDerivativesAndEnclosures) {
         v[0] = p.o.x, v[1] = p.o.y, v[2] = p.o.z, v[3] = p.a;
         v[4] = p.d.x, v[5] = p.d.y, v[6] = p.d.z, v[7] = p.b;
     }
-    std::vector<float> out = test::run_compute("#include \"interval.glsl\"\n" + surface::emit_glsl_implicit(s.f, "test") + kMain,
+    std::vector<float> out = run_compute("#include \"interval.glsl\"\n" + surface::emit_glsl_implicit(s.f, "test") + kMain,
                                                data, static_cast<std::uint32_t>(pieces.size()));
     int samples = 0;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
@@ -187,9 +203,9 @@ TEST(GlslIntervalLibrary, EveryFunctionEnclosesTheExactValues) {
             data[4 * i] = float(a);
             data[4 * i + 1] = std::max(float(a), float(b));
         }
-        std::vector<float> out = test::run_compute(std::string("#include \"interval.glsl\"\nvoid main() {\n"
+        std::vector<float> out = run_compute(std::string("#include \"interval.glsl\"\nvoid main() {\n"
                                                                "    uint i = gl_GlobalInvocationID.x;\n"
-                                                               "    vec2 a = data[i].xy;\n    data[i].zw = ") +
+                                                               "    vec2 a = pixels[i].xy;\n    pixels[i].zw = ") +
                                                        c.call + ";\n}\n",
                                                    data, n);
         int outside = 0;
