@@ -4,16 +4,19 @@
 //   box = { min = [-1.4, -0.4, -1.4], max = [1.4, 0.4, 1.4] }   params = { R = 1, r = 0.35 }
 // Errors inside the function point at their exact column in the scene file; a function that is
 // undefined or infinite everywhere in the box, a polynomial above the degree limit, an empty box
-// and a surface that provably does not meet its box are errors too.
+// a constant beyond float's range (the GPU evaluates f in float), a function above the
+// operation limit and a surface that provably does not meet its box are errors too.
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "scene/expression_keys.hpp"
+#include "scene/limits.hpp"
 #include "scene/parse_surfaces.hpp"
 #include "scene/transform.hpp"
 #include "surface/expr/domain_check.hpp"
 #include "surface/expr/evaluate.hpp"
+#include "surface/float_check.hpp"
 
 namespace lancer {
 namespace {
@@ -46,6 +49,11 @@ void check_defined(const toml::node& node, const std::string& file, const surfac
     }
     if (auto origin = surface::where_non_finite_starts(s.f, box))
         throw SceneError(column_in_string(node, file, origin->column), origin->what());
+    try {
+        surface::check_float_constants(s.f);  // the GPU evaluates f in float
+    } catch (const surface::ExprError& e) {
+        throw SceneError(column_in_string(node, file, e.column), e.what());
+    }
 }
 
 }  // namespace
@@ -68,6 +76,12 @@ Shape read_implicit(TableReader& t) {
     }
     const surface::Expr* f[] = {&s.f};
     s.program = surface::compile_program(f);
+    // Cost in operations after simplification, as for parametric surfaces: f becomes interval
+    // and Newton code in the GPU's tracer, run at every step of every ray.
+    if (const int operations = surface::count_operations(s.program); operations > limits::kMaxSurfaceOperations)
+        t.fail("function", fmt::format("the function takes {} operations (after simplification); the limit is {}: it "
+                                       "becomes code that the GPU's driver compiles and runs at every step of every ray",
+                                       operations, limits::kMaxSurfaceOperations));
     if (s.polynomial && s.polynomial->degree() <= 0) {
         double c = s.polynomial->terms.empty() ? 0.0 : s.polynomial->terms.front().coefficient;
         t.fail("function", t.what() + (c == 0.0 ? ": the function is 0 everywhere: the surface would fill its whole box"

@@ -1,9 +1,9 @@
 #include "cpu/shapes/polynomial_roots.hpp"
 
-#include <lapacke.h>
-
 #include <algorithm>
 #include <cmath>
+
+#include "cpu/lapack.hpp"
 
 namespace lancer::cpu {
 
@@ -35,12 +35,12 @@ std::vector<ComplexRoot> polynomial_roots(std::span<const double> c) {
     std::vector<double> scale(n);
     lapack_int ilo = 1, ihi = n;
     // Scaling only: a diagonal similarity keeps the matrix upper Hessenberg for dhseqr.
-    if (LAPACKE_dgebal_work(LAPACK_COL_MAJOR, 'S', n, h.data(), n, &ilo, &ihi, scale.data()) != 0) return roots;
+    if (lapack_dgebal_work()(LAPACK_COL_MAJOR, 'S', n, h.data(), n, &ilo, &ihi, scale.data()) != 0) return roots;
     double query = 0.0;
-    LAPACKE_dhseqr_work(LAPACK_COL_MAJOR, 'E', 'N', n, ilo, ihi, h.data(), n, wr.data(), wi.data(), nullptr, 1,
+    lapack_dhseqr_work()(LAPACK_COL_MAJOR, 'E', 'N', n, ilo, ihi, h.data(), n, wr.data(), wi.data(), nullptr, 1,
                         &query, -1);
     work.resize(std::max<std::size_t>(std::size_t(n), static_cast<std::size_t>(query)));
-    lapack_int info = LAPACKE_dhseqr_work(LAPACK_COL_MAJOR, 'E', 'N', n, ilo, ihi, h.data(), n, wr.data(), wi.data(),
+    lapack_int info = lapack_dhseqr_work()(LAPACK_COL_MAJOR, 'E', 'N', n, ilo, ihi, h.data(), n, wr.data(), wi.data(),
                                           nullptr, 1, work.data(), static_cast<lapack_int>(work.size()));
     // info > 0: QR did not converge for some eigenvalues; those before info-1 are still valid,
     // but a root we do not know could be a missed hit, so report what converged and let the
