@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # lancer's benchmark suite against POV-Ray 3.7 (a benchmark, never a test: speed is not asserted).
 #
-#   bench/run.sh [runs=3]
+#   bench/run.sh [runs=3] [all|classic|implicit]
 #
 # For each suite scene, in one run so the ratios mean something on a shared, noisy machine:
 # lancer on the GPU path (lavapipe here), lancer's CPU reference, and POV-Ray rendering the same
@@ -13,11 +13,17 @@
 # land in bench/out/: SCENE-lancer.png, SCENE-pov.png and SCENE-side.png (lancer | POV |
 # difference x 8) with their PSNR, so anyone can see they are the same picture.
 #
+# The implicit surfaces are set against two POV-Ray twins each: the exact `polynomial` (Sturm
+# sequences, clipped to the same box) where the function is a polynomial, and the `isosurface`
+# (Lipschitz subdivision: accuracy, and max_gradient measured over the box by the converter),
+# with PSNRs against the exact picture (POV's polynomial; for the gyroid, lancer's CPU reference).
+#
 # Installs POV-Ray (and GNU time) with apt-get when missing: the benchmark's own setup, not the
 # main one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs="${1:-3}"
+suite="${2:-all}"
 out=bench/out
 mkdir -p "$out"
 
@@ -82,17 +88,23 @@ row() {  # scene size spp name "wall render rays mib" pov_wall
   printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$1" "$2" "$3" "$4" "$wall" "$render" "$mrays" "$mib" "$ratio"
 }
 
-# The POV-Ray twins are kept in bench/pov/ (torus: one per torus form); they must be what the
-# converter makes of the scene today, so that both renderers draw the same picture.
-pov_twin() {  # name variant
-  local twin=bench/pov/$1.pov
-  [ "$1" = torus ] && twin=bench/pov/torus-$2.pov
-  python3 bench/toml_to_pov.py "scenes/$1.toml" --torus-as "$2" >"$out/$(basename "$twin")"
+# The POV-Ray twins are kept in bench/pov/ (torus: one per torus form; implicit surfaces: -poly
+# and -isosurface); they must be what the converter makes of the scene today, so that both
+# renderers draw the same picture.
+check_twin() {  # twin scene converter-options...
+  local twin=$1 scene=$2
+  shift 2
+  python3 bench/toml_to_pov.py "$scene" "$@" >"$out/$(basename "$twin")"
   if ! cmp -s "$twin" "$out/$(basename "$twin")"; then
-    echo "$twin is out of date with scenes/$1.toml: python3 bench/toml_to_pov.py scenes/$1.toml --torus-as $2 > $twin" >&2
+    echo "$twin is out of date with $scene: python3 bench/toml_to_pov.py $scene $* > $twin" >&2
     exit 1
   fi
   echo "$twin"
+}
+pov_twin() {  # name variant
+  local twin=bench/pov/$1.pov
+  [ "$1" = torus ] && twin=bench/pov/torus-$2.pov
+  check_twin "$twin" "scenes/$1.toml" --torus-as "$2"
 }
 
 bench_scene() {  # scene width height cpu_width cpu_height [pov_variant]
@@ -121,13 +133,58 @@ bench_scene() {  # scene width height cpu_width cpu_height [pov_variant]
   fi
 }
 
+psnr() {  # a b label: one line of lancer diff's metric
+  echo "    $3: $(build/lancer diff "$1" "$2" | head -n 1)" >>"$out/psnr.txt"
+}
+
+# An implicit surface: lancer's GPU path and CPU reference, POV-Ray's exact polynomial (when the
+# function is one) and its isosurface at `accuracy`; the ratios are POV's isosurface over each.
+bench_implicit() {  # scene width height accuracy
+  local name=$1 w=$2 h=$3 accuracy=$4
+  local toml=scenes/$name.toml poly="" iso
+  if python3 bench/toml_to_pov.py "$toml" | grep -q "^polynomial"; then
+    poly=$(check_twin "bench/pov/$name-poly.pov" "$toml")
+  fi
+  iso=$(check_twin "bench/pov/$name-isosurface.pov" "$toml" --implicit-as isosurface --accuracy "$accuracy")
+  build/lancer render "$toml" --width 64 --height 36 -q -o "$out/warm.png"  # warm-up: Mesa's shader cache
+  local gpu cpu p i
+  gpu=$(measure run_lancer "$toml" "$w" "$h" gpu)
+  cpu=$(measure run_lancer "$toml" "$w" "$h" cpu)
+  i=$(measure run_pov "$iso" "$w" "$h" "$name-isosurface")
+  local iso_wall; iso_wall=$(awk '{print $1}' <<<"$i")
+  row "$name" "${w}x$h" 9 "lancer gpu" "$gpu" "$iso_wall"
+  row "$name" "${w}x$h" 9 "lancer cpu reference" "$cpu" "$iso_wall"
+  local exact=$out/$name-lancer-cpu.png
+  echo "  $name (${w}x$h; POV isosurface accuracy $accuracy):" >>"$out/psnr.txt"
+  if [ -n "$poly" ]; then
+    p=$(measure run_pov "$poly" "$w" "$h" "$name-poly")
+    row "$name" "${w}x$h" "9 (+centre)" "POV-Ray polynomial (exact, sturm)" "$p" "$iso_wall"
+    exact=$out/$name-poly-pov.png
+  fi
+  row "$name" "${w}x$h" "9 (+centre)" "POV-Ray isosurface" "$i" "$iso_wall"
+  psnr "$out/$name-lancer-gpu.png" "$exact" "lancer gpu vs $(basename "$exact" .png)"
+  psnr "$out/$name-lancer-cpu.png" "$exact" "lancer cpu vs $(basename "$exact" .png)"
+  psnr "$out/$name-isosurface-pov.png" "$exact" "POV isosurface vs $(basename "$exact" .png)"
+  build/lancer diff "$out/$name-lancer-gpu.png" "$exact" --side-by-side "$out/$name-side.png" >/dev/null
+}
+
 : >"$out/psnr.txt"
-bench_scene seed 1280 720 1280 720
-bench_scene many 1280 720 1280 720
-bench_scene teapot 1280 720 320 180
-bench_scene torus 1280 720 320 180 analytic
-# POV-Ray's parametric (Lipschitz subdivision) needs minutes for even a small torus image.
-bench_scene torus 160 90 160 90 parametric
+if [ "$suite" != implicit ]; then
+  bench_scene seed 1280 720 1280 720
+  bench_scene many 1280 720 1280 720
+  bench_scene teapot 1280 720 320 180
+  bench_scene torus 1280 720 320 180 analytic
+  # POV-Ray's parametric (Lipschitz subdivision) needs minutes for even a small torus image.
+  bench_scene torus 160 90 160 90 parametric
+fi
+if [ "$suite" != classic ]; then
+  echo
+  printf '| scene | size | rays/pixel | renderer | wall s | render s | Mrays/s | peak MiB | POV isosurface wall / this |\n'
+  printf '|---|---|---|---|---|---|---|---|---|\n'
+  for scene in implicit roman kummer barth clebsch gyroid; do
+    bench_implicit "$scene" 640 360 0.001
+  done
+fi
 
 # Start-up: a 1x1 render is nearly all instance, device, pipeline and shader-cache lookup.
 startup=$( { /usr/bin/time -f "%e" build/lancer render scenes/seed.toml --width 1 --height 1 --samples 1 -q \

@@ -40,6 +40,7 @@ LANCER_CONST SHAPE_RECTANGLE = 2;  // p0 = (corner, 0), p1 = (edge_u, 0), p2 = (
 LANCER_CONST SHAPE_BOX = 3;        // p0 = (min, 0), p1 = (max, 0)
 LANCER_CONST SHAPE_BEZIER = 4;     // data = index of its PatchLeaf
 LANCER_CONST SHAPE_PARAMETRIC = 5; // data = index of its ParametricCell, p0 = (box min, 0), p1 = (box max, 0)
+LANCER_CONST SHAPE_IMPLICIT = 6;   // data = index of its ImplicitInfo, p0 = (box min, 0), p1 = (box max, 0) in its own coordinates
 
 // Material::pattern values.
 LANCER_CONST PATTERN_SOLID = 0;
@@ -96,6 +97,14 @@ LANCER_CONST LIGHT_AREA = 2;
 #define LANCER_ROWS_SurfaceInfo(VEC4, VEC4S, SCALARS) \
     VEC4(row0) VEC4(row1) VEC4(row2)                  \
     VEC4(domain) /* (u0, u1, v0, v1) of the whole surface */
+
+// Per implicit surface: the affine map from world space to the coordinates its f(x, y, z) is
+// written in (the inverse of its transform), so moving an object only rewrites this array,
+// never the generated shader code: p = (dot(row0.xyz, w) + row0.w, dot(row1.xyz, w) + row1.w,
+// dot(row2.xyz, w) + row2.w) for a world point w; directions without the w terms, and normals by
+// the transpose.
+#define LANCER_ROWS_ImplicitInfo(VEC4, VEC4S, SCALARS) \
+    VEC4(row0) VEC4(row1) VEC4(row2)
 
 // One cell of a parametric surface's domain: where Newton's method looks for roots. The corner
 // points give Newton a starting point near the root (where the ray meets the two triangles they
@@ -204,6 +213,7 @@ LANCER_STRUCT(Primitive)
 LANCER_STRUCT(PatchLeaf)
 LANCER_STRUCT(SurfaceInfo)
 LANCER_STRUCT(ParametricCell)
+LANCER_STRUCT(ImplicitInfo)
 LANCER_STRUCT(BvhNode)
 LANCER_STRUCT(Material)
 LANCER_STRUCT(TextureInfo)
@@ -247,12 +257,13 @@ LANCER_CONST RESOURCE_INT = 4;
     X(TEXTURES, 8, RESOURCE_ROWS, TextureInfo, textures, texture_at, "textures")                        \
     X(TEXELS, 9, RESOURCE_UINT, uint, texels, texel_at, "texture texels") /* RGBA8, R in the low byte */ \
     X(PATTERNS, 10, RESOURCE_ROWS, PatternInfo, patterns, pattern_at, "patterns")                       \
-    X(PERMUTATION, 11, RESOURCE_INT, int, permutation, permutation_at, "noise permutation") /* Perlin's */
+    X(PERMUTATION, 11, RESOURCE_INT, int, permutation, permutation_at, "noise permutation") /* Perlin's */ \
+    X(IMPLICITS, 12, RESOURCE_ROWS, ImplicitInfo, implicits, implicit_at, "implicit surfaces")
 
 #define LANCER_RESOURCES(X)                                                          \
     X(FRAME, 0, RESOURCE_UNIFORM, FrameParams, frame, frame, "frame parameters")     \
     LANCER_SCENE_ARRAYS(X)                                                           \
-    X(OUTPUT, 12, RESOURCE_OUTPUT, vec4, pixels, pixels, "output rows") /* one band of the image */
+    X(OUTPUT, 13, RESOURCE_OUTPUT, vec4, pixels, pixels, "output rows") /* one band of the image */
 
 #define LANCER_BINDING_CONSTANT(NAME, slot, kind, Element, member, reader, what) LANCER_CONST BINDING_##NAME = slot;
 LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
@@ -286,6 +297,7 @@ LANCER_ASSERT_SIZE(Primitive)
 LANCER_ASSERT_SIZE(PatchLeaf)
 LANCER_ASSERT_SIZE(SurfaceInfo)
 LANCER_ASSERT_SIZE(ParametricCell)
+LANCER_ASSERT_SIZE(ImplicitInfo)
 LANCER_ASSERT_SIZE(BvhNode)
 LANCER_ASSERT_SIZE(Material)
 LANCER_ASSERT_SIZE(TextureInfo)

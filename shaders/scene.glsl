@@ -11,7 +11,9 @@
 #include "shapes/rectangle.glsl"
 #include "shapes/box.glsl"
 #include "shapes/bezier.glsl"
+#include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/surface_codegen.cpp)
 #include "shapes/parametric.glsl"
+#include "shapes/implicit.glsl"
 
 // uv: the surface's own parameters at the hit, for shapes that have them. Only families the
 // scene has are compiled in (lavapipe runs every case of a switch, the type being known only at
@@ -28,6 +30,9 @@ bool primitive_intersect(Primitive p, Ray ray, float t_min, float t_max, bool pl
 #if LANCER_PARAMETRIC_SURFACES
         case SHAPE_PARAMETRIC: return parametric_intersect(p, ray, t_min, t_max, t_hit, uv);
 #endif
+#if LANCER_IMPLICIT_SURFACES
+        case SHAPE_IMPLICIT: return implicit_intersect(p, ray, t_min, t_max, t_hit, uv);
+#endif
     }
     return false;
 }
@@ -42,6 +47,9 @@ vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
         case SHAPE_BEZIER: if (SCENE_HAS_BEZIER) return bezier_normal(prim, uv); break;
 #if LANCER_PARAMETRIC_SURFACES
         case SHAPE_PARAMETRIC: return parametric_normal(prim, uv);
+#endif
+#if LANCER_IMPLICIT_SURFACES
+        case SHAPE_IMPLICIT: return implicit_normal(prim, p);
 #endif
     }
     return vec3(0.0, 0.0, 1.0);

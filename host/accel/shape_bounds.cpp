@@ -21,6 +21,11 @@ struct BoundsOf {
         }
         return b;
     }
+    std::optional<Aabb> operator()(const ImplicitObject& o) const {
+        Aabb b;
+        surface::implicit_world_bounds(o.surface, b.lo, b.hi);
+        return b;
+    }
     std::optional<Aabb> operator()(const BezierSurface& s) const {
         Aabb b;
         for (const auto& patch : s.patches) {

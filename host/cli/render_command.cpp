@@ -2,6 +2,8 @@
 #include <cstdio>
 #include <memory>
 
+#include <fmt/format.h>
+
 #include "cli/animation_runner.hpp"
 #include "cli/commands.hpp"
 #include "app/frame_pattern.hpp"
@@ -12,6 +14,20 @@
 namespace lancer {
 namespace {
 
+// One note per implicit surface: whether lancer took its function for a polynomial, and of
+// which degree (the CPU reference then solves it by companion matrix; otherwise by interval
+// Newton), so that a user can tell which path a surface takes.
+void report_implicit_surfaces(const Scene& scene) {
+    for (const Object& o : scene.objects) {
+        const auto* implicit = std::get_if<ImplicitObject>(&o.shape);
+        if (!implicit) continue;
+        int degree = implicit->surface.degree();
+        std::string what = degree > 0 ? fmt::format("a polynomial of degree {}", degree) : "not a polynomial";
+        std::fprintf(stderr, "%s:%d:%d: note: implicit surface: %s\n", o.where.file.c_str(), o.where.line,
+                     o.where.column, what.c_str());
+    }
+}
+
 struct RenderCommand {
     RenderOptions options;
     AnimationOptions animation;
@@ -21,6 +37,7 @@ struct RenderCommand {
         if (list_devices) return lancer::list_devices();
         if (options.scene.empty()) throw UserError("render: a scene file is required (see lancer render --help)");
         Scene scene = load_scene_with_overrides(options);
+        if (!options.quiet) report_implicit_surfaces(scene);
         if (scene.animation || animation.requested()) return run_animation(options, animation, scene);
         std::string output = output_path(options);
         if (has_frame_field(output))

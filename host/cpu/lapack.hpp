@@ -1,5 +1,6 @@
 #pragma once
-// LAPACK for the CPU reference (dggev, on pencils of at most 18 x 18), loaded on first use.
+// LAPACK for the CPU reference (dggev on pencils of at most 18 x 18; dgebal and dhseqr on
+// companion matrices of at most 24 x 24), loaded on first use.
 //
 // Debian's LAPACK is OpenBLAS's pthread build, which starts a pool of threads in its library
 // constructor: linked into the program, that happens before main(), in every run, `lancer
@@ -18,7 +19,14 @@ namespace lancer::cpu {
 using DggevWork = lapack_int (*)(int, char, char, lapack_int, double*, lapack_int, double*, lapack_int, double*,
                                  double*, double*, double*, lapack_int, double*, lapack_int, double*, lapack_int);
 
-// LAPACKE_dggev_work from liblapacke.so.3. Throws std::runtime_error if it cannot be loaded.
+using DgebalWork = lapack_int (*)(int, char, lapack_int, double*, lapack_int, lapack_int*, lapack_int*, double*);
+using DhseqrWork = lapack_int (*)(int, char, char, lapack_int, lapack_int, lapack_int, double*, lapack_int, double*,
+                                  double*, double*, lapack_int, double*, lapack_int);
+
+// LAPACKE_dggev_work, LAPACKE_dgebal_work and LAPACKE_dhseqr_work from liblapacke.so.3. Each
+// throws std::runtime_error if the library or any of the three cannot be loaded.
 DggevWork lapack_dggev_work();
+DgebalWork lapack_dgebal_work();
+DhseqrWork lapack_dhseqr_work();
 
 }  // namespace lancer::cpu

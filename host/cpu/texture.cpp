@@ -20,6 +20,7 @@ glm::dvec2 texture_uv(const Hit& hit, const dvec3& p) {
             const auto& s = o.surface;
             return {(hit.uv.x - s.u0) / (s.u1 - s.u0), (hit.uv.y - s.v0) / (s.v1 - s.v0)};
         }
+        glm::dvec2 operator()(const ImplicitObject&) const { return hit.uv; }  // x and y across the box
     };
     return std::visit(Mapping{hit, p}, hit.object->shape);
 }

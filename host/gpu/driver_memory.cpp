@@ -43,15 +43,21 @@ void check_render_memory(const Scene& scene, std::uint64_t scene_buffer_bytes) {
     // one-operation surface, 508 MiB for 511 operations).
     const std::uint64_t image = std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height) * 16;
     std::uint64_t operations = 0;
-    bool parametric = false;
+    bool expressions = false;
     for (const Object& o : scene.objects) {
         if (const auto* p = std::get_if<ParametricObject>(&o.shape)) {
-            parametric = true;
+            expressions = true;
             const surface::Expr* xyz[] = {&p->surface.x, &p->surface.y, &p->surface.z};
             operations += static_cast<std::uint64_t>(surface::count_operations(surface::compile_program(xyz)));
+        } else if (const auto* i = std::get_if<ImplicitObject>(&o.shape)) {
+            // f becomes three functions in the tracer (value and derivative along the ray, gradient,
+            // interval enclosure), so each operation is counted three times: an upper estimate, not
+            // measured as the parametric figure above was.
+            expressions = true;
+            operations += 3 * static_cast<std::uint64_t>(surface::count_operations(i->surface.program));
         }
     }
-    const std::uint64_t compile = (parametric ? 128 : 32) * kMiB + operations * (kMiB * 3 / 4);
+    const std::uint64_t compile = (expressions ? 128 : 32) * kMiB + operations * (kMiB * 3 / 4);
     check_memory_headroom(2 * image + 2 * scene_buffer_bytes + compile, 2 * image + scene_buffer_bytes + compile,
                           "this render", kAdvice);
 }

@@ -93,6 +93,22 @@ struct PrimitivePacker {
         }
     }
 
+    // One primitive with the box in the surface's own coordinates; its ImplicitInfo carries the
+    // map from world space into them (f itself is compiled into the shader).
+    void operator()(const ImplicitObject& o) {
+        const surface::ImplicitSurface& s = o.surface;
+        auto index = static_cast<uint>(out.implicits.size());
+        const glm::dmat4& m = s.to_local;  // column-major: m[column][row]
+        ImplicitInfo info{};
+        info.row0 = vec4(float(m[0][0]), float(m[1][0]), float(m[2][0]), float(m[3][0]));
+        info.row1 = vec4(float(m[0][1]), float(m[1][1]), float(m[2][1]), float(m[3][1]));
+        info.row2 = vec4(float(m[0][2]), float(m[1][2]), float(m[2][2]), float(m[3][2]));
+        out.implicits.push_back(info);
+        Aabb world;
+        surface::implicit_world_bounds(s, world.lo, world.hi);
+        add({SHAPE_IMPLICIT, material, index, object, v4(s.box_lo), v4(s.box_hi), {}}, world);
+    }
+
     // Each patch becomes 2^n x 2^n leaves (exact sub-patches, de Casteljau in double): smaller
     // boxes cull more rays before Bezier clipping starts, and clipping converges sooner.
     void operator()(const BezierSurface& s) {

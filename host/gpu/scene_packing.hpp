@@ -1,7 +1,8 @@
 #pragma once
 // Scene model -> the GPU's arrays (LANCER_SCENE_ARRAYS in shaders/layout.h): primitives ordered
 // for the BVH (bounded ones in leaf order, then the unbounded planes), the flattened BVH,
-// materials, lights, patch leaves, parametric cells, textures and patterns; and which optional
+// materials, lights, patch leaves, parametric cells, implicit surfaces, textures and patterns;
+// and which optional
 // shader features the scene needs. Pure data conversion, no Vulkan.
 #include <cstddef>
 #include <span>

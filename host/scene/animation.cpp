@@ -34,6 +34,11 @@ void translate(Shape& shape, const dvec3& offset) {
                 cell.hi += d;
             }
         }
+        void operator()(ImplicitObject& o) const {
+            glm::dmat4 m = o.surface.to_world;
+            m[3] += glm::dvec4(d, 0.0);
+            o.surface.place(m);
+        }
         void operator()(BezierSurface& b) const {
             for (auto& patch : b.patches)
                 for (auto& p : patch.points) p += d;

@@ -21,6 +21,7 @@ constexpr int kMaxObjects = 1 << 20;
 // the GPU's shader, compiled when the scene is loaded.
 constexpr long long kMaxPatches = 1 << 16;
 constexpr int kMaxParametricSurfaces = 32;
+constexpr int kMaxImplicitSurfaces = 32;  // each also a function in the shader
 // Operations of a parametric surface's equations after simplification, and of all surfaces of a
 // scene together (each is compiled into the tracer): the driver's compile time grows with them
 // (docs/robustness.md, "Expression cost").

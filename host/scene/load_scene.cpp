@@ -107,10 +107,12 @@ Object read_object(TableReader& t, const std::map<std::string, std::uint32_t, st
     return o;
 }
 
-// The scene-wide limits on surfaces (limits.hpp): parametric surfaces are counted before one is
-// read (reading subdivides it, the expensive part), patches once an object's are known.
+// The scene-wide limits on surfaces (limits.hpp): parametric and implicit surfaces are counted
+// before one is read (reading subdivides or expands it, the expensive part), patches once an
+// object's are known.
 struct SurfaceTotals {
     int parametric = 0;
+    int implicit = 0;
     int operations = 0;
     long long patches = 0;
 
@@ -118,16 +120,22 @@ struct SurfaceTotals {
         if (type == "parametric" && ++parametric > limits::kMaxParametricSurfaces)
             t.fail("type", fmt::format("too many parametric surfaces (the limit is {} per scene)",
                                        limits::kMaxParametricSurfaces));
+        if (type == "implicit" && ++implicit > limits::kMaxImplicitSurfaces)
+            t.fail("type", fmt::format("too many implicit surfaces (the limit is {} per scene)",
+                                       limits::kMaxImplicitSurfaces));
     }
     void after(TableReader& t, const Object& o) {
+        int added = 0;
         if (const auto* p = std::get_if<ParametricObject>(&o.shape)) {
             const surface::Expr* xyz[] = {&p->surface.x, &p->surface.y, &p->surface.z};
-            operations += surface::count_operations(surface::compile_program(xyz));
-            if (operations > limits::kMaxSceneSurfaceOperations)
-                t.fail("type", fmt::format("the parametric surfaces' equations take {} operations so far; the limit is {} "
-                                           "per scene (all of them are compiled into the GPU's tracer)",
-                                           operations, limits::kMaxSceneSurfaceOperations));
+            added = surface::count_operations(surface::compile_program(xyz));
+        } else if (const auto* i = std::get_if<ImplicitObject>(&o.shape)) {
+            added = surface::count_operations(i->surface.program);
         }
+        if (added > 0 && (operations += added) > limits::kMaxSceneSurfaceOperations)
+            t.fail("type", fmt::format("the parametric and implicit surfaces' equations take {} operations so far; the "
+                                       "limit is {} per scene (all of them are compiled into the GPU's tracer)",
+                                       operations, limits::kMaxSceneSurfaceOperations));
         const auto* b = std::get_if<BezierSurface>(&o.shape);
         if (b && (patches += static_cast<long long>(b->patches.size())) > limits::kMaxPatches)
             t.fail("type", fmt::format("too many Bezier patches: {} so far (the limit is {} per scene)", patches,

@@ -9,6 +9,7 @@
 #include <glm/common.hpp>
 
 #include "core/magnitude.hpp"
+#include "scene/expression_keys.hpp"
 #include "scene/limits.hpp"
 #include "scene/parse_surfaces.hpp"
 #include "scene/string_position.hpp"
@@ -21,32 +22,14 @@
 namespace lancer {
 namespace {
 
-// Where byte `column` (0-based) of a TOML string value's text is in the file.
-SourceLocation column_in_string(const toml::node& node, const std::string& file, int column) {
-    return position_in_string(source_text(file), location_of(node, file), static_cast<std::size_t>(column));
-}
-
-surface::Expr parse_string(const toml::node& node, const std::string& file, const std::string& what,
-                           const surface::Constants& constants) {
-    const auto* text = node.as_string();
-    if (!text) throw SceneError(location_of(node, file), what + " must be a string holding an expression in u and v");
-    try {
-        return surface::parse_expression(text->get(), constants);
-    } catch (const surface::ExprError& e) {
-        throw SceneError(column_in_string(node, file, e.column), e.what());
-    } catch (const UserError& e) {
-        throw SceneError(location_of(node, file), e.what());
-    }
-}
-
 // A domain bound: a number, or a constant expression such as "2*pi" (u and v are 0 there, and
 // an expression that uses them is refused).
 double read_bound(const toml::node& node, const std::string& file, const std::string& what,
                   const surface::Constants& constants) {
     if (!node.is_string()) return node_number(node, file, what);
-    surface::Expr e = parse_string(node, file, what, constants);
+    surface::Expr e = parse_expression_key(node, file, what, constants);
     for (const auto& n : e.nodes)
-        if (n.op == surface::Op::U || n.op == surface::Op::V)
+        if (n.op == surface::Op::Variable)
             throw SceneError(column_in_string(node, file, n.column), what + " must not depend on u or v");
     double value = surface::evaluate(e, 0.0, 0.0);
     if (!std::isfinite(value)) throw SceneError(location_of(node, file), what + " is not a finite number");
@@ -67,15 +50,6 @@ std::pair<double, double> read_range(TableReader& t, std::string_view key, const
     return {lo, hi};
 }
 
-surface::Constants read_params(TableReader& t) {
-    surface::Constants constants;
-    const toml::table* params = t.table("params");
-    if (!params) return constants;
-    for (auto&& [key, node] : *params)
-        constants[std::string(key.str())] = node_number(node, t.file(), "params." + std::string(key.str()));
-    return constants;
-}
-
 }  // namespace
 
 Shape read_parametric(TableReader& t) {
@@ -87,7 +61,7 @@ Shape read_parametric(TableReader& t) {
     for (int i = 0; i < 3; ++i) {
         const toml::node* node = t.node(axes[i]);
         if (!node) throw SceneError(t.location(), fmt::format("missing required key '{}' (an expression in u and v)", axes[i]));
-        *exprs[i] = parse_string(*node, t.file(), axes[i], constants);
+        *exprs[i] = parse_expression_key(*node, t.file(), axes[i], constants);
     }
     // Cost in operations, not characters: "u*v*u*v*..." is 2,047 multiplications in 4,096
     // characters, and sin(u)+sin(u) one sine.

@@ -66,6 +66,7 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"box", read_box},
         {"bezier", read_bezier},
         {"parametric", read_parametric},
+        {"implicit", read_implicit},
     };
     return readers;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// Readers of the surface object types: "bezier" (patch sets, inline or from a patch file) and
-// "parametric" (equations in u and v). Registered in shape_readers() (parse_shapes.cpp).
+// Readers of the surface object types: "bezier" (patch sets, inline or from a patch file),
+// "parametric" (equations in u and v) and "implicit" (an equation f(x, y, z) = 0). Registered in
+// shape_readers() (parse_shapes.cpp).
 #include "scene/scene.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -8,6 +9,7 @@ namespace lancer {
 
 Shape read_bezier(TableReader& t);
 Shape read_parametric(TableReader& t);
+Shape read_implicit(TableReader& t);
 
 // Fails at `key` unless every coordinate of [lo, hi] is within kMaxMagnitude: geometry built by
 // transforms and equations must stay as representable as the numbers it came from.

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "scene/material_maps.hpp"
 #include "surface/bezier_patch.hpp"
+#include "surface/implicit_surface.hpp"
 #include "surface/parametric_cells.hpp"
 #include "surface/parametric_surface.hpp"
 
@@ -157,7 +158,12 @@ struct ParametricObject {
     std::vector<surface::SurfaceCell> cells;
 };
 
-using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject>;
+// A surface given by its equation f(x, y, z) = 0, clipped to a box (docs/scene-format.md).
+struct ImplicitObject {
+    surface::ImplicitSurface surface;
+};
+
+using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject>;
 
 struct Object {
     Shape shape;

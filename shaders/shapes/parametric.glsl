@@ -7,7 +7,6 @@
 // n1.(S(u,v) - o) = 0 and n2.(S(u,v) - o) = 0, by Newton from where the ray crosses the cell's
 // corner triangles (else from the cell's centre), and keeps a converged root inside the cell.
 
-#include "surface_functions.glsl"
 
 const int NEWTON_STEPS = 12;
 

@@ -10,6 +10,7 @@
 #include "accel/bvh.hpp"
 #include "accel/shape_bounds.hpp"
 #include "cpu/cpu_renderer.hpp"
+#include "cpu/shapes/shapes.hpp"
 #include "gpu/scene_packing.hpp"
 #include "scene/animation.hpp"
 #include "scene/camera.hpp"
@@ -22,6 +23,7 @@
 #include "surface/expr/program.hpp"
 #include "surface/float_check.hpp"
 #include "surface/patch_file.hpp"
+#include "surface/polynomial.hpp"
 
 namespace lancer::fuzz {
 namespace {
@@ -110,6 +112,21 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                         require_finite(c.lo, when + ": parametric cell box");
                         require_finite(c.hi, when + ": parametric cell box");
                     }
+                } else if constexpr (std::is_same_v<T, ImplicitObject>) {
+                    const surface::ImplicitSurface& f = s.surface;
+                    require_finite(f.box_lo, when + ": implicit box");
+                    require_finite(f.box_hi, when + ": implicit box");
+                    require(glm::all(glm::lessThan(f.box_lo, f.box_hi)), when + ": implicit box is empty");
+                    require(f.program.outputs.size() == 1, when + ": implicit function not compiled");
+                    require(!f.polynomial || (f.polynomial->degree() >= 1 &&
+                                              f.polynomial->degree() <= surface::kMaxPolynomialDegree),
+                            when + ": implicit polynomial degree");
+                    for (int c = 0; c < 4; ++c) {
+                        for (int r = 0; r < 4; ++r) {
+                            require(std::isfinite(f.to_world[c][r]), when + ": implicit transform");
+                            require(std::isfinite(f.to_local[c][r]), when + ": implicit inverse transform");
+                        }
+                    }
                 }
             },
             o.shape);
@@ -148,6 +165,8 @@ void check_renderers_input(const Scene& accepted, const std::string& when) {
         for (const auto& v : leaf.points) require_finite_floats(v, when + ": patch leaf");
     for (const auto& c : packed.cells)
         for (const auto& v : {c.p00, c.p10, c.p01, c.p11}) require_finite_floats(v, when + ": parametric cell");
+    for (const auto& s : packed.surfaces)
+        for (const auto& v : {s.row0, s.row1, s.row2, s.domain}) require_finite_floats(v, when + ": surface info");
     for (const auto& m : packed.materials)
         for (const auto& v : {m.color, m.color2, m.phong}) require_finite_floats(v, when + ": material");
     for (const auto& l : packed.lights) {
@@ -183,6 +202,67 @@ void scene_entry(const std::uint8_t* data, std::size_t size) {
 }
 
 namespace {
+
+const surface::Constants kFuzzConstants{{"a", 2.0}, {"R", 1.0}, {"r", 0.35}, {"k", -3.0}};
+
+void require_column(int column, std::size_t size, const std::string& what) {
+    require(column >= 0 && column <= static_cast<int>(size), what + "'s column is outside the text");
+}
+
+// The text as an implicit surface's f(x, y, z) over the box [-1, 1]^3, as the scene loader
+// takes it: parsed, expanded when it is a polynomial (within the degree limit), checked for being
+// defined, emitted as GLSL, and intersected by the CPU reference along two rays, whose roots must
+// be finite, in order, inside the box, with finite unit normals.
+void implicit_expression(std::string_view text) {
+    surface::ImplicitSurface s;
+    try {
+        s.f = surface::parse_expression(text, kFuzzConstants, surface::kImplicitVariables);
+    } catch (const UserError&) {
+        return;
+    }
+    for (const surface::Node& n : s.f.nodes)
+        require(n.op != surface::Op::Variable || (n.value >= 0.0 && n.value <= 2.0), "a variable beyond z");
+    try {
+        s.polynomial = surface::expand_polynomial(s.f);
+    } catch (const surface::ExprError& error) {
+        require_column(error.column, text.size(), "a degree error");
+        return;
+    }
+    if (s.polynomial) require(s.polynomial->degree() <= surface::kMaxPolynomialDegree, "a polynomial above the limit");
+    const surface::Interval box[] = {{-1.0, 1.0}, {-1.0, 1.0}, {-1.0, 1.0}};
+    try {
+        surface::check_expression_domain(s.f, box);
+    } catch (const surface::ExprError& error) {
+        require_column(error.column, text.size(), "an implicit domain error");
+        return;
+    }
+    if (auto origin = surface::where_non_finite_starts(s.f, box)) {
+        require_column(origin->column, text.size(), "a non-finite implicit function");
+        return;
+    }
+    try {
+        surface::check_float_constants(s.f);
+    } catch (const surface::ExprError& error) {
+        require_column(error.column, text.size(), "an implicit float constant error");
+        return;
+    }
+    const surface::Expr* f[] = {&s.f};
+    s.program = surface::compile_program(f);
+    s.place(glm::dmat4(1.0));
+    surface::emit_glsl_implicit(s.f, "fuzz_implicit");
+    for (const cpu::Ray& ray : {cpu::Ray{{-3.0, 0.1, 0.2}, glm::normalize(dvec3(1.0, 0.05, -0.1))},
+                                cpu::Ray{{0.3, 2.5, -0.4}, dvec3(0.0, -1.0, 0.0)}}) {
+        double last = 0.0;
+        for (const cpu::ImplicitRoot& root : cpu::implicit_roots(s, ray, 0.0, 1e9)) {
+            require(std::isfinite(root.t) && root.t > last, "implicit roots are not finite and in order");
+            last = root.t;
+            dvec3 p = ray.origin + root.t * ray.dir;
+            require(glm::all(glm::lessThanEqual(glm::abs(p), dvec3(1.0 + 1e-9))), "an implicit root outside its box");
+            dvec3 n = surface::implicit_normal(s, p);
+            require(std::abs(glm::length(n) - 1.0) < 1e-9, "an implicit normal is not a finite unit vector");
+        }
+    }
+}
 
 // The GPU evaluates in float. An expression the loader's float check accepts
 // (surface/float_check.hpp, which samples a 65 x 65 grid) must evaluate to finite floats, value
@@ -237,7 +317,8 @@ void check_gpu_float(const surface::Expr& e, int size) {
 }  // namespace
 
 void expression_entry(const std::uint8_t* data, std::size_t size) {
-    static const surface::Constants constants{{"a", 2.0}, {"R", 1.0}, {"r", 0.35}, {"k", -3.0}};
+    implicit_expression(as_text(data, size));
+    const surface::Constants& constants = kFuzzConstants;
     surface::Expr e;
     try {
         e = surface::parse_expression(as_text(data, size), constants);

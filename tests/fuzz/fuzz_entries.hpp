@@ -35,8 +35,10 @@ void check_scene_invariants(const Scene& scene, const std::string& when);
 // (every pixel finite).
 void scene_entry(const std::uint8_t* data, std::size_t size);
 
-// An expression of a parametric surface -> parsed expression, evaluated at a point, over a box,
-// with derivatives, checked over a domain, and emitted as GLSL.
+// An expression, as a parametric surface's x(u, v) -> parsed expression, evaluated at a point,
+// over a box, with derivatives, checked over a domain, and emitted as GLSL; and as an implicit
+// surface's f(x, y, z) -> parsed, expanded when a polynomial (degree limit), checked over a box,
+// emitted as GLSL and intersected with rays by the CPU reference.
 void expression_entry(const std::uint8_t* data, std::size_t size);
 
 // A patch file (.bpt or Newell) -> patches, bounded, split and evaluated.

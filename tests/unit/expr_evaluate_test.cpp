@@ -164,7 +164,7 @@ TEST(ExprEvaluate, ProgramsShareSubexpressionsAndFoldConstants) {
     Program program = compile_program(xyz);
     int cos_v = 0, constants = 0;
     for (const Node& n : program.nodes) {
-        if (n.op == Op::Cos && program.nodes[n.a].op == Op::V) ++cos_v;
+        if (n.op == Op::Cos && program.nodes[n.a].op == Op::Variable && program.nodes[n.a].value == 1.0) ++cos_v;
         if (n.op == Op::Constant) ++constants;
     }
     EXPECT_EQ(cos_v, 1);      // cos(v) computed once for x and y

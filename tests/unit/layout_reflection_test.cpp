@@ -26,7 +26,12 @@ ShaderTree full_tree() {
         if (name == "surface_functions.glsl")
             return std::string("#define LANCER_PARAMETRIC_SURFACES 1\n"
                                "void surface_eval(uint s, vec2 uv, out vec3 P, out vec3 Pu, out vec3 Pv) {\n"
-                               "    P = vec3(uv, 0.0); Pu = vec3(1.0, 0.0, 0.0); Pv = vec3(0.0, 1.0, 0.0);\n}\n");
+                               "    P = vec3(uv, 0.0); Pu = vec3(1.0, 0.0, 0.0); Pv = vec3(0.0, 1.0, 0.0);\n}\n"
+                               "#define LANCER_IMPLICIT_SURFACES 1\n#include \"interval.glsl\"\n"
+                               "float implicit_eval(uint s, vec3 p, vec3 d, out float df) { df = dot(p, d); return dot(p, p) - 1.0; }\n"
+                               "vec3 implicit_gradient(uint s, vec3 p) { return p; }\n"
+                               "void implicit_interval(uint s, vec3 o, vec3 d, vec2 t, out vec2 f, out vec2 df) {\n"
+                               "    f = vec2(t.x - 1.0, t.y); df = vec2(1.0);\n}\n");
         return disk(name);
     };
 }

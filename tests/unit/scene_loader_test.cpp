@@ -89,6 +89,34 @@ TEST(SceneLoader, EveryShippedSceneLoads) {
     EXPECT_GE(count, 3);
 }
 
+TEST(SceneLoader, ReadsAnImplicitSurface) {
+    Scene s = test::scene_from_text(R"toml(
+        [camera]
+        eye = [0, 0, -5]
+        look_at = [0, 0, 0]
+        [[object]]
+        type = "implicit"
+        function = "(x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4*R^2*(x^2 + z^2)"
+        params = { R = 1, r = 0.35 }
+        box = { min = [-1.4, -0.4, -1.4], max = [1.4, 0.4, 1.4] }
+        transform = { scale = 2, translate = [0, 1, 0] }
+        [[object]]
+        type = "implicit"
+        function = "sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)"
+        box = { min = [-3, -3, -3], max = [3, 3, 3] }
+    )toml");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const auto& torus = std::get<ImplicitObject>(s.objects[0].shape).surface;
+    EXPECT_EQ(torus.degree(), 4);
+    EXPECT_EQ(torus.box_lo, glm::dvec3(-1.4, -0.4, -1.4));
+    EXPECT_EQ(torus.box_hi, glm::dvec3(1.4, 0.4, 1.4));
+    EXPECT_EQ(glm::dvec3(torus.to_world * glm::dvec4(1, 0, 0, 1)), glm::dvec3(2, 1, 0));
+    EXPECT_EQ(glm::dvec3(torus.to_local * glm::dvec4(2, 1, 0, 1)), glm::dvec3(1, 0, 0));
+    const auto& gyroid = std::get<ImplicitObject>(s.objects[1].shape).surface;
+    EXPECT_FALSE(gyroid.polynomial);
+    EXPECT_EQ(gyroid.degree(), 0);
+}
+
 TEST(SceneLoader, UnreadableFileIsAUserError) {
     EXPECT_THROW(load_scene("/nonexistent/scene.toml"), UserError);
     EXPECT_THROW(load_scene(test::source_path("scenes")), UserError);  // a directory

@@ -10,6 +10,7 @@
 
 #include "cpu/ray.hpp"
 #include "surface/bezier_patch.hpp"
+#include "surface/implicit_surface.hpp"
 #include "surface/parametric_surface.hpp"
 
 namespace lancer::cpu {
@@ -31,6 +32,20 @@ std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const R
 inline std::optional<SurfaceHit> intersect(const ParametricObject& p, const Ray& ray, double t_min, double t_max) {
     return intersect(p.surface, ray, t_min, t_max);
 }
+
+// Implicit surfaces f(x, y, z) = 0 (implicit.cpp): every root along the ray inside the box with t
+// in (t_min, t_max), nearest first. A Simple root is proved to lie within 1e-10 of the box's
+// diagonal (along the ray) of a zero of f where f changes sign; a Touching one is where the ray
+// touches the surface or crosses a singular point to within rounding (nothing could be proved,
+// but f's enclosure there contains 0). intersect() reports the nearest, with the normal from
+// the gradient (implicit_normal) and uv the hit's x and y across the box.
+enum class RootKind { Simple, Touching };
+struct ImplicitRoot {
+    double t;
+    RootKind kind;
+};
+std::vector<ImplicitRoot> implicit_roots(const surface::ImplicitSurface& s, const Ray& ray, double t_min, double t_max);
+std::optional<SurfaceHit> intersect(const ImplicitObject& o, const Ray& ray, double t_min, double t_max);
 
 // Texture coordinates (u, v) at a surface point p, for shapes whose intersection does not already
 // give them (docs/scene-format.md, "Texture mapping"). Rectangles, Bezier and parametric

@@ -79,30 +79,49 @@ std::optional<Restriction> restriction_of(const Node& n, std::string_view name) 
     }
 }
 
-struct Box {
-    Interval u, v;
-};
+using Box = std::vector<Interval>;
 
-// A 9 x 9 grid including the edges, plus interior points of a Halton sequence.
-std::vector<std::pair<double, double>> sample_points(const Interval& u, const Interval& v) {
-    std::vector<std::pair<double, double>> points;
-    for (int i = 0; i <= 8; ++i)
-        for (int j = 0; j <= 8; ++j) points.emplace_back(u.lo + u.width() * i / 8.0, v.lo + v.width() * j / 8.0);
-    auto halton = [](int index, int base) {
+bool usable(std::span<const Interval> domain) {
+    for (const Interval& x : domain)
+        if (x.is_empty() || !x.is_finite()) return false;
+    return true;
+}
+
+// A grid including the edges (9 x 9 over a rectangle, 5 x 5 x 5 over a box), plus 32 interior
+// points of a Halton sequence.
+std::vector<std::vector<double>> sample_points(const Box& box) {
+    const int dims = static_cast<int>(box.size());
+    const int steps = dims <= 2 ? 8 : 4;
+    std::vector<std::vector<double>> points;
+    std::vector<int> index(dims, 0);
+    for (;;) {
+        std::vector<double> p(dims);
+        for (int k = 0; k < dims; ++k) p[k] = box[k].lo + box[k].width() * index[k] / steps;
+        points.push_back(std::move(p));
+        int k = 0;
+        while (k < dims && ++index[k] > steps) index[k++] = 0;
+        if (k == dims) break;
+    }
+    auto halton = [](int i, int base) {
         double f = 1.0, r = 0.0;
-        for (int i = index; i > 0; i /= base) r += (f /= base) * (i % base);
+        for (; i > 0; i /= base) r += (f /= base) * (i % base);
         return r;
     };
-    for (int k = 1; k <= 32; ++k) points.emplace_back(u.lo + u.width() * halton(k, 2), v.lo + v.width() * halton(k, 3));
+    constexpr int kBases[] = {2, 3, 5, 7};
+    for (int i = 1; i <= 32; ++i) {
+        std::vector<double> p(dims);
+        for (int k = 0; k < dims; ++k) p[k] = box[k].lo + box[k].width() * halton(i, kBases[k % 4]);
+        points.push_back(std::move(p));
+    }
     return points;
 }
 
 class DomainChecker {
 public:
-    DomainChecker(const Expr& expr, Box domain) : expr_(expr), domain_(domain) {
-        for (auto [u, v] : sample_points(domain.u, domain.v)) {
+    DomainChecker(const Expr& expr, Box domain) : expr_(expr), domain_(std::move(domain)) {
+        for (const auto& point : sample_points(domain_)) {
             std::vector<double> values(expr.nodes.size());
-            evaluate_nodes(expr.nodes.data(), static_cast<int>(values.size()), u, v, values.data());
+            evaluate_nodes(expr.nodes.data(), static_cast<int>(values.size()), point.data(), values.data());
             samples_.push_back(std::move(values));
         }
     }
@@ -149,35 +168,44 @@ private:
     }
 
     bool proved_invalid_everywhere(const Restriction& r) const {
+        const int dims = static_cast<int>(domain_.size());
         std::vector<Box> boxes{domain_};
-        std::vector<Dual<Interval>> ivalues(r.operand + 1);
-        std::vector<double> dvalues(r.operand + 1);
+        std::vector<Dual<Interval>> ivalues(r.operand + 1), variables(dims);
+        std::vector<double> dvalues(r.operand + 1), centre(dims);
+        std::vector<double> change(dims);
         for (int budget = kBoxBudget; !boxes.empty(); --budget) {
             if (budget == 0) return false;
             Box box = boxes.back();
             boxes.pop_back();
-            evaluate_nodes(expr_.nodes.data(), r.operand + 1, Dual<Interval>::variable_u(box.u),
-                           Dual<Interval>::variable_v(box.v), ivalues.data());
-            const Dual<Interval>& x = ivalues[r.operand];
-            if (x.v.is_empty() || r.proved_invalid(x.v)) continue;
-            double uc = box.u.mid(), vc = box.v.mid();
-            evaluate_nodes(expr_.nodes.data(), r.operand + 1, uc, vc, dvalues.data());
+            // One pass per variable, each carrying the derivative along that variable only.
+            Interval value;
+            for (int k = 0; k < dims; ++k) {
+                for (int j = 0; j < dims; ++j) variables[j] = {box[j], Interval(j == k ? 1.0 : 0.0), Interval(0.0)};
+                evaluate_nodes(expr_.nodes.data(), r.operand + 1, variables.data(), ivalues.data());
+                value = ivalues[r.operand].v;
+                change[k] = ivalues[r.operand].du.mag() * box[k].width();
+            }
+            if (value.is_empty() || r.proved_invalid(value)) continue;
+            for (int k = 0; k < dims; ++k) centre[k] = box[k].mid();
+            evaluate_nodes(expr_.nodes.data(), r.operand + 1, centre.data(), dvalues.data());
             double xc = dvalues[r.operand];
             if (!std::isnan(xc) && !r.invalid(xc)) return false;
             // Rounding keeps intervals from proving a box that touches the edge of a domain
             // (atanh(1 + u) at u = 0 is atanh(1)): where the operand is constant to 1e-12 on the
             // box, the box counts as its centre.
-            if (x.v.width() <= kFlat * (1.0 + std::abs(xc))) continue;
+            if (value.width() <= kFlat * (1.0 + std::abs(xc))) continue;
             // Split across the direction the operand changes along (u - 0.5 never needs a v split).
-            double change_u = x.du.mag() * box.u.width(), change_v = x.dv.mag() * box.v.width();
-            if (!(change_u == change_u && change_v == change_v)) change_u = change_v = 1.0;
-            if (change_u >= change_v) {
-                boxes.push_back({{box.u.lo, uc}, box.v});
-                boxes.push_back({{uc, box.u.hi}, box.v});
-            } else {
-                boxes.push_back({box.u, {box.v.lo, vc}});
-                boxes.push_back({box.u, {vc, box.v.hi}});
-            }
+            bool nan = false;
+            for (double c : change) nan |= c != c;
+            int split = 0;
+            if (!nan)
+                for (int k = 1; k < dims; ++k)
+                    if (change[k] > change[split]) split = k;
+            Box low = box, high = box;
+            low[split].hi = centre[split];
+            high[split].lo = centre[split];
+            boxes.push_back(std::move(low));
+            boxes.push_back(std::move(high));
         }
         return true;
     }
@@ -189,15 +217,14 @@ private:
 
 }  // namespace
 
-std::optional<ExprError> where_non_finite_starts(const Expr& expr, Interval u, Interval v) {
-    if (u.is_empty() || v.is_empty() || !u.is_finite() || !v.is_finite()) return std::nullopt;
-    return DomainChecker(expr, {u, v}).non_finite_origin();
+std::optional<ExprError> where_non_finite_starts(const Expr& expr, std::span<const Interval> domain) {
+    if (!usable(domain)) return std::nullopt;
+    return DomainChecker(expr, Box(domain.begin(), domain.end())).non_finite_origin();
 }
 
-void check_expression_domain(const Expr& expr, Interval u, Interval v) {
-    if (u.is_empty() || v.is_empty() || !u.is_finite() || !v.is_finite())
-        throw UserError("the (u, v) domain must be finite and not empty");
-    DomainChecker(expr, {u, v}).check();
+void check_expression_domain(const Expr& expr, std::span<const Interval> domain) {
+    if (!usable(domain)) throw UserError("the domain must be finite and not empty");
+    DomainChecker(expr, Box(domain.begin(), domain.end())).check();
 }
 
 }  // namespace lancer::surface

@@ -18,15 +18,14 @@ struct Lift<Dual<T>> {
     static Dual<T> constant(double c) { return Dual<T>::constant(c); }
 };
 
-// The value of node n, given the values of all earlier nodes.
+// The value of node n, given the values of all earlier nodes and of the variables.
 template <class T>
-T apply_node(const Node& n, const T* values, const T& u, const T& v) {
+T apply_node(const Node& n, const T* values, const T* variables) {
     const T* a = n.a >= 0 ? &values[n.a] : nullptr;
     const T* b = n.b >= 0 ? &values[n.b] : nullptr;
     switch (n.op) {
         case Op::Constant: return Lift<T>::constant(n.value);
-        case Op::U: return u;
-        case Op::V: return v;
+        case Op::Variable: return variables[static_cast<int>(n.value)];
         case Op::Add: return *a + *b;
         case Op::Sub: return *a - *b;
         case Op::Mul: return *a * *b;
@@ -67,8 +66,8 @@ T apply_node(const Node& n, const T* values, const T& u, const T& v) {
 
 // Evaluates nodes[0..count) into values[0..count).
 template <class T>
-void evaluate_nodes(const Node* nodes, int count, const T& u, const T& v, T* values) {
-    for (int i = 0; i < count; ++i) values[i] = apply_node(nodes[i], values, u, v);
+void evaluate_nodes(const Node* nodes, int count, const T* variables, T* values) {
+    for (int i = 0; i < count; ++i) values[i] = apply_node(nodes[i], values, variables);
 }
 
 }  // namespace lancer::surface

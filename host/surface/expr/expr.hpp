@@ -1,5 +1,6 @@
 #pragma once
-// A parsed expression in u and v: a flat list of nodes in post-order (every node after its
+// A parsed expression in its variables (u and v of a parametric surface; x, y and z of an implicit
+// one): a flat list of nodes in post-order (every node after its
 // operands, the root last), so that evaluation is one loop and the GLSL emitter can print one
 // SSA temporary per node. Every node remembers the column of its operator, function name or
 // literal in the source text, for error messages.
@@ -13,8 +14,7 @@ namespace lancer::surface {
 
 enum class Op : std::uint8_t {
     Constant,  // `value`
-    U,
-    V,
+    Variable,  // variable number `value` (0, 1, 2) in the order of the parser's variable names
     Add,
     Sub,
     Mul,

@@ -34,10 +34,16 @@ bool is_name(std::string_view s) {
     return true;
 }
 
-void check_constants(const Constants& constants) {
+bool is_variable(std::string_view name, Variables variables) {
+    for (std::string_view v : variables)
+        if (v == name) return true;
+    return false;
+}
+
+void check_constants(const Constants& constants, Variables variables) {
     for (const auto& [name, value] : constants) {
         if (!is_name(name)) throw UserError(fmt::format("parameter name '{}' is not a name (letters, digits, '_')", name));
-        if (name == "u" || name == "v")
+        if (is_variable(name, variables))
             throw UserError(fmt::format("parameter '{}' would hide the variable {}", name, name));
         for (const auto& builtin : kBuiltinConstants)
             if (name == builtin.name) throw UserError(fmt::format("parameter '{}' would hide the constant {}", name, name));
@@ -48,7 +54,8 @@ void check_constants(const Constants& constants) {
 
 class Parser {
 public:
-    Parser(std::string_view text, const Constants& constants) : constants_(constants), tokens_(tokenize(text)) {}
+    Parser(std::string_view text, const Constants& constants, Variables variables)
+        : constants_(constants), variables_(variables), tokens_(tokenize(text)) {}
 
     Expr parse() {
         if (peek().kind == TokenKind::End) throw ExprError("empty expression", 0);
@@ -75,7 +82,7 @@ private:
         std::optional<double> value;
         if (node.op == Op::Constant) {
             value = node.value;
-        } else if (node.op != Op::U && node.op != Op::V) {
+        } else if (node.op != Op::Variable) {
             bool a_constant = node.a < 0 || constant_[node.a].has_value();
             bool b_constant = node.b < 0 || constant_[node.b].has_value();
             if (a_constant && b_constant) {
@@ -83,7 +90,7 @@ private:
                 Node local = node;
                 local.a = node.a >= 0 ? 0 : -1;
                 local.b = node.b >= 0 ? 1 : -1;
-                value = apply_node<double>(local, operands, 0.0, 0.0);
+                value = apply_node<double>(local, operands, nullptr);
             }
         }
         nodes_.push_back(node);
@@ -185,7 +192,8 @@ private:
     }
 
     std::set<std::string, std::less<>> variable_names() const {
-        std::set<std::string, std::less<>> names{"u", "v"};
+        std::set<std::string, std::less<>> names;
+        for (std::string_view v : variables_) names.emplace(v);
         for (const auto& builtin : kBuiltinConstants) names.emplace(builtin.name);
         for (const auto& [constant, value] : constants_) names.insert(constant);
         return names;
@@ -193,8 +201,8 @@ private:
 
     int name(const Token& token) {
         std::string_view n = token.text;
-        if (n == "u") return add({Op::U, -1, -1, 0.0, token.column});
-        if (n == "v") return add({Op::V, -1, -1, 0.0, token.column});
+        for (std::size_t i = 0; i < variables_.size(); ++i)
+            if (n == variables_[i]) return add({Op::Variable, -1, -1, static_cast<double>(i), token.column});
         for (const auto& builtin : kBuiltinConstants)
             if (n == builtin.name) return add({Op::Constant, -1, -1, builtin.value, token.column});
         if (auto found = constants_.find(n); found != constants_.end())
@@ -204,7 +212,7 @@ private:
         // A one-letter name is within one edit of every other one; suggesting there is noise.
         std::string known = "pi, e";
         for (const auto& [constant, value] : constants_) known += ", " + constant;
-        std::string listed = " (the variables are u and v; constants: " + known + ")";
+        std::string listed = fmt::format(" (the variables are {}; constants: {})", list_variables(variables_), known);
         std::string ending = n.size() >= 2 ? did_you_mean(n, variable_names(), listed) : listed;
         throw ExprError(fmt::format("unknown variable '{}'", n) + ending, token.column);
     }
@@ -213,7 +221,8 @@ private:
         std::string_view n = token.text;
         const FunctionInfo* function = find_function(n);
         if (!function) {
-            if (n == "u" || n == "v") throw ExprError(fmt::format("'{}' is a variable, not a function", n), token.column);
+            if (is_variable(n, variables_))
+                throw ExprError(fmt::format("'{}' is a variable, not a function", n), token.column);
             if (variable_names().count(n))
                 throw ExprError(fmt::format("'{}' is a constant, not a function", n), token.column);
             std::set<std::string, std::less<>> names;
@@ -236,6 +245,7 @@ private:
     }
 
     const Constants& constants_;
+    Variables variables_;
     std::vector<Token> tokens_;
     std::size_t position_ = 0;
     std::vector<Node> nodes_;
@@ -245,13 +255,22 @@ private:
 
 }  // namespace
 
-Expr parse_expression(std::string_view text, const Constants& constants) {
-    check_constants(constants);
+std::string list_variables(Variables variables) {
+    std::string out;
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+        if (i > 0) out += i + 1 == variables.size() ? " and " : ", ";
+        out += variables[i];
+    }
+    return out;
+}
+
+Expr parse_expression(std::string_view text, const Constants& constants, Variables variables) {
+    check_constants(constants, variables);
     if (text.size() > static_cast<std::size_t>(kMaxExpressionLength))
         throw ExprError(fmt::format("expression is too long ({} characters; the limit is {})", text.size(),
                                     kMaxExpressionLength),
                         kMaxExpressionLength);
-    return Parser(text, constants).parse();
+    return Parser(text, constants, variables).parse();
 }
 
 }  // namespace lancer::surface

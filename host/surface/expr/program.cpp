@@ -53,12 +53,12 @@ private:
         if (n.a >= 0) n.a = map[n.a];
         // The exponent of PowInt/PowConst is already in `value`.
         n.b = (n.op == Op::PowInt || n.op == Op::PowConst || n.b < 0) ? -1 : map[n.b];
-        if (n.op != Op::U && n.op != Op::V && n.op != Op::Constant && is_constant(n.a) && is_constant(n.b)) {
+        if (n.op != Op::Variable && n.op != Op::Constant && is_constant(n.a) && is_constant(n.b)) {
             double operands[2] = {n.a >= 0 ? nodes_[n.a].value : 0.0, n.b >= 0 ? nodes_[n.b].value : 0.0};
             Node local = n;
             local.a = n.a >= 0 ? 0 : -1;
             local.b = n.b >= 0 ? 1 : -1;
-            double folded = apply_node<double>(local, operands, 0.0, 0.0);
+            double folded = apply_node<double>(local, operands, nullptr);
             // A non-finite constant stays an operation, so that intervals still see its domain.
             if (std::isfinite(folded)) return add_constant(folded, n.column);
         }
@@ -96,22 +96,29 @@ Program compile_program(std::span<const Expr* const> expressions) {
 
 int count_operations(const Program& program) {
     int count = 0;
-    for (const Node& n : program.nodes) count += n.op != Op::Constant && n.op != Op::U && n.op != Op::V;
+    for (const Node& n : program.nodes) count += n.op != Op::Constant && n.op != Op::Variable;
     return count;
 }
 
 template <class T>
 const T* evaluate_all_nodes(const Program& program, const T& u, const T& v) {
+    const T uv[] = {u, v};
     T* values = scratch_values<T>(program.nodes.size());
-    evaluate_nodes(program.nodes.data(), static_cast<int>(program.nodes.size()), u, v, values);
+    evaluate_nodes(program.nodes.data(), static_cast<int>(program.nodes.size()), uv, values);
     return values;
 }
 
 template <class T>
-void evaluate_program(const Program& program, const T& u, const T& v, T* out) {
+void evaluate_program(const Program& program, std::span<const T> variables, T* out) {
     T* values = scratch_values<T>(program.nodes.size());
-    evaluate_nodes(program.nodes.data(), static_cast<int>(program.nodes.size()), u, v, values);
+    evaluate_nodes(program.nodes.data(), static_cast<int>(program.nodes.size()), variables.data(), values);
     for (std::size_t i = 0; i < program.outputs.size(); ++i) out[i] = values[program.outputs[i]];
+}
+
+template <class T>
+void evaluate_program(const Program& program, const T& u, const T& v, T* out) {
+    const T uv[] = {u, v};
+    evaluate_program<T>(program, std::span<const T>(uv), out);
 }
 
 namespace {
@@ -144,9 +151,14 @@ bool proved_smooth(const Node& n, const Dual<Interval>* values) {
 }  // namespace
 
 bool evaluate_program_on_box(const Program& program, const Interval& u, const Interval& v, Dual<Interval>* out) {
+    const Dual<Interval> uv[] = {Dual<Interval>::variable_u(u), Dual<Interval>::variable_v(v)};
+    return evaluate_program_on_box(program, std::span<const Dual<Interval>>(uv), out);
+}
+
+bool evaluate_program_on_box(const Program& program, std::span<const Dual<Interval>> variables, Dual<Interval>* out) {
     const int count = static_cast<int>(program.nodes.size());
     Dual<Interval>* values = scratch_values<Dual<Interval>>(program.nodes.size());
-    evaluate_nodes(program.nodes.data(), count, Dual<Interval>::variable_u(u), Dual<Interval>::variable_v(v), values);
+    evaluate_nodes(program.nodes.data(), count, variables.data(), values);
     for (std::size_t i = 0; i < program.outputs.size(); ++i) out[i] = values[program.outputs[i]];
     for (int i = 0; i < count; ++i) {
         const Node& n = program.nodes[i];
@@ -160,6 +172,10 @@ template void evaluate_program(const Program&, const double&, const double&, dou
 template void evaluate_program(const Program&, const Interval&, const Interval&, Interval*);
 template void evaluate_program(const Program&, const Dual<double>&, const Dual<double>&, Dual<double>*);
 template void evaluate_program(const Program&, const Dual<Interval>&, const Dual<Interval>&, Dual<Interval>*);
+template void evaluate_program(const Program&, std::span<const double>, double*);
+template void evaluate_program(const Program&, std::span<const Interval>, Interval*);
+template void evaluate_program(const Program&, std::span<const Dual<double>>, Dual<double>*);
+template void evaluate_program(const Program&, std::span<const Dual<Interval>>, Dual<Interval>*);
 template void evaluate_program(const Program&, const Dual<GpuFloat>&, const Dual<GpuFloat>&, Dual<GpuFloat>*);
 template const double* evaluate_all_nodes(const Program&, const double&, const double&);
 template const Interval* evaluate_all_nodes(const Program&, const Interval&, const Interval&);

@@ -21,19 +21,26 @@ struct Program {
 
 Program compile_program(std::span<const Expr* const> expressions);
 
-// The operations a program performs per evaluation (its nodes less constants, u and v): the
-// measure of its cost on the GPU, where each becomes a few lines of the tracer that the driver
-// compiles, and that run at every Newton step of every ray.
+// The operations a program performs per evaluation (its nodes less constants and variables):
+// the measure of its cost on the GPU, where each becomes a few lines of the tracer that the
+// driver compiles, and that run at every Newton step of every ray.
 int count_operations(const Program& program);
 
-// Evaluates every output: out[i] is the value of expressions[i].
+// Evaluates every output: out[i] is the value of expressions[i]. The first form is for
+// expressions in u and v; the second takes the values of any number of variables.
 template <class T>
 void evaluate_program(const Program& program, const T& u, const T& v, T* out);
+template <class T>
+void evaluate_program(const Program& program, std::span<const T> variables, T* out);
 
 extern template void evaluate_program(const Program&, const double&, const double&, double*);
 extern template void evaluate_program(const Program&, const Interval&, const Interval&, Interval*);
 extern template void evaluate_program(const Program&, const Dual<double>&, const Dual<double>&, Dual<double>*);
 extern template void evaluate_program(const Program&, const Dual<Interval>&, const Dual<Interval>&, Dual<Interval>*);
+extern template void evaluate_program(const Program&, std::span<const double>, double*);
+extern template void evaluate_program(const Program&, std::span<const Interval>, Interval*);
+extern template void evaluate_program(const Program&, std::span<const Dual<double>>, Dual<double>*);
+extern template void evaluate_program(const Program&, std::span<const Dual<Interval>>, Dual<Interval>*);
 struct GpuFloat;
 extern template void evaluate_program(const Program&, const Dual<GpuFloat>&, const Dual<GpuFloat>&, Dual<GpuFloat>*);
 
@@ -47,5 +54,8 @@ const T* evaluate_all_nodes(const Program& program, const T& u, const T& v);
 // mean-value form and Krawczyk's test are valid. (Where it is not, the box may straddle the edge
 // of an operation's domain or atan2's branch cut, and derivative bounds say nothing across it.)
 bool evaluate_program_on_box(const Program& program, const Interval& u, const Interval& v, Dual<Interval>* out);
+// The same for any number of variables, given as Dual<Interval>s (each with the derivatives the
+// caller wants carried: the box's own directions, or a ray's).
+bool evaluate_program_on_box(const Program& program, std::span<const Dual<Interval>> variables, Dual<Interval>* out);
 
 }  // namespace lancer::surface

@@ -1,0 +1,25 @@
+// Generated from scenes/barth.toml by bench/toml_to_pov.py. Do not edit.
+#version 3.7;
+global_settings { assumed_gamma 1.0 ambient_light rgb <1, 1, 1> max_trace_level 6 adc_bailout 1/1024 }
+camera { location <0, 3.4, -7> sky <0, 1, 0> look_at <0, 1.45, 0>
+         right x * image_width / image_height angle 65.810435 }
+
+background { rgb <0.45, 0.55, 0.75> }
+light_source { <-5, 8, -6> color rgb <0.8, 0.8, 0.8> }
+light_source { <6, 4, -3> color rgb <0.3, 0.3, 0.35> }
+
+polygon { 5, <-6, 0, -6>, <6, 0, -6>, <6, 0, 6>, <-6, 0, 6>, <-6, 0, -6>
+  pigment { checker rgb <0.95, 0.95, 0.95>, rgb <0.3, 0.32, 0.36> scale 0.5 }
+  finish { ambient 0.09 diffuse 0.72 phong 0 phong_size 40 reflection 0.1 }
+  
+}
+
+isosurface {
+  function { (((((4) * (((2.6180339887498949) * pow(x, (2))) - pow(y, (2)))) * (((2.6180339887498949) * pow(y, (2))) - pow(z, (2)))) * (((2.6180339887498949) * pow(z, (2))) - pow(x, (2)))) - ((4.2360679774997898) * pow((((pow(x, (2)) + pow(y, (2))) + pow(z, (2))) - (1)), (2)))) }
+  contained_by { box { <-1.3, -1.3, -1.3>, <1.3, 1.3, 1.3> } }
+  accuracy 0.001 max_gradient 434.327 open
+  pigment { rgb <0.55, 0.4, 0.9> }
+  finish { ambient 0.1 diffuse 0.65 phong 0.6 phong_size 50 reflection 0 }
+  scale 1.05 rotate <-20, 30, 0> translate <0, 1.45, 0>
+}
+

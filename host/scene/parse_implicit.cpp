@@ -1,0 +1,105 @@
+// [[object]] type = "implicit": the surface f(x, y, z) = 0, clipped to a box of its own
+// coordinates, with named constants, a transform and a material:
+//   function = "(x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4*R^2*(x^2 + z^2)"
+//   box = { min = [-1.4, -0.4, -1.4], max = [1.4, 0.4, 1.4] }   params = { R = 1, r = 0.35 }
+// Errors inside the function point at their exact column in the scene file; a function that is
+// undefined or infinite everywhere in the box, a polynomial above the degree limit, an empty box
+// a constant beyond float's range (the GPU evaluates f in float), a function above the
+// operation limit and a surface that provably does not meet its box are errors too.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "scene/expression_keys.hpp"
+#include "scene/limits.hpp"
+#include "scene/parse_surfaces.hpp"
+#include "scene/transform.hpp"
+#include "surface/expr/domain_check.hpp"
+#include "surface/expr/evaluate.hpp"
+#include "surface/float_check.hpp"
+
+namespace lancer {
+namespace {
+
+void read_box(TableReader& object, surface::ImplicitSurface& s) {
+    const toml::table* box = object.table("box");
+    if (!box)
+        throw SceneError(object.location(), object.what() + ": missing required key 'box' (the box the surface is "
+                                                             "clipped to, in its own coordinates, e.g. box = { min = "
+                                                             "[-1, -1, -1], max = [1, 1, 1] })");
+    TableReader b(*box, object.file(), object.what() + " box");
+    s.box_lo = b.required_vec3("min");
+    s.box_hi = b.required_vec3("max");
+    b.finish();
+    for (int i = 0; i < 3; ++i)
+        if (!(s.box_lo[i] < s.box_hi[i]))
+            b.fail("max", fmt::format("{}: the box is empty: max must be greater than min on every axis ({}: {:g} is "
+                                      "not greater than {:g})",
+                                      object.what(), "xyz"[i], s.box_hi[i], s.box_lo[i]));
+}
+
+// Where f is undefined or infinite everywhere in the box, the error is at the operation that
+// makes it so.
+void check_defined(const toml::node& node, const std::string& file, const surface::ImplicitSurface& s) {
+    const surface::Interval box[] = {{s.box_lo.x, s.box_hi.x}, {s.box_lo.y, s.box_hi.y}, {s.box_lo.z, s.box_hi.z}};
+    try {
+        surface::check_expression_domain(s.f, box);
+    } catch (const surface::ExprError& e) {
+        throw SceneError(column_in_string(node, file, e.column), e.what());
+    }
+    if (auto origin = surface::where_non_finite_starts(s.f, box))
+        throw SceneError(column_in_string(node, file, origin->column), origin->what());
+    try {
+        surface::check_float_constants(s.f);  // the GPU evaluates f in float
+    } catch (const surface::ExprError& e) {
+        throw SceneError(column_in_string(node, file, e.column), e.what());
+    }
+}
+
+}  // namespace
+
+Shape read_implicit(TableReader& t) {
+    surface::Constants constants = read_params(t);
+    ImplicitObject object;
+    surface::ImplicitSurface& s = object.surface;
+    const toml::node* node = t.node("function");
+    if (!node)
+        throw SceneError(t.location(), t.what() + ": missing required key 'function' (an expression in x, y and z: "
+                                                  "the surface is where it is 0)");
+    s.f = parse_expression_key(*node, t.file(), "function", constants, surface::kImplicitVariables);
+    read_box(t, s);
+    check_defined(*node, t.file(), s);
+    try {
+        s.polynomial = surface::expand_polynomial(s.f);
+    } catch (const surface::ExprError& e) {
+        throw SceneError(column_in_string(*node, t.file(), e.column), e.what());
+    }
+    const surface::Expr* f[] = {&s.f};
+    s.program = surface::compile_program(f);
+    // Cost in operations after simplification, as for parametric surfaces: f becomes interval
+    // and Newton code in the GPU's tracer, run at every step of every ray.
+    if (const int operations = surface::count_operations(s.program); operations > limits::kMaxSurfaceOperations)
+        t.fail("function", fmt::format("the function takes {} operations (after simplification); the limit is {}: it "
+                                       "becomes code that the GPU's driver compiles and runs at every step of every ray",
+                                       operations, limits::kMaxSurfaceOperations));
+    if (s.polynomial && s.polynomial->degree() <= 0) {
+        double c = s.polynomial->terms.empty() ? 0.0 : s.polynomial->terms.front().coefficient;
+        t.fail("function", t.what() + (c == 0.0 ? ": the function is 0 everywhere: the surface would fill its whole box"
+                                                : fmt::format(": the function is the constant {:g}: it is 0 nowhere", c)));
+    }
+    s.place(read_transform(t));
+    if (surface::proved_without_zero(s)) {
+        dvec3 centre = 0.5 * (s.box_lo + s.box_hi);
+        const double xyz[] = {centre.x, centre.y, centre.z};
+        double value = surface::evaluate<double>(s.f, xyz);
+        t.fail("function", fmt::format("{}: the function is never 0 in the box (it keeps one sign there; {:g} at the "
+                                       "box's centre): there is no surface to draw",
+                                       t.what(), value));
+    }
+    dvec3 lo, hi;
+    surface::implicit_world_bounds(s, lo, hi);
+    check_world_extent(t, t.has("transform") ? "transform" : "box", lo, hi);
+    return object;
+}
+
+}  // namespace lancer

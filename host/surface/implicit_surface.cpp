@@ -1,0 +1,89 @@
+#include "surface/implicit_surface.hpp"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+namespace lancer::surface {
+namespace {
+
+bool regular(const dvec3& g) {
+    double length = glm::length(g);
+    return std::isfinite(length) && length > 0.0;
+}
+
+}  // namespace
+
+void ImplicitSurface::place(const glm::dmat4& m) {
+    to_world = m;
+    to_local = glm::inverse(m);
+}
+
+ImplicitPoint evaluate_implicit(const ImplicitSurface& s, const dvec3& p) {
+    using D = Dual<double>;
+    // Dual carries two partials: x and y in one pass, z in a second.
+    const D xy[] = {D{p.x, 1.0, 0.0}, D{p.y, 0.0, 1.0}, D::constant(p.z)};
+    const D z[] = {D::constant(p.x), D::constant(p.y), D{p.z, 1.0, 0.0}};
+    D a, b;
+    evaluate_program<D>(s.program, xy, &a);
+    evaluate_program<D>(s.program, z, &b);
+    return {a.v, {a.du, a.dv, b.du}};
+}
+
+dvec3 implicit_normal(const ImplicitSurface& s, const dvec3& world) {
+    const glm::dmat3 normal_map = glm::transpose(glm::dmat3(s.to_local));
+    const dvec3 local = dvec3(s.to_local * glm::dvec4(world, 1.0));
+    const dvec3 diagonal = (s.box_hi - s.box_lo) / std::sqrt(3.0);
+    for (double step : {0.0, 1e-9, 1e-7, 1e-5, 1e-3, 1e-2}) {
+        dvec3 n = normal_map * evaluate_implicit(s, local + step * diagonal).gradient;
+        if (regular(n)) return glm::normalize(n);
+    }
+    return {0.0, 0.0, 1.0};
+}
+
+bool proved_without_zero(const ImplicitSurface& s, int budget) {
+    struct Box {
+        Interval axis[3];
+    };
+    std::vector<Box> boxes{{{{s.box_lo.x, s.box_hi.x}, {s.box_lo.y, s.box_hi.y}, {s.box_lo.z, s.box_hi.z}}}};
+    const dvec3 size = s.box_hi - s.box_lo;
+    while (!boxes.empty()) {
+        Box box = boxes.back();
+        boxes.pop_back();
+        Interval f;
+        evaluate_program<Interval>(s.program, box.axis, &f);
+        if (f.is_empty() || f.lo > 0.0 || f.hi < 0.0) continue;
+        if (--budget <= 0) return false;
+        int split = 0;
+        for (int k = 1; k < 3; ++k)
+            if (box.axis[k].width() / size[k] > box.axis[split].width() / size[split]) split = k;
+        Box low = box, high = box;
+        low.axis[split].hi = high.axis[split].lo = box.axis[split].mid();
+        boxes.push_back(low);
+        boxes.push_back(high);
+    }
+    return true;
+}
+
+glm::dvec2 implicit_texture_uv(const ImplicitSurface& s, const dvec3& p) {
+    return {(p.x - s.box_lo.x) / (s.box_hi.x - s.box_lo.x), (p.y - s.box_lo.y) / (s.box_hi.y - s.box_lo.y)};
+}
+
+void implicit_world_bounds(const ImplicitSurface& s, dvec3& lo, dvec3& hi) {
+    lo = dvec3(std::numeric_limits<double>::infinity());
+    hi = -lo;
+    for (int corner = 0; corner < 8; ++corner) {
+        dvec3 c((corner & 1) ? s.box_hi.x : s.box_lo.x, (corner & 2) ? s.box_hi.y : s.box_lo.y,
+                (corner & 4) ? s.box_hi.z : s.box_lo.z);
+        dvec3 w = dvec3(s.to_world * glm::dvec4(c, 1.0));
+        lo = glm::min(lo, w);
+        hi = glm::max(hi, w);
+    }
+}
+
+}  // namespace lancer::surface

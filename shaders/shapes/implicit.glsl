@@ -1,0 +1,165 @@
+// Ray / implicit surface f(x, y, z) = 0 inside its box, in float: interval arithmetic along the
+// ray isolates the nearest root, Newton's method finishes it. Twin of
+// host/cpu/shapes/implicit.cpp (companion matrix or interval Newton, in double precision).
+//
+// f, its derivative along the ray, its gradient and its interval enclosure are generated from
+// the expression (host/gpu/surface_codegen.cpp, shaders/interval.glsl), so no Lipschitz bound
+// is needed: a piece of the ray on which f's enclosure excludes 0 holds no root, however steep
+// f is. The ray is carried into the surface's coordinates (ImplicitInfo: world -> local; t is
+// kept), clipped to the box and re-origined at its entry. Pieces of it are examined nearest
+// first:
+//   * f's enclosure over the piece excludes 0: no root;
+//   * f' excludes 0 (f is monotone there): a root exactly when f changes sign between the ends,
+//     found by Newton's method kept inside the piece by bisection;
+//   * otherwise the piece is halved, down to IMPLICIT_EPS of the box's diagonal: a piece that
+//     short whose enclosure still holds 0 is where the ray touches the surface (a double root)
+//     or passes a singular point, to within float rounding. It is a hit, as on the CPU reference,
+//     if f is defined at its middle.
+// The generated functions are called from one place each here (and once more in Newton's
+// loop): lavapipe inlines every call into both call sites of trace_scene, so each extra call
+// would cost compile time and registers.
+#if LANCER_IMPLICIT_SURFACES
+
+const int IMPLICIT_STACK = 24;        // pieces waiting: halving to IMPLICIT_EPS takes at most 20 levels
+const int IMPLICIT_MAX_PIECES = 512;  // pieces examined per ray and surface; beyond, a miss
+const float IMPLICIT_EPS = 1e-6;      // of the box's diagonal, along the ray: a piece this short is a point
+const int IMPLICIT_NEWTON_STEPS = 24;
+const int IMPLICIT_MEAN_VALUE_AFTER = 16;  // pieces examined before the mean-value form narrows enclosures
+
+// The ray's origin and direction in the surface's coordinates.
+void implicit_local_ray(ImplicitInfo info, Ray ray, out vec3 o, out vec3 d) {
+    mat3 rows = mat3(info.row0.xyz, info.row1.xyz, info.row2.xyz);  // columns hold the map's rows
+    o = ray.origin * rows + vec3(info.row0.w, info.row1.w, info.row2.w);
+    d = ray.dir * rows;
+}
+
+// The root of f(o + s d) in [a, b], where f is monotone and fa = f(a), fb = f(b) differ in sign:
+// Newton's method from the regula falsi point, each step kept 1% of the bracket inside it (a
+// root at an end of the bracket, where rounding puts Newton's step just outside, then still
+// shrinks the bracket a hundredfold per step), the bracket shrinking around the root at every
+// step.
+float implicit_refine(uint surface, vec3 o, vec3 d, float a, float b, float fa, float fb) {
+    if (fa == 0.0) return a;
+    if (fb == 0.0) return b;
+    const float tolerance = 1e-7 * (b - a);
+    float x = a + (b - a) * clamp(fa / (fa - fb), 0.01, 0.99);
+    for (int k = 0; k < IMPLICIT_NEWTON_STEPS; ++k) {
+        float df;
+        float fx = implicit_eval(surface, o + x * d, d, df);
+        if (fx == 0.0 || isnan(fx)) return x;
+        if ((fx < 0.0) == (fa < 0.0)) {
+            a = x;
+            fa = fx;
+        } else {
+            b = x;
+        }
+        float step = fx / df;
+        if (abs(step) <= tolerance || b - a <= tolerance) return clamp(x - step, a, b);
+        float margin = 0.01 * (b - a);
+        x = isnan(step) ? 0.5 * (a + b) : clamp(x - step, a + margin, b - margin);
+    }
+    return x;
+}
+
+// f at two points of the ray: one call site, so the generated code is inlined once here.
+vec2 implicit_pair(uint surface, vec3 o, vec3 d, vec2 s) {
+    vec2 values;
+    for (int k = 0; k < 2; ++k) {
+        float unused;
+        values[k] = implicit_eval(surface, o + s[k] * d, d, unused);
+    }
+    return values;
+}
+
+bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit) {
+    uint surface = prim.data;
+    vec3 o, d;
+    implicit_local_ray(implicit_at(surface), ray, o, d);
+    vec3 lo = prim.p0.xyz, hi = prim.p1.xyz;
+    vec3 inv = safe_inverse(d);
+    vec3 ta = (lo - o) * inv, tb = (hi - o) * inv;
+    vec3 tn = min(ta, tb), tf = max(ta, tb);
+    float t0 = max(max(tn.x, tn.y), max(tn.z, t_min));
+    float t1 = min(min(tf.x, tf.y), min(tf.z, t_max));
+    if (!(t0 <= t1)) return false;
+    vec3 base = o + t0 * d;  // s = t - t0 from here
+    float eps = IMPLICIT_EPS * length(hi - lo) / length(d);
+
+    vec2 stack[IMPLICIT_STACK];
+    int waiting = 0;
+    vec2 piece = vec2(0.0, t1 - t0);
+    for (int n = 0; n < IMPLICIT_MAX_PIECES; ++n) {
+        // f's enclosure over the piece; after many pieces (a ray that skims the surface, where
+        // the natural enclosure stays wide) narrowed by the mean-value form f(m) + f'(piece)
+        // (piece - m), which costs a second enclosure, at the piece's middle.
+        float m = 0.5 * (piece.x + piece.y);
+        vec2 f = vec2(-I_INF, I_INF), df;
+        for (int k = 0; k < (n < IMPLICIT_MEAN_VALUE_AFTER ? 1 : 2); ++k) {
+            vec2 fk, dfk;
+            implicit_interval(surface, base, d, k == 0 ? piece : vec2(m), fk, dfk);
+            if (k == 0) {
+                df = dfk;
+                if (fk.x > 0.0 || fk.y < 0.0 || isinf(df.x) || isinf(df.y)) k = 1;  // settled, or no use
+            } else {
+                fk = i_add(fk, i_mul(df, piece - m));
+            }
+            f = vec2(max(f.x, fk.x), min(f.y, fk.y));
+        }
+        bool may_hold_root = f.x <= 0.0 && f.y >= 0.0;
+        bool monotone = df.x > 0.0 || df.y < 0.0;
+        bool point = piece.y - piece.x <= eps;
+        bool split = may_hold_root && !monotone && !point;
+        if (may_hold_root && (monotone || point)) {
+            // Monotone: a root exactly where f changes sign between the ends. A point: a touching
+            // (or singular) hit, where f is defined.
+            vec2 at = monotone ? piece : vec2(m);
+            vec2 v = implicit_pair(surface, base, d, at);
+            bool defined = !isnan(v.x) && !isnan(v.y);
+            bool hit = false;
+            float s = m;
+            if (monotone && defined) {
+                if (v.x == 0.0 || v.y == 0.0 || (v.x < 0.0) != (v.y < 0.0)) {
+                    s = implicit_refine(surface, base, d, piece.x, piece.y, v.x, v.y);
+                    hit = true;
+                }
+            } else if (point) {
+                hit = defined;
+            } else {
+                split = true;  // monotone, but f undefined at an end
+            }
+            if (hit) {
+                t_hit = t0 + s;
+                vec3 p = base + s * d;
+                uv_hit = (p.xy - lo.xy) / (hi.xy - lo.xy);
+                return true;
+            }
+        }
+        if (split && waiting < IMPLICIT_STACK) {
+            stack[waiting++] = vec2(m, piece.y);
+            piece = vec2(piece.x, m);
+            continue;
+        }
+        if (waiting == 0) return false;
+        piece = stack[--waiting];
+    }
+    return false;
+}
+
+// The unit normal at world point p: the gradient, carried to world space by the transpose of
+// the world -> local map. Where it vanishes (a singular point) the gradient a little away
+// along the box's diagonal is taken, as on the CPU reference.
+vec3 implicit_normal(Primitive prim, vec3 p) {
+    ImplicitInfo info = implicit_at(prim.data);
+    mat3 rows = mat3(info.row0.xyz, info.row1.xyz, info.row2.xyz);
+    vec3 local = p * rows + vec3(info.row0.w, info.row1.w, info.row2.w);
+    vec3 step = (prim.p1.xyz - prim.p0.xyz) * 0.57735027;
+    vec3 g = implicit_gradient(prim.data, local);
+    if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-5 * step);
+    if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-3 * step);
+    if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-2 * step);
+    vec3 n = rows * g;
+    float len = length(n);
+    return len > 0.0 && !isinf(len) ? n / len : vec3(0.0, 0.0, 1.0);
+}
+
+#endif
