@@ -16,6 +16,7 @@ struct Subcommand {
 Subcommand add_render_command(CLI::App& parent);
 Subcommand add_watch_command(CLI::App& parent);
 Subcommand add_diff_command(CLI::App& parent);
+Subcommand add_combine_command(CLI::App& parent);
 Subcommand add_view_command(CLI::App& parent);  // host/view/view_command.cpp
 
 int list_devices();

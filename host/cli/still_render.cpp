@@ -31,13 +31,17 @@ int render_still(const RenderOptions& options, const Scene& scene, const std::st
         throw Interrupted(interrupts.signal_number(), "'" + output + "' was not written");
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    write_png(output, to_srgb8(image));
+    const ExrInfo info = image_info(scene);
+    write_image(output, image, info);
 
     const RenderSettings& r = scene.render;
     double rays = image.total_rays();
-    progress.finish(fmt::format("{}: {}x{}, {} rays/pixel, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB",
-                                output, r.width, r.height, r.samples * r.samples, renderer->description(), seconds,
-                                rays / seconds / 1e6, rays / 1e6, peak_rss_mib()));
+    std::string per_pixel = fmt::format("{} rays/pixel", r.samples * r.samples);
+    if (scene.photons)
+        per_pixel = fmt::format("{} passes of {} photons and 1 camera ray/pixel", info.passes, scene.photons->count);
+    progress.finish(fmt::format("{}: {}x{}, {}, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB", output,
+                                r.width, r.height, per_pixel, renderer->description(), seconds, rays / seconds / 1e6,
+                                rays / 1e6, peak_rss_mib()));
     if (auto* gpu = dynamic_cast<GpuRenderer*>(renderer.get()); gpu && gpu->bands_rerendered() && !options.quiet)
         std::fprintf(stderr, "note: %zu band(s) rendered again with one sample per shader invocation: the driver "
                              "limits loop iterations per invocation (lavapipe)\n", gpu->bands_rerendered());

@@ -309,6 +309,10 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
     std::size_t rows = std::clamp<std::size_t>(band_pixels / width, gpu::WORKGROUP_Y, height);
     rows = std::min(rows, max_rows);
 
+    for (const Material& m : scene.materials)
+        if (m.microfacet())
+            throw UserError("material '" + m.name + "': the GPU backend does not render microfacet materials; use --backend cpu");
+    if (scene.photons) throw UserError("the GPU backend does not do photon mapping; use --backend cpu");
     // Before anything is packed or allocated: a scene the device cannot hold is a clear error.
     gpu::check_memory_budget(gpu::scene_buffer_needs(scene, rows * row_bytes), gpu::buffer_memory_limits(*context_));
     gpu::PipelineVariant variant = upload_scene(scene);

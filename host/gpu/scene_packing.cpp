@@ -192,7 +192,7 @@ Light pack_light(const lancer::Light& l) {
     constexpr double kDegree = M_PI / 180.0;
     Light g{};
     g.position = v4(l.position, l.falloff == Falloff::InverseSquare ? l.falloff_distance : 0.0);
-    g.color = v4(l.color);
+    g.color = v4(l.emitted());
     switch (l.type) {
         case LightType::Point: g.type = LIGHT_POINT; break;
         case LightType::Spot:
