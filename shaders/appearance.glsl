@@ -3,11 +3,6 @@
 #ifndef LANCER_APPEARANCE_GLSL
 #define LANCER_APPEARANCE_GLSL
 
-// Fixed when the pipeline is created: scenes without textures or patterns compile their code
-// out (lavapipe pays for dead code; see docs/performance.md).
-layout(constant_id = SPEC_HAS_TEXTURES) const bool SCENE_HAS_TEXTURES = true;
-layout(constant_id = SPEC_HAS_PATTERNS) const bool SCENE_HAS_PATTERNS = true;
-
 #include "pattern.glsl"
 #include "texture.glsl"
 
@@ -26,7 +21,7 @@ Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
     [[dont_unroll]] for (uint k = 0u; k < 2u; ++k) {
         uint index = k == 0u ? m.color_pattern : m.bump_pattern;
         if (index == NO_MAP) continue;
-        PatternInfo pat = patterns[index];
+        PatternInfo pat = pattern_at(index);
         vec4 f = pattern_value(pat, pattern_space(pat, p));
         if (k == 0u) a.pigment *= ramp_color(pat, f.w);
         else a.normal = bumped_normal(pat, f.xyz, n);

@@ -4,9 +4,6 @@
 #ifndef LANCER_DIELECTRIC_GLSL
 #define LANCER_DIELECTRIC_GLSL
 
-// Whether any material is transparent; without, the tracer is the plain mirror-bounce loop.
-layout(constant_id = SPEC_HAS_TRANSPARENCY) const bool SCENE_HAS_TRANSPARENCY = true;
-
 // Below this remaining weight a ray cannot change the 8-bit result (< 1/4 of a level).
 const float MIN_WEIGHT = 1.0 / 1024.0;
 
@@ -16,7 +13,7 @@ bool is_transparent(Material m) { return max3(m.transmission.rgb) > 0.0; }
 
 // A rectangle has no inside: it is a thin sheet, which reflects and transmits but neither
 // bends the ray nor changes the medium.
-bool is_thin_sheet(uint primitive) { return primitives[primitive].type == SHAPE_RECTANGLE; }
+bool is_thin_sheet(uint primitive) { return primitive_at(primitive).type == SHAPE_RECTANGLE; }
 
 const uint MEDIA_DEPTH = 4u;
 const uint NO_MEDIUM = 0xffffffffu;  // air: ior 1, no absorption
@@ -54,12 +51,12 @@ Media cross_surface(Media media, uint mat) {
     return media;
 }
 
-float medium_ior(uint medium) { return medium == NO_MEDIUM ? 1.0 : materials[medium].transmission.w; }
+float medium_ior(uint medium) { return medium == NO_MEDIUM ? 1.0 : material_at(medium).transmission.w; }
 
 // Beer-Lambert: the fraction of light left after `distance` in the medium (0 at infinity).
 vec3 absorption_over(uint medium, float distance) {
     if (medium == NO_MEDIUM) return vec3(1.0);
-    vec3 a = materials[medium].absorption.rgb;
+    vec3 a = material_at(medium).absorption.rgb;
     vec3 left = exp(-a * distance);
     return mix(left, vec3(1.0), equal(a, vec3(0.0)));  // a = 0: nothing absorbed, even at infinity
 }
@@ -112,8 +109,8 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media) {
             return SCENE_HAS_TRANSPARENCY ? through * absorption_over(medium, length(q - from)) : through;
         }
         if (!SCENE_HAS_TRANSPARENCY || k == MAX_SHADOW_CROSSINGS) break;
-        uint mat = primitives[best.prim].material;
-        Material m = materials[mat];
+        uint mat = primitive_at(best.prim).material;
+        Material m = material_at(mat);
         if (!is_transparent(m)) break;
         vec3 p = ray.origin + best.t * ray.dir;
         through *= absorption_over(medium, length(p - from));

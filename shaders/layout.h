@@ -1,10 +1,19 @@
-// The one definition of every GPU-visible struct, binding and enum.
+// The one definition of the interface between the host and the shader: every GPU struct, every
+// descriptor of the tracer's set and every specialisation constant.
 //
-// This header is compiled twice: by the C++ host (through host/gpu/layout.hpp) and by
-// glslang as part of the compute shader (GL_GOOGLE_include_directive). Members are vec4s and
-// 32-bit scalars only, so std430 (shader) and the C++ ABI agree without padding tricks; the
-// host static_asserts the sizes and tests/unit/layout_reflection_test.cpp compares every
-// offset with glslang's reflection of the compiled shader.
+// This header is compiled twice: by the C++ host (through host/gpu/layout.hpp) and by glslang
+// as part of the compute shader (GL_GOOGLE_include_directive). Three tables below drive both:
+//   - each struct is a list of 16-byte rows (LANCER_ROWS_*), from which come the C++ struct,
+//     the GLSL struct and the GLSL function that reads one from a texel buffer
+//     (shaders/interface.glsl), so a member added here is at once on both sides;
+//   - LANCER_RESOURCES lists the descriptors: the host's set layout, pool, writes, buffers and
+//     memory budget (host/gpu/resources.*) and the shader's declarations (interface.glsl);
+//   - LANCER_FEATURES lists the specialisation constants: the host's ShaderFeatures and
+//     the shader's constants.
+// Rows are vec4s or four 32-bit scalars, so std140, std430, a texel buffer's RGBA32 texels and
+// the C++ ABI all agree without padding tricks; tests/unit/layout_reflection_test.cpp checks it
+// against glslang's reflection and tests/render/interface_test.cpp reads every struct back
+// through the shader's readers.
 #ifndef LANCER_LAYOUT_H
 #define LANCER_LAYOUT_H
 
@@ -18,35 +27,6 @@ using uint = std::uint32_t;
 #else
 #define LANCER_CONST const uint
 #endif
-
-// Descriptor bindings of set 0.
-LANCER_CONST BINDING_FRAME = 0;       // uniform FrameParams
-LANCER_CONST BINDING_PRIMITIVES = 1;  // buffer Primitive[]
-LANCER_CONST BINDING_MATERIALS = 2;   // buffer Material[]
-LANCER_CONST BINDING_LIGHTS = 3;      // buffer Light[]
-LANCER_CONST BINDING_OUTPUT = 4;      // buffer vec4[] (one band of the image)
-LANCER_CONST BINDING_NODES = 5;       // buffer BvhNode[]
-LANCER_CONST BINDING_PATCHES = 6;     // buffer PatchLeaf[]
-LANCER_CONST BINDING_SURFACES = 7;    // buffer SurfaceInfo[]
-LANCER_CONST BINDING_CELLS = 8;       // buffer ParametricCell[]
-LANCER_CONST BINDING_TEXTURES = 9;    // buffer TextureInfo[]
-LANCER_CONST BINDING_TEXELS = 10;     // buffer uint[]: the RGBA8 texels of every texture, R in the low byte
-LANCER_CONST BINDING_PATTERNS = 11;   // buffer PatternInfo[]
-LANCER_CONST BINDING_PERMUTATION = 12;  // buffer int[256]: Ken Perlin's permutation, for noise.glsl
-
-// Specialization constant ids (scene.glsl).
-LANCER_CONST SPEC_HAS_BEZIER = 0;
-LANCER_CONST SPEC_HAS_BVH = 1;
-LANCER_CONST SPEC_OUTPUT_HITS = 2;  // debug/test variant: write first hits instead of colours
-LANCER_CONST SPEC_CHECK_LOOP_LIMIT = 3;  // lavapipe: detect invocations its loop limit cut short (trace.comp)
-// Optional shading features: compiled out of scenes that lack them (lavapipe pays for dead code).
-LANCER_CONST SPEC_HAS_TEXTURES = 4;      // some material has an image texture
-LANCER_CONST SPEC_HAS_PATTERNS = 5;      // some material has a procedural pattern or a bump
-LANCER_CONST SPEC_HAS_TRANSPARENCY = 6;  // a material with transmission > 0: the ray tree, media, tinted shadows
-LANCER_CONST SPEC_HAS_AREA_LIGHTS = 7;
-LANCER_CONST SPEC_HAS_SPOT_LIGHTS = 8;
-LANCER_CONST SPEC_HAS_FALLOFF = 9;       // a light with distance fall-off
-LANCER_CONST SPEC_HAS_BLINN = 10;        // a material with highlight = "blinn"
 
 // Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
 LANCER_CONST WORKGROUP_X = 8;
@@ -89,165 +69,227 @@ LANCER_CONST LIGHT_POINT = 0;
 LANCER_CONST LIGHT_SPOT = 1;
 LANCER_CONST LIGHT_AREA = 2;
 
-struct Primitive {
-    uint type;
-    uint material;
-    uint data;    // shape-specific index into a further buffer (patch shapes), else 0
-    uint object;  // index of the scene object it came from
-    vec4 p0;
-    vec4 p1;
-    vec4 p2;
-};
+// ---------------------------------------------------------------------------------------------
+// Structs, as lists of rows. LANCER_ROWS_Name(VEC4, VEC4S, SCALARS) lists the rows of struct
+// Name in order: VEC4(name) a vec4; VEC4S(name, n) an array of n vec4s; SCALARS(T0, n0, T1, n1,
+// T2, n2, T3, n3) four 32-bit scalars (uint, int or float). Comments go in /* */ (a // comment
+// would swallow the macro's next line).
+// ---------------------------------------------------------------------------------------------
+
+#define LANCER_ROWS_Primitive(VEC4, VEC4S, SCALARS)                                             \
+    SCALARS(uint, type, uint, material,                                                         \
+            uint, data,   /* shape-specific index into a further array (patch shapes), else 0 */ \
+            uint, object) /* index of the scene object it came from */                          \
+    VEC4(p0) VEC4(p1) VEC4(p2)
 
 // A bicubic (rational) Bezier sub-patch, ready for Bezier clipping. Control points are stored
 // relative to `origin` (the leaf's centre) so that float keeps its precision far from the
 // world origin.
-struct PatchLeaf {
-    vec4 points[16];  // xyz = control point - origin, w = weight (1 for polynomial patches); row-major, i along u
-    vec4 origin;      // xyz; w = index of the patch within its surface (for tests and texture lookups)
-    vec4 domain;      // (u0, u1, v0, v1): where this leaf lies in its patch's parameter square
-};
+#define LANCER_ROWS_PatchLeaf(VEC4, VEC4S, SCALARS)                                                      \
+    VEC4S(points, 16) /* xyz = control point - origin, w = weight (1 if polynomial); row-major, i along u */ \
+    VEC4(origin)      /* xyz; w = index of the patch within its surface (for tests and texture lookups) */   \
+    VEC4(domain)      /* (u0, u1, v0, v1): where this leaf lies in its patch's parameter square */
 
 // Per parametric surface: the affine map from the user's (x, y, z) to world space, so moving an
-// object only rewrites this buffer, never the generated shader code.
-struct SurfaceInfo {
-    vec4 row0;  // world = (dot(row0.xyz, p) + row0.w, dot(row1.xyz, p) + row1.w, dot(row2.xyz, p) + row2.w)
-    vec4 row1;
-    vec4 row2;
-    vec4 domain;  // (u0, u1, v0, v1) of the whole surface
-};
+// object only rewrites this array, never the generated shader code:
+// world = (dot(row0.xyz, p) + row0.w, dot(row1.xyz, p) + row1.w, dot(row2.xyz, p) + row2.w).
+#define LANCER_ROWS_SurfaceInfo(VEC4, VEC4S, SCALARS) \
+    VEC4(row0) VEC4(row1) VEC4(row2)                  \
+    VEC4(domain) /* (u0, u1, v0, v1) of the whole surface */
 
 // One cell of a parametric surface's domain: where Newton's method looks for roots. The corner
 // points give Newton a starting point near the root (where the ray meets the two triangles they
 // span), so one or two seeds suffice instead of a grid of them.
-struct ParametricCell {
-    vec4 domain;  // (u0, u1, v0, v1)
-    vec4 p00;     // xyz = S(u0, v0) in world space; w = the surface index (its generated function)
-    vec4 p10;     // S(u1, v0)
-    vec4 p01;     // S(u0, v1)
-    vec4 p11;     // S(u1, v1)
-};
+#define LANCER_ROWS_ParametricCell(VEC4, VEC4S, SCALARS)                                      \
+    VEC4(domain) /* (u0, u1, v0, v1) */                                                       \
+    VEC4(p00)    /* xyz = S(u0, v0) in world space; w = the surface index (its generated function) */ \
+    VEC4(p10)    /* S(u1, v0) */                                                              \
+    VEC4(p01)    /* S(u0, v1) */                                                              \
+    VEC4(p11)    /* S(u1, v1) */
 
 // A node of the bounding volume hierarchy over all bounded primitives (host/accel/bvh.hpp).
 // Inner nodes (count == 0) have their children at first and first + 1; leaves cover the
 // primitives [first, first + count). Boxes are rounded outward from double.
-struct BvhNode {
-    vec4 lo;  // xyz
-    vec4 hi;  // xyz
-    uint first;
-    uint count;
-    uint reserved0;
-    uint reserved1;
-};
+#define LANCER_ROWS_BvhNode(VEC4, VEC4S, SCALARS) \
+    VEC4(lo) /* xyz */                            \
+    VEC4(hi) /* xyz */                            \
+    SCALARS(uint, first, uint, count, uint, reserved0, uint, reserved1)
 
-struct Material {
-    vec4 color;    // rgb = pigment (checker: first colour), linear
-    vec4 color2;   // rgb = second checker colour
-    vec4 phong;    // x = ambient, y = diffuse, z = specular, w = shininess (n_s)
-    float reflection;
-    uint pattern;
-    float checker_size;
-    uint reserved;
-    // textures and patterns (shaders/appearance.glsl): indices, or NO_MAP
-    uint texture_map;    // into textures[]: the pigment is multiplied by the image's colour
-    uint color_pattern;  // into patterns[]: the pigment is multiplied by the pattern's colour
-    uint bump_pattern;   // into patterns[]: the shading normal is tilted by the pattern's gradient
-    uint maps_reserved;
-
-    // optics: refraction and the highlight model
-    vec4 transmission;  // rgb = T, the fraction passed per channel (all 0: opaque); w = ior
-    vec4 absorption;    // rgb = Beer-Lambert coefficient per unit distance inside; w unused
-    uint highlight;     // HIGHLIGHT_PHONG or HIGHLIGHT_BLINN
-    uint optics_reserved0;
-    uint optics_reserved1;
-    uint optics_reserved2;
-};
+#define LANCER_ROWS_Material(VEC4, VEC4S, SCALARS)                                                  \
+    VEC4(color)  /* rgb = pigment (checker: first colour), linear */                                \
+    VEC4(color2) /* rgb = second checker colour */                                                  \
+    VEC4(phong)  /* x = ambient, y = diffuse, z = specular, w = shininess (n_s) */                   \
+    SCALARS(float, reflection, uint, pattern, float, checker_size, uint, reserved)                  \
+    /* textures and patterns (shaders/appearance.glsl): indices, or NO_MAP */                        \
+    SCALARS(uint, texture_map,   /* into textures: the pigment is multiplied by the image's colour */ \
+            uint, color_pattern, /* into patterns: the pigment is multiplied by the pattern's colour */ \
+            uint, bump_pattern,  /* into patterns: the shading normal is tilted by its gradient */   \
+            uint, maps_reserved)                                                                    \
+    /* optics: refraction and the highlight model */                                                \
+    VEC4(transmission) /* rgb = T, the fraction passed per channel (all 0: opaque); w = ior */      \
+    VEC4(absorption)   /* rgb = Beer-Lambert coefficient per unit distance inside; w unused */      \
+    SCALARS(uint, highlight, /* HIGHLIGHT_PHONG or HIGHLIGHT_BLINN */                               \
+            uint, optics_reserved0, uint, optics_reserved1, uint, optics_reserved2)
 
 // An image as a material places it (shaders/texture.glsl). Image coordinates (s, t) run from
 // (0, 0) at the image's bottom-left corner to (1, 1) at its top-right one.
-struct TextureInfo {
-    vec4 to_image_s;  // s = dot(xy, uv) + z, uv the surface's texture coordinates
-    vec4 to_image_t;  // t = dot(xy, uv) + z
-    uint texel_offset;  // its first texel in texels[]; rows from the top
-    uint width;
-    uint height;
-    uint flags;       // TEXTURE_CLAMP_U | TEXTURE_CLAMP_V | TEXTURE_NEAREST
-};
+#define LANCER_ROWS_TextureInfo(VEC4, VEC4S, SCALARS)                                 \
+    VEC4(to_image_s) /* s = dot(xy, uv) + z, uv the surface's texture coordinates */  \
+    VEC4(to_image_t) /* t = dot(xy, uv) + z */                                        \
+    SCALARS(uint, texel_offset, /* its first texel in texels; rows from the top */    \
+            uint, width, uint, height,                                                \
+            uint, flags) /* TEXTURE_CLAMP_U | TEXTURE_CLAMP_V | TEXTURE_NEAREST */
 
 // A procedural pattern (shaders/pattern.glsl): a scalar function of the world position, shown
 // through a colour ramp or used as a bump.
-struct PatternInfo {
-    vec4 row0;    // world -> pattern space: q = (dot(row0.xyz, p) + row0.w, dot(row1..), dot(row2..))
-    vec4 row1;
-    vec4 row2;
-    vec4 params;  // x = turbulence, y = omega, z = lambda, w = bump strength (amount x mean scale)
-    uint type;    // PATTERN_NOISE, ...
-    uint octaves;
-    uint color_count;
-    uint reserved;
-    vec4 colors[PATTERN_MAX_COLORS];  // rgb = colour, w = its position on the ramp, ascending
-};
+#define LANCER_ROWS_PatternInfo(VEC4, VEC4S, SCALARS)                                                         \
+    VEC4(row0) /* world -> pattern space: q = (dot(row0.xyz, p) + row0.w, dot(row1..), dot(row2..)) */         \
+    VEC4(row1) VEC4(row2)                                                                                     \
+    VEC4(params) /* x = turbulence, y = omega, z = lambda, w = bump strength (amount x mean scale) */          \
+    SCALARS(uint, type, /* PATTERN_NOISE, ... */ uint, octaves, uint, color_count, uint, reserved)             \
+    VEC4S(colors, PATTERN_MAX_COLORS) /* rgb = colour, w = its position on the ramp, ascending */
 
-struct Light {
-    vec4 position;   // xyz = where it is (area light: the rectangle's centre); w = fall-off distance, 0 = none
-    vec4 color;      // rgb
-    vec4 direction;  // spot: xyz = unit axis of the cone
-    vec4 spot;       // spot: x = cos(outer_angle), y = cos(inner_angle), z = tightness
-    vec4 edge_u;     // area: xyz = first edge (whole length)
-    vec4 edge_v;     // area: xyz = second edge
-    uint type;       // LIGHT_POINT, LIGHT_SPOT or LIGHT_AREA
-    uint samples;    // area: n, for n x n shadow samples
-    uint jitter;     // area: 1 = each sample at a hashed place in its cell, 0 = at the cell's centre
-    uint reserved;
-};
+#define LANCER_ROWS_Light(VEC4, VEC4S, SCALARS)                                                      \
+    VEC4(position)  /* xyz = where it is (area light: the rectangle's centre); w = fall-off distance, 0 = none */ \
+    VEC4(color)     /* rgb */                                                                        \
+    VEC4(direction) /* spot: xyz = unit axis of the cone */                                          \
+    VEC4(spot)      /* spot: x = cos(outer_angle), y = cos(inner_angle), z = tightness */            \
+    VEC4(edge_u)    /* area: xyz = first edge (whole length) */                                      \
+    VEC4(edge_v)    /* area: xyz = second edge */                                                    \
+    SCALARS(uint, type,    /* LIGHT_POINT, LIGHT_SPOT or LIGHT_AREA */                               \
+            uint, samples, /* area: n, for n x n shadow samples */                                   \
+            uint, jitter,  /* area: 1 = each sample at a hashed place in its cell, 0 = at its centre */ \
+            uint, reserved)
 
-// Per-render constants (a uniform buffer). The camera is given as the vectors from which the
+// Per-render constants (a uniform block). The camera is given as the vectors from which the
 // shader forms ray directions: dir = forward + ndc_x * right + ndc_y * up, with ndc in [-1, 1].
-struct FrameParams {
-    vec4 eye;
-    vec4 forward;
-    vec4 right;       // already scaled by tan(fov/2) * aspect
-    vec4 up;          // already scaled by tan(fov/2)
-    vec4 background;  // rgb
-    vec4 ambient;     // rgb, the scene's ambient light
-    uint width;
-    uint height;
-    uint samples;     // N: an N x N grid of rays per pixel
-    uint max_depth;   // reflection bounces after the camera ray
-    uint primitive_count;  // all primitives: the BVH's, then the unbounded ones (planes)
-    uint light_count;
-    uint node_count;       // 0 when nothing is bounded
-    uint unbounded_count;  // the last unbounded_count primitives are tested by every ray
-    uint loop_probe;       // always 2: the trip count of trace.comp's loop_limit_reached() probe
-    uint reserved0;
-    uint reserved1;
-    uint reserved2;
-};
+#define LANCER_ROWS_FrameParams(VEC4, VEC4S, SCALARS)                                             \
+    VEC4(eye) VEC4(forward)                                                                       \
+    VEC4(right)      /* already scaled by tan(fov/2) * aspect */                                  \
+    VEC4(up)         /* already scaled by tan(fov/2) */                                           \
+    VEC4(background) /* rgb */                                                                    \
+    VEC4(ambient)    /* rgb, the scene's ambient light */                                         \
+    SCALARS(uint, width, uint, height,                                                            \
+            uint, samples,   /* N: an N x N grid of rays per pixel */                             \
+            uint, max_depth) /* reflection bounces after the camera ray */                        \
+    SCALARS(uint, primitive_count, /* all primitives: the BVH's, then the unbounded ones (planes) */ \
+            uint, light_count,                                                                    \
+            uint, node_count,      /* 0 when nothing is bounded */                                \
+            uint, unbounded_count) /* the last unbounded_count primitives are tested by every ray */ \
+    SCALARS(uint, loop_probe, /* always 2: the trip count of trace.comp's loop_limit_reached() probe */ \
+            uint, reserved0, uint, reserved1, uint, reserved2)
 
 // Push constants: which band of rows this dispatch renders, and which of each pixel's N x N
 // grid samples it traces, in the order a whole render traces them (k = j * N + i, row by row).
 // A pass that does not start at sample 0 continues the sums the output buffer holds, and only
 // the pass that ends at sample N * N divides by N * N: passes add the same floats in the same
 // order as one full render, so progressive refinement ends on exactly that image.
-struct BandParams {
-    uint y0;
-    uint rows;
-    uint sample_first;
-    uint sample_count;
-};
+#define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS) \
+    SCALARS(uint, y0, uint, rows, uint, sample_first, uint, sample_count)
+
+// The structs themselves, and their size in rows (Name_ROWS), from the lists above.
+#define LANCER_MEMBER_VEC4(name) vec4 name;
+#define LANCER_MEMBER_VEC4S(name, n) vec4 name[n];
+#define LANCER_MEMBER_SCALARS(T0, n0, T1, n1, T2, n2, T3, n3) T0 n0; T1 n1; T2 n2; T3 n3;
+#define LANCER_COUNT_VEC4(name) +1
+#define LANCER_COUNT_VEC4S(name, n) +(n)
+#define LANCER_COUNT_SCALARS(T0, n0, T1, n1, T2, n2, T3, n3) +1
+#define LANCER_STRUCT(Name)                                                                      \
+    struct Name {                                                                                \
+        LANCER_ROWS_##Name(LANCER_MEMBER_VEC4, LANCER_MEMBER_VEC4S, LANCER_MEMBER_SCALARS)       \
+    };                                                                                           \
+    LANCER_CONST Name##_ROWS = 0 LANCER_ROWS_##Name(LANCER_COUNT_VEC4, LANCER_COUNT_VEC4S, LANCER_COUNT_SCALARS);
+
+LANCER_STRUCT(Primitive)
+LANCER_STRUCT(PatchLeaf)
+LANCER_STRUCT(SurfaceInfo)
+LANCER_STRUCT(ParametricCell)
+LANCER_STRUCT(BvhNode)
+LANCER_STRUCT(Material)
+LANCER_STRUCT(TextureInfo)
+LANCER_STRUCT(PatternInfo)
+LANCER_STRUCT(Light)
+LANCER_STRUCT(FrameParams)
+LANCER_STRUCT(BandParams)
+
+// ---------------------------------------------------------------------------------------------
+// Resources: every descriptor of set 0, as X(NAME, slot, kind, Element, member, reader, what).
+//   NAME     BINDING_NAME is its binding; the shader's resource is named after it
+//   slot     the binding number
+//   kind     RESOURCE_UNIFORM: a uniform block holding one Element (per render)
+//            RESOURCE_OUTPUT: a storage buffer of Elements the shader writes (the image band)
+//            RESOURCE_ROWS: a uniform texel buffer (RGBA32UI) of Element structs, Element_ROWS
+//              texels each, read with reader(i). llvmpipe turns a storage-buffer read into a
+//              loop over the SIMD lanes (docs/performance.md); a texel fetch is a gather, ~3x
+//              faster on a BVH, with no 64 KiB limit as uniform blocks have.
+//            RESOURCE_UINT, RESOURCE_INT: a uniform texel buffer of 32-bit uints or ints (R32),
+//              read by reader(i)
+//   Element  the type of one element
+//   member   the host's PackedScene array that fills it (host/gpu/scene_packing.hpp), or the
+//            block's member
+//   reader   the GLSL function that reads element i
+//   what     what its elements are, for messages ("the scene needs 2 GiB for its ...")
+// ---------------------------------------------------------------------------------------------
+LANCER_CONST RESOURCE_UNIFORM = 0;
+LANCER_CONST RESOURCE_OUTPUT = 1;
+LANCER_CONST RESOURCE_ROWS = 2;
+LANCER_CONST RESOURCE_UINT = 3;
+LANCER_CONST RESOURCE_INT = 4;
+
+#define LANCER_SCENE_ARRAYS(X)                                                                          \
+    X(PRIMITIVES, 1, RESOURCE_ROWS, Primitive, primitives, primitive_at, "primitives")                  \
+    X(NODES, 2, RESOURCE_ROWS, BvhNode, nodes, node_at, "BVH nodes")                                    \
+    X(MATERIALS, 3, RESOURCE_ROWS, Material, materials, material_at, "materials")                       \
+    X(LIGHTS, 4, RESOURCE_ROWS, Light, lights, light_at, "lights")                                      \
+    X(PATCHES, 5, RESOURCE_ROWS, PatchLeaf, patches, patch_leaf_at, "Bezier patch leaves")              \
+    X(SURFACES, 6, RESOURCE_ROWS, SurfaceInfo, surfaces, surface_at, "parametric surfaces")             \
+    X(CELLS, 7, RESOURCE_ROWS, ParametricCell, cells, cell_at, "parametric cells")                      \
+    X(TEXTURES, 8, RESOURCE_ROWS, TextureInfo, textures, texture_at, "textures")                        \
+    X(TEXELS, 9, RESOURCE_UINT, uint, texels, texel_at, "texture texels") /* RGBA8, R in the low byte */ \
+    X(PATTERNS, 10, RESOURCE_ROWS, PatternInfo, patterns, pattern_at, "patterns")                       \
+    X(PERMUTATION, 11, RESOURCE_INT, int, permutation, permutation_at, "noise permutation") /* Perlin's */
+
+#define LANCER_RESOURCES(X)                                                          \
+    X(FRAME, 0, RESOURCE_UNIFORM, FrameParams, frame, frame, "frame parameters")     \
+    LANCER_SCENE_ARRAYS(X)                                                           \
+    X(OUTPUT, 12, RESOURCE_OUTPUT, vec4, pixels, pixels, "output rows") /* one band of the image */
+
+#define LANCER_BINDING_CONSTANT(NAME, slot, kind, Element, member, reader, what) LANCER_CONST BINDING_##NAME = slot;
+LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
+
+// ---------------------------------------------------------------------------------------------
+// Specialisation constants, as X(NAME, id, member, default): the shader's `const bool NAME`,
+// the host's ShaderFeatures::member. Optional features are compiled out of scenes that lack
+// them: lavapipe pays for dead code in register pressure (the unused Bezier clipper alone made
+// a sphere scene ten times slower; docs/performance.md).
+// ---------------------------------------------------------------------------------------------
+#define LANCER_FEATURES(X)                                                                           \
+    X(SCENE_HAS_BEZIER, 0, has_bezier, true)                                                         \
+    X(SCENE_HAS_BVH, 1, has_bvh, true)                                                               \
+    X(OUTPUT_HITS, 2, output_hits, false)           /* test variant: write first hits, not colours */ \
+    X(CHECK_LOOP_LIMIT, 3, check_loop_limit, false) /* lavapipe: see loop_limit_reached (trace.comp) */ \
+    X(SCENE_HAS_TEXTURES, 4, has_textures, true)    /* some material has an image texture */         \
+    X(SCENE_HAS_PATTERNS, 5, has_patterns, true)    /* some material has a procedural pattern or bump */ \
+    X(SCENE_HAS_TRANSPARENCY, 6, has_transparency, true) /* transmission > 0: the ray tree, media */  \
+    X(SCENE_HAS_AREA_LIGHTS, 7, has_area_lights, true)                                               \
+    X(SCENE_HAS_SPOT_LIGHTS, 8, has_spot_lights, true)                                               \
+    X(SCENE_HAS_FALLOFF, 9, has_falloff, true)      /* a light with distance fall-off */             \
+    X(SCENE_HAS_BLINN, 10, has_blinn, true)         /* a material with highlight = "blinn" */
 
 #ifdef __cplusplus
-static_assert(sizeof(Primitive) == 64);
-static_assert(sizeof(Material) == 128);
-static_assert(sizeof(TextureInfo) == 48);
-static_assert(sizeof(PatternInfo) == 208);
-static_assert(sizeof(Light) == 112);
-static_assert(sizeof(BvhNode) == 48);
-static_assert(sizeof(PatchLeaf) == 288);
-static_assert(sizeof(SurfaceInfo) == 64);
-static_assert(sizeof(ParametricCell) == 80);
-static_assert(sizeof(FrameParams) == 144);
-static_assert(sizeof(BandParams) == 16);
+#define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");
+LANCER_ASSERT_SIZE(Primitive)
+LANCER_ASSERT_SIZE(PatchLeaf)
+LANCER_ASSERT_SIZE(SurfaceInfo)
+LANCER_ASSERT_SIZE(ParametricCell)
+LANCER_ASSERT_SIZE(BvhNode)
+LANCER_ASSERT_SIZE(Material)
+LANCER_ASSERT_SIZE(TextureInfo)
+LANCER_ASSERT_SIZE(PatternInfo)
+LANCER_ASSERT_SIZE(Light)
+LANCER_ASSERT_SIZE(FrameParams)
+LANCER_ASSERT_SIZE(BandParams)
+#undef LANCER_ASSERT_SIZE
 }  // namespace lancer::gpu
 #endif
 

@@ -4,11 +4,6 @@
 #ifndef LANCER_LIGHTS_GLSL
 #define LANCER_LIGHTS_GLSL
 
-// Light types and fall-off the scene uses; code for absent ones is compiled out.
-layout(constant_id = SPEC_HAS_AREA_LIGHTS) const bool SCENE_HAS_AREA_LIGHTS = true;
-layout(constant_id = SPEC_HAS_SPOT_LIGHTS) const bool SCENE_HAS_SPOT_LIGHTS = true;
-layout(constant_id = SPEC_HAS_FALLOFF) const bool SCENE_HAS_FALLOFF = true;
-
 // PCG's 32-bit output permutation: exact integer arithmetic, so the CPU reference computes the
 // same bits and both backends put area light samples at the same places.
 uint hash_u32(uint v) {

@@ -5,13 +5,11 @@
 #ifndef LANCER_NOISE_GLSL
 #define LANCER_NOISE_GLSL
 
-// Ken Perlin's permutation of 0..255 (host/core/perlin_permutation.hpp). A buffer, not a
-// constant array: lavapipe copies a constant array into every function that indexes it, which
-// made the pipeline take minutes to compile.
-layout(std430, set = 0, binding = BINDING_PERMUTATION) readonly buffer PermutationBlock { int perlin_permutation[]; };
-
-// The reference's p[i] (its table holds the permutation twice, for i < 512).
-int perlin_perm(int i) { return perlin_permutation[i & 255]; }
+// The reference's p[i] (its table holds the permutation twice, for i < 512): Ken Perlin's
+// permutation of 0..255 (host/core/perlin_permutation.hpp), read from a buffer, not a constant
+// array: lavapipe copies a constant array into every function that indexes it, which made the
+// pipeline take minutes to compile.
+int perlin_perm(int i) { return permutation_at(uint(i & 255)); }
 
 // The reference's grad(hash, x, y, z) = g . (x, y, z), as (g, g . r).
 vec4 perlin_corner(int hash, vec3 r) {

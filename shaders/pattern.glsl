@@ -6,8 +6,6 @@
 
 #include "noise.glsl"
 
-layout(std430, set = 0, binding = BINDING_PATTERNS) readonly buffer PatternBlock { PatternInfo patterns[]; };
-
 // f at pattern-space point q, with its gradient there: (gradient, value). Noise is called from
 // one place only (code size costs speed on lavapipe, even where it never runs): plain noise is a
 // single octave of the sum, turbulence, marble and wood sum omega^i |noise(lambda^i q)|.

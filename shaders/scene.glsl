@@ -4,17 +4,7 @@
 #ifndef LANCER_SCENE_GLSL
 #define LANCER_SCENE_GLSL
 
-layout(std140, set = 0, binding = BINDING_FRAME) uniform FrameBlock { FrameParams frame; };
-layout(std430, set = 0, binding = BINDING_PRIMITIVES) readonly buffer PrimitiveBlock { Primitive primitives[]; };
-layout(std430, set = 0, binding = BINDING_NODES) readonly buffer NodeBlock { BvhNode nodes[]; };
-layout(std430, set = 0, binding = BINDING_MATERIALS) readonly buffer MaterialBlock { Material materials[]; };
-layout(std430, set = 0, binding = BINDING_LIGHTS) readonly buffer LightBlock { Light lights[]; };
-
-// Shape families the scene contains, fixed when the pipeline is created: code for absent ones
-// is removed by the driver (on lavapipe, the unused Bezier clipper alone slowed a sphere scene
-// down ten times, through register pressure).
-layout(constant_id = SPEC_HAS_BEZIER) const bool SCENE_HAS_BEZIER = true;
-layout(constant_id = SPEC_HAS_BVH) const bool SCENE_HAS_BVH = true;
+#include "interface.glsl"
 
 #include "shapes/sphere.glsl"
 #include "shapes/plane.glsl"
@@ -25,7 +15,7 @@ layout(constant_id = SPEC_HAS_BVH) const bool SCENE_HAS_BVH = true;
 
 // uv: the surface's own parameters at the hit, for shapes that have them.
 bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv) {
-    Primitive p = primitives[index];
+    Primitive p = primitive_at(index);
     uv = vec2(0.0);
     switch (p.type) {
         case SHAPE_SPHERE: return sphere_intersect(p, ray, t_min, t_max, t_hit);
@@ -41,7 +31,7 @@ bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out floa
 }
 
 vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
-    Primitive prim = primitives[index];
+    Primitive prim = primitive_at(index);
     switch (prim.type) {
         case SHAPE_SPHERE: return sphere_normal(prim, p);
         case SHAPE_PLANE: return plane_normal(prim);
@@ -65,7 +55,7 @@ const uint NO_PRIMITIVE = 0xffffffffu;
 const float TIE = 1e-5;
 
 // Object index and shape data: the same whichever order the primitives are stored in.
-uvec2 stable_key(uint i) { return uvec2(primitives[i].object, primitives[i].data); }
+uvec2 stable_key(uint i) { return uvec2(primitive_at(i).object, primitive_at(i).data); }
 
 struct Nearest {
     float t;  // nearest hit so far, or t_max
@@ -103,11 +93,11 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out Nearest be
     float stack_t[BVH_STACK_SIZE];
     int sp = 0;
     uint node = 0u;
-    if (box_entry(nodes[0].lo.xyz, nodes[0].hi.xyz, ray.origin, inv_dir, reach(best)) == INFINITY) {
+    if (box_entry(node_at(0).lo.xyz, node_at(0).hi.xyz, ray.origin, inv_dir, reach(best)) == INFINITY) {
         return best.prim != NO_PRIMITIVE;
     }
     for (;;) {
-        BvhNode n = nodes[node];
+        BvhNode n = node_at(node);
         if (n.count > 0u) {
             for (uint i = n.first; i < n.first + n.count; ++i) {
                 if (consider(i, ray, t_min, best) && any_hit) return true;
@@ -116,8 +106,8 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out Nearest be
             uint near_child = n.first;
             uint far_child = n.first + 1u;
             float limit = reach(best);
-            float t_near = box_entry(nodes[near_child].lo.xyz, nodes[near_child].hi.xyz, ray.origin, inv_dir, limit);
-            float t_far = box_entry(nodes[far_child].lo.xyz, nodes[far_child].hi.xyz, ray.origin, inv_dir, limit);
+            float t_near = box_entry(node_at(near_child).lo.xyz, node_at(near_child).hi.xyz, ray.origin, inv_dir, limit);
+            float t_far = box_entry(node_at(far_child).lo.xyz, node_at(far_child).hi.xyz, ray.origin, inv_dir, limit);
             if (t_far < t_near) {
                 uint c = near_child; near_child = far_child; far_child = c;
                 float f = t_near; t_near = t_far; t_far = f;
@@ -159,9 +149,9 @@ bool closest_hit(Ray ray, float t_min, out Hit hit) {
 
 // The hit's parameters on its whole surface (a Bezier leaf's are mapped to its patch's).
 vec2 surface_uv(Hit hit) {
-    Primitive prim = primitives[hit.primitive];
+    Primitive prim = primitive_at(hit.primitive);
     if (SCENE_HAS_BEZIER && prim.type == SHAPE_BEZIER) {
-        vec4 dom = patch_leaves[prim.data].domain;
+        vec4 dom = patch_leaf_at(prim.data).domain;
         return vec2(mix(dom.x, dom.y, hit.uv.x), mix(dom.z, dom.w, hit.uv.y));
     }
     return hit.uv;
@@ -169,8 +159,8 @@ vec2 surface_uv(Hit hit) {
 
 // Which patch of a Bezier surface was hit (-1 for other shapes).
 float surface_part(Hit hit) {
-    Primitive prim = primitives[hit.primitive];
-    if (SCENE_HAS_BEZIER && prim.type == SHAPE_BEZIER) return patch_leaves[prim.data].origin.w;
+    Primitive prim = primitive_at(hit.primitive);
+    if (SCENE_HAS_BEZIER && prim.type == SHAPE_BEZIER) return patch_leaf_at(prim.data).origin.w;
     return -1.0;
 }
 

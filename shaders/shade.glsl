@@ -6,8 +6,6 @@
 
 #include "lights.glsl"
 
-layout(constant_id = SPEC_HAS_BLINN) const bool SCENE_HAS_BLINN = true;
-
 vec3 material_pigment(Material m, vec3 p) {
     if (m.pattern == PATTERN_CHECKER) {
         // Solid 3-D checker, first colour where floor(x)+floor(y)+floor(z) is even (as POV-Ray).
@@ -70,7 +68,7 @@ vec3 shade_local(Material m, vec3 pigment, vec3 p, vec3 n, vec3 shading_n, vec3 
     uint count = 0u;
     for (uint i = 0u; i < frame.light_count;) {
         if (s == 0u) {
-            light = lights[i];
+            light = light_at(i);
             count = light_sample_count(light);
         }
         vec3 q = light_sample_position(light, i, s, seed);

@@ -4,12 +4,9 @@
 #ifndef LANCER_TEXTURE_GLSL
 #define LANCER_TEXTURE_GLSL
 
-layout(std430, set = 0, binding = BINDING_TEXTURES) readonly buffer TextureBlock { TextureInfo textures[]; };
-layout(std430, set = 0, binding = BINDING_TEXELS) readonly buffer TexelBlock { uint texels[]; };
-
 // Texture coordinates (u, v) of a hit at point p.
 vec2 texture_uv(Hit hit, vec3 p) {
-    Primitive prim = primitives[hit.primitive];
+    Primitive prim = primitive_at(hit.primitive);
     switch (prim.type) {
         case SHAPE_SPHERE: return sphere_texture_uv(prim, p);
         case SHAPE_PLANE: return plane_texture_uv(prim, p);
@@ -23,7 +20,7 @@ vec2 texture_uv(Hit hit, vec3 p) {
 }
 
 vec3 texel_linear(TextureInfo t, int x, int y) {
-    vec3 e = unpackUnorm4x8(texels[t.texel_offset + uint(y) * t.width + uint(x)]).rgb;
+    vec3 e = unpackUnorm4x8(texel_at(t.texel_offset + uint(y) * t.width + uint(x))).rgb;
     return mix(e / 12.92, pow((e + 0.055) / 1.055, vec3(2.4)), greaterThan(e, vec3(0.04045)));
 }
 
@@ -34,7 +31,7 @@ int texel_index(int i, int size, bool clamped) {
 }
 
 vec3 texture_color(uint index, vec2 uv) {
-    TextureInfo t = textures[index];
+    TextureInfo t = texture_at(index);
     bool clamp_u = (t.flags & TEXTURE_CLAMP_U) != 0u;
     bool clamp_v = (t.flags & TEXTURE_CLAMP_V) != 0u;
     vec2 st = vec2(dot(t.to_image_s.xy, uv) + t.to_image_s.z, dot(t.to_image_t.xy, uv) + t.to_image_t.z);

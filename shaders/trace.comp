@@ -6,15 +6,14 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 
-#include "layout.h"
+#include "interface.glsl"
 
 layout(local_size_x = WORKGROUP_X, local_size_y = WORKGROUP_Y, local_size_z = 1) in;
 
 layout(push_constant) uniform BandBlock { BandParams band; };
-// rgb = linear colour, a = number of rays traced for this pixel (camera + shadow + reflection).
-// Between the passes of a progressive render: rgb = the sum of the samples so far. a = -1 marks
-// an invocation the driver cut short (see loop_limit_reached).
-layout(std430, set = 0, binding = BINDING_OUTPUT) buffer OutputBlock { vec4 pixels[]; };
+// The output, pixels[]: rgb = linear colour, a = number of rays traced for this pixel (camera +
+// shadow + reflection). Between the passes of a progressive render: rgb = the sum of the
+// samples so far. a = -1 marks an invocation the driver cut short (see loop_limit_reached).
 
 #include "common.glsl"
 #include "scene.glsl"
@@ -63,8 +62,8 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
             vec3 p = ray.origin + hit.t * ray.dir;
             vec3 n = hit.normal;
             if (dot(n, ray.dir) > 0.0) n = -n;  // two-sided surfaces
-            uint mat = primitives[hit.primitive].material;
-            Material m = materials[mat];
+            uint mat = primitive_at(hit.primitive).material;
+            Material m = material_at(mat);
             bool clear = SCENE_HAS_TRANSPARENCY && is_transparent(m);
             bool sheet = clear && is_thin_sheet(hit.primitive);
             Media beyond = clear && !sheet ? cross_surface(media, mat) : media;  // the media past the surface
@@ -143,7 +142,6 @@ Ray camera_ray(vec2 s) {
 // Test variant: the first hit of the ray through the pixel's centre, as (t, u, v, part):
 // t < 0 for a miss; (u, v) the surface's own parameters; part the patch index for Bezier
 // surfaces, else -1.
-layout(constant_id = SPEC_OUTPUT_HITS) const bool OUTPUT_HITS = false;
 
 vec4 first_hit(vec2 s) {
     Hit hit;
@@ -157,7 +155,6 @@ vec4 first_hit(vec2 s) {
 // iteration, so a loop of two iterations that runs only one shows the invocation was cut
 // short. Its trip count comes from a uniform, so it cannot be unrolled away. A marked pixel
 // makes the host render its band again with one sample per invocation (gpu_renderer.cpp).
-layout(constant_id = SPEC_CHECK_LOOP_LIMIT) const bool CHECK_LOOP_LIMIT = false;
 
 bool loop_limit_reached() {
     uint runs = 0u;

@@ -143,10 +143,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
             pattern->text(), todo.size(), format_frame_list(todo), r.width, r.height, r.samples * r.samples,
             renderer->description(), startup, times.front(), later, rays / total / 1e6, peak_rss_mib()));
         renderer.reset();  // tear Vulkan down before counting validation messages
-        if (std::uint32_t n = gpu::validation_message_count()) {
-            std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);
-            return 1;
-        }
+        if (int code = gpu::exit_code_after_validation(0)) return code;
     } else {
         progress.message(fmt::format("{}: nothing to render", pattern->text()));
     }

@@ -71,11 +71,5 @@ int main(int argc, char** argv) {
     // Error paths must be as clean as successful ones: a Vulkan validation message on the way out
     // (the renderer, and so its teardown, is gone by now) is a bug. (Successful runs check this
     // themselves and exit with 1.)
-    if (code != 0 && code != 1) {
-        if (std::uint32_t n = lancer::gpu::validation_message_count()) {
-            std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);
-            return 1;
-        }
-    }
-    return code;
+    return code != 0 && code != 1 ? lancer::gpu::exit_code_after_validation(code) : code;
 }

@@ -9,7 +9,6 @@
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "gpu/context.hpp"
-#include "gpu/gpu_renderer.hpp"
 
 namespace lancer {
 
@@ -42,15 +41,10 @@ int render_still(const RenderOptions& options, const Scene& scene, const std::st
     progress.finish(fmt::format("{}: {}x{}, {}, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB", output,
                                 r.width, r.height, per_pixel, renderer->description(), seconds, rays / seconds / 1e6,
                                 rays / 1e6, peak_rss_mib()));
-    if (auto* gpu = dynamic_cast<GpuRenderer*>(renderer.get()); gpu && gpu->bands_rerendered() && !options.quiet)
-        std::fprintf(stderr, "note: %zu band(s) rendered again with one sample per shader invocation: the driver "
-                             "limits loop iterations per invocation (lavapipe)\n", gpu->bands_rerendered());
+    if (!options.quiet)
+        for (const std::string& note : renderer->notes()) std::fprintf(stderr, "note: %s\n", note.c_str());
     renderer.reset();  // tear Vulkan down before counting validation messages
-    if (std::uint32_t n = gpu::validation_message_count()) {
-        std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);
-        return 1;
-    }
-    return 0;
+    return gpu::exit_code_after_validation(0);
 }
 
 }  // namespace lancer

@@ -14,7 +14,6 @@
 #include "cli/hot_reload.hpp"
 #include "cli/render_options.hpp"
 #include "gpu/context.hpp"
-#include "gpu/gpu_renderer.hpp"
 #include "gpu/shader_compiler.hpp"
 
 namespace lancer {
@@ -40,7 +39,7 @@ struct WatchCommand {
         RenderOptions without_shaders = options;
         without_shaders.shader_dir.clear();  // compiled below, where errors are kept, not fatal
         auto renderer = make_renderer(without_shaders);
-        auto* gpu = dynamic_cast<GpuRenderer*>(renderer.get());
+        const bool gpu = renderer->runs_shaders();
         if (!gpu && !options.shader_dir.empty()) throw UserError("--shaders needs the gpu backend");
         const std::string shaders = gpu ? resolve_shader_dir(options.shader_dir) : "";
 
@@ -64,7 +63,7 @@ struct WatchCommand {
         auto compile = [&](double& ms) -> bool {
             auto start = Clock::now();
             try {
-                gpu->use_shaders(gpu::directory_tree(shaders), shaders);
+                renderer->use_shader_directory(shaders);
                 ms = ms_since(start);
                 return true;
             } catch (const gpu::ShaderCompileError& e) {
@@ -142,11 +141,7 @@ struct WatchCommand {
 
     static int finish(std::unique_ptr<Renderer> renderer) {
         renderer.reset();  // every Vulkan object released before the validation count
-        if (std::uint32_t n = gpu::validation_message_count()) {
-            std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);
-            return 1;
-        }
-        return 0;
+        return gpu::exit_code_after_validation(0);
     }
 };
 

@@ -5,20 +5,26 @@
 // scene buffers and one-band output buffer.
 #include <cstddef>
 #include <cstring>
+#include <string>
 
 #include "gpu/context.hpp"
 #include "gpu/memory_budget.hpp"
 
 namespace lancer::gpu {
 
-// How large Buffers may get on this device: maxStorageBufferRange each (the shader binds each
-// whole), and together the heap of the memory type they are made from.
+// How large Buffers may get on this device: maxTexelBufferElements texels for texel buffers,
+// maxStorageBufferRange for storage buffers (the shader binds each whole), and together the heap
+// of the memory type they are made from.
 DeviceMemoryLimits buffer_memory_limits(const Context& context);
 
 class Buffer {
 public:
     Buffer() = default;
-    Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage);
+    // `name` labels the buffer (and its view) in validation messages and debuggers. With a
+    // `view_format`, the buffer also gets a VkBufferView of that format over all of it (a texel
+    // buffer).
+    Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage, const std::string& name,
+           VkFormat view_format = VK_FORMAT_UNDEFINED);
     ~Buffer();
     Buffer(Buffer&& other) noexcept;
     Buffer& operator=(Buffer&& other) noexcept;
@@ -26,6 +32,7 @@ public:
     Buffer& operator=(const Buffer&) = delete;
 
     VkBuffer handle() const { return buffer_; }
+    VkBufferView view() const { return view_; }
     VkDeviceSize size() const { return size_; }
     void* data() const { return mapped_; }
     void write(const void* src, std::size_t bytes, std::size_t offset = 0) const {
@@ -38,6 +45,7 @@ private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkBuffer buffer_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkBufferView view_ = VK_NULL_HANDLE;
     VkDeviceSize size_ = 0;
     void* mapped_ = nullptr;
 };

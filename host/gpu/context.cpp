@@ -151,6 +151,13 @@ std::uint32_t validation_message_count() { return g_validation_messages.load(); 
 
 void forget_validation_messages(std::uint32_t count) { g_validation_messages.fetch_sub(count); }
 
+int exit_code_after_validation(int code) {
+    std::uint32_t n = validation_message_count();
+    if (!n) return code;
+    std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);
+    return 1;
+}
+
 bool validation_requested_by_environment() {
     const char* v = std::getenv("LANCER_VALIDATION");
     return v && std::strcmp(v, "0") != 0 && v[0] != '\0';
@@ -213,11 +220,17 @@ Context::Context(const ContextOptions& options) {
         device_info.pQueueCreateInfos = &queue_info;
         VK_CHECK(vkCreateDevice(physical_, &device_info, nullptr, &device_));
         vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+        if (debug_utils)
+            set_object_name_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+                vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
 
         VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
         pool_info.queueFamilyIndex = queue_family_;
         VK_CHECK(vkCreateCommandPool(device_, &pool_info, nullptr, &command_pool_));
+        set_name(VK_OBJECT_TYPE_COMMAND_POOL, command_pool_, "commands");
+        set_name(VK_OBJECT_TYPE_QUEUE, queue_, "compute queue");
+        set_name(VK_OBJECT_TYPE_DEVICE, device_, info_.name);
     } catch (...) {
         release();
         throw;
@@ -225,6 +238,16 @@ Context::Context(const ContextOptions& options) {
 }
 
 Context::~Context() { release(); }
+
+void Context::set_name_of(VkObjectType type, std::uint64_t handle, const std::string& name) const {
+    if (!set_object_name_ || !handle) return;
+    const std::string label = "lancer " + name;
+    VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+    info.objectType = type;
+    info.objectHandle = handle;
+    info.pObjectName = label.c_str();
+    set_object_name_(device_, &info);
+}
 
 void Context::release() noexcept {
     if (device_) {

@@ -29,6 +29,11 @@ std::uint32_t validation_message_count();
 // For tests that provoke a message on purpose to prove the layer is active.
 void forget_validation_messages(std::uint32_t count);
 
+// The exit code of a run that would end with `code`: 1, with one line on stderr, when the
+// validation layer reported anything during the run. Release every Vulkan object first, so that
+// teardown is checked too.
+int exit_code_after_validation(int code);
+
 // True when LANCER_VALIDATION=1 is set: how tests and CI turn the validation layer on.
 bool validation_requested_by_environment();
 
@@ -55,9 +60,17 @@ public:
     std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
                               VkMemoryPropertyFlags preferred) const;
 
+    // Labels a Vulkan object, so that validation messages (and debuggers) say which buffer or
+    // pipeline they mean: "lancer PRIMITIVES". Does nothing without VK_EXT_debug_utils, which the
+    // context enables with validation.
+    template <class Handle>
+    void set_name(VkObjectType type, Handle handle, const std::string& name) const {
+        set_name_of(type, (std::uint64_t)handle, name);
+    }
 
 private:
     void release() noexcept;
+    void set_name_of(VkObjectType type, std::uint64_t handle, const std::string& name) const;
     static VKAPI_ATTR VkBool32 VKAPI_CALL on_validation_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                                  VkDebugUtilsMessageTypeFlagsEXT types,
                                                                  const VkDebugUtilsMessengerCallbackDataEXT* data,
@@ -65,6 +78,7 @@ private:
 
     VkInstance instance_ = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    PFN_vkSetDebugUtilsObjectNameEXT set_object_name_ = nullptr;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;

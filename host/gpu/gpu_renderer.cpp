@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
-#include <type_traits>
 
 #include "gpu/embedded_shaders.hpp"
 #include "gpu/layout.hpp"
@@ -27,31 +26,18 @@ GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration accele
       layout_(std::make_unique<gpu::TraceLayout>(*context_)),
       base_tree_(gpu::embedded_tree()),
       spirv_(gpu::embedded_trace_spirv()),
+      resources_(*context_, layout_->set_layout()),
       acceleration_(acceleration) {
     VkDevice device = context_->device();
-    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 12}};
-    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pool_info.maxSets = 1;
-    pool_info.poolSizeCount = 2;
-    pool_info.pPoolSizes = sizes;
-    VK_CHECK(vkCreateDescriptorPool(device, &pool_info, nullptr, &descriptor_pool_));
-    VkDescriptorSetLayout set_layout = layout_->set_layout();
-    VkDescriptorSetAllocateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    set_info.descriptorPool = descriptor_pool_;
-    set_info.descriptorSetCount = 1;
-    set_info.pSetLayouts = &set_layout;
-    VK_CHECK(vkAllocateDescriptorSets(device, &set_info, &descriptor_set_));
-
     VkCommandBufferAllocateInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     cmd_info.commandPool = context_->command_pool();
     cmd_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     cmd_info.commandBufferCount = 1;
     VK_CHECK(vkAllocateCommandBuffers(device, &cmd_info, &command_buffer_));
+    context_->set_name(VK_OBJECT_TYPE_COMMAND_BUFFER, command_buffer_, "band dispatches");
     VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VK_CHECK(vkCreateFence(device, &fence_info, nullptr, &fence_));
-
-    frame_ = gpu::Buffer(*context_, sizeof(gpu::FrameParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    context_->set_name(VK_OBJECT_TYPE_FENCE, fence_, "band done");
 }
 
 GpuRenderer::~GpuRenderer() {
@@ -59,24 +45,7 @@ GpuRenderer::~GpuRenderer() {
     vkDeviceWaitIdle(device);
     if (fence_) vkDestroyFence(device, fence_, nullptr);
     if (command_buffer_) vkFreeCommandBuffers(device, context_->command_pool(), 1, &command_buffer_);
-    if (descriptor_pool_) vkDestroyDescriptorPool(device, descriptor_pool_, nullptr);
-    // Buffers and the pipeline go before the context (member order alone would destroy the context last
-    // anyway; being explicit keeps it true if members move).
-    output_ = {};
-    textures_ = {};
-    texels_ = {};
-    patterns_ = {};
-    permutation_ = {};
-    nodes_ = {};
-    patches_ = {};
-    surfaces_ = {};
-    cells_ = {};
-    lights_ = {};
-    materials_ = {};
-    primitives_ = {};
-    frame_ = {};
     pipelines_.clear();
-    layout_.reset();
 }
 
 namespace {
@@ -96,14 +65,25 @@ void GpuRenderer::use_shaders(const gpu::ShaderTree& tree, const std::string& di
     std::vector<std::uint32_t> spirv =
         gpu::compile_compute(with_surface_code(tree, surface_code_), gpu::kTraceShader, {}, display_root);
     // Prove the new code builds before dropping the old pipelines (the plain variant is cheap).
-    auto probe = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv, gpu::PipelineVariant{});
+    auto probe = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv, gpu::ShaderFeatures{});
     VK_CHECK(vkDeviceWaitIdle(context_->device()));  // old pipelines may still be in use
     pipelines_.clear();
-    pipelines_[gpu::PipelineVariant{}] = std::move(probe);
+    pipelines_[gpu::ShaderFeatures{}] = std::move(probe);
     spirv_ = std::move(spirv);
     base_tree_ = tree;
     base_is_embedded_ = false;
     display_root_ = display_root;
+}
+
+void GpuRenderer::use_shader_directory(const std::string& directory) {
+    use_shaders(gpu::directory_tree(directory), directory);
+}
+
+std::vector<std::string> GpuRenderer::notes() const {
+    if (!bands_rerendered_) return {};
+    return {fmt::format("{} band(s) rendered again with one sample per shader invocation: the driver limits loop "
+                        "iterations per invocation (lavapipe)",
+                        bands_rerendered_)};
 }
 
 void GpuRenderer::ensure_program(const std::string& surface_code) {
@@ -118,9 +98,9 @@ void GpuRenderer::ensure_program(const std::string& surface_code) {
     surface_code_ = surface_code;
 }
 
-void GpuRenderer::select_pipeline(const gpu::PipelineVariant& variant) {
-    auto& slot = pipelines_[variant];
-    if (!slot) slot = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv_, variant);
+void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features) {
+    auto& slot = pipelines_[features];
+    if (!slot) slot = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv_, features);
     pipeline_ = slot.get();
 }
 
@@ -129,91 +109,14 @@ std::string GpuRenderer::description() const {
     return "gpu: " + info.name + " (" + info.type + ", " + info.driver + ")";
 }
 
-// Writes `items` into `buffer` (grown to hold at least one element, since empty buffers are
-// invalid) unless they are byte for byte what it already holds. The structs have no implicit
-// padding (layout.hpp asserts their sizes), so comparing bytes compares values.
-template <typename T>
-void GpuRenderer::upload(gpu::Buffer& buffer, std::vector<T>& shadow, std::vector<T>&& items) {
-    const std::size_t bytes = items.size() * sizeof(T);
-    if (buffer.size() < std::max<VkDeviceSize>(sizeof(T), bytes)) {
-        buffer = gpu::Buffer(*context_, std::max<VkDeviceSize>(sizeof(T), bytes), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        descriptors_dirty_ = true;
-        shadow.clear();
-        shadow.shrink_to_fit();
-    } else if (items.size() == shadow.size() && (bytes == 0 || std::memcmp(items.data(), shadow.data(), bytes) == 0)) {
-        // (bytes == 0 first: an empty vector's data() may be null, and memcmp must not see a null pointer)
-        last_upload_.bytes_skipped += bytes;
-        return;
-    }
-    if (bytes) buffer.write(items.data(), bytes);
-    last_upload_.bytes_written += bytes;
-    shadow = std::move(items);
-}
-
-gpu::PipelineVariant GpuRenderer::upload_scene(const Scene& scene) {
-    last_upload_ = {};
-    gpu::PackedScene packed = gpu::pack_scene(scene, acceleration_, &bvh_cache_);
-    gpu::FrameParams frame = gpu::pack_frame(scene, packed);
-    gpu::PipelineVariant variant{!packed.patches.empty(), !packed.nodes.empty()};
-    variant.check_loop_limit = context_->info().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
-    variant.has_textures = !packed.textures.empty();
-    variant.has_patterns = !packed.patterns.empty();
-    variant.has_transparency = packed.features.transparency;
-    variant.has_area_lights = packed.features.area_lights;
-    variant.has_spot_lights = packed.features.spot_lights;
-    variant.has_falloff = packed.features.falloff;
-    variant.has_blinn = packed.features.blinn;
-    // The loader keeps textures within 2^27 bytes, the least any Vulkan device allows.
-    const std::size_t texel_bytes = packed.texels.size() * sizeof(gpu::uint);
-    if (texel_bytes > context_->limits().maxStorageBufferRange)
-        throw UserError(fmt::format("the scene's textures need {} bytes in one storage buffer; this device allows {} "
-                                    "(maxStorageBufferRange)",
-                                    texel_bytes, context_->limits().maxStorageBufferRange));
-    upload(primitives_, primitives_shadow_, std::move(packed.primitives));
-    upload(nodes_, nodes_shadow_, std::move(packed.nodes));
-    upload(patches_, patches_shadow_, std::move(packed.patches));
-    upload(surfaces_, surfaces_shadow_, std::move(packed.surfaces));
-    upload(cells_, cells_shadow_, std::move(packed.cells));
-    upload(materials_, materials_shadow_, std::move(packed.materials));
-    upload(lights_, lights_shadow_, std::move(packed.lights));
-    upload(textures_, textures_shadow_, std::move(packed.textures));
-    upload(texels_, texels_shadow_, std::move(packed.texels));
-    upload(patterns_, patterns_shadow_, std::move(packed.patterns));
-    upload(permutation_, permutation_shadow_, std::move(packed.permutation));
-    frame_.write(&frame, sizeof(frame));
-    last_upload_.bytes_written += sizeof(frame);
-    return variant;
-}
-
-void GpuRenderer::ensure_output(std::size_t bytes) {
-    if (output_.size() >= bytes) return;
-    output_ = gpu::Buffer(*context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    descriptors_dirty_ = true;
-}
-
-void GpuRenderer::update_descriptors() {
-    if (!descriptors_dirty_) return;
-    const std::pair<std::uint32_t, const gpu::Buffer*> buffers[] = {
-        {gpu::BINDING_FRAME, &frame_},   {gpu::BINDING_PRIMITIVES, &primitives_}, {gpu::BINDING_MATERIALS, &materials_},
-        {gpu::BINDING_LIGHTS, &lights_}, {gpu::BINDING_OUTPUT, &output_},         {gpu::BINDING_NODES, &nodes_},
-        {gpu::BINDING_PATCHES, &patches_}, {gpu::BINDING_SURFACES, &surfaces_}, {gpu::BINDING_CELLS, &cells_},
-        {gpu::BINDING_TEXTURES, &textures_}, {gpu::BINDING_TEXELS, &texels_}, {gpu::BINDING_PATTERNS, &patterns_},
-        {gpu::BINDING_PERMUTATION, &permutation_}};
-    constexpr int kBindings = static_cast<int>(std::extent_v<decltype(buffers)>);
-    VkDescriptorBufferInfo infos[kBindings];
-    VkWriteDescriptorSet writes[kBindings];
-    for (int i = 0; i < kBindings; ++i) {
-        infos[i] = {buffers[i].second->handle(), 0, VK_WHOLE_SIZE};
-        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[i].dstSet = descriptor_set_;
-        writes[i].dstBinding = buffers[i].first;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = buffers[i].first == gpu::BINDING_FRAME ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                                                          : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        writes[i].pBufferInfo = &infos[i];
-    }
-    vkUpdateDescriptorSets(context_->device(), kBindings, writes, 0, nullptr);
-    descriptors_dirty_ = false;
+gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes) {
+    const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
+    gpu::PackedScene packed = gpu::pack_scene(scene, {acceleration_, &bvh_cache_, &limits});
+    gpu::check_memory_budget(gpu::buffer_needs(packed, output_bytes), limits);
+    resources_.upload(packed, gpu::pack_frame(scene, packed));
+    gpu::ShaderFeatures features = packed.features;
+    features.check_loop_limit = context_->info().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
+    return features;
 }
 
 void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_pass, std::uint32_t width, double done,
@@ -224,8 +127,9 @@ void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_p
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(command_buffer_, &begin));
     vkCmdBindPipeline(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->handle());
-    vkCmdBindDescriptorSets(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_->pipeline_layout(), 0, 1,
-                            &descriptor_set_, 0, nullptr);
+    VkDescriptorSet set = resources_.descriptor_set();
+    vkCmdBindDescriptorSets(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_->pipeline_layout(), 0, 1, &set, 0,
+                            nullptr);
     const std::uint32_t end = band.sample_first + band.sample_count;
     for (std::uint32_t first = band.sample_first; first < end; first += per_pass) {
         if (first > band.sample_first) {
@@ -313,33 +217,30 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
         if (m.microfacet())
             throw UserError("material '" + m.name + "': the GPU backend does not render microfacet materials; use --backend cpu");
     if (scene.photons) throw UserError("the GPU backend does not do photon mapping; use --backend cpu");
-    // Before anything is packed or allocated: a scene the device cannot hold is a clear error.
-    gpu::check_memory_budget(gpu::scene_buffer_needs(scene, rows * row_bytes), gpu::buffer_memory_limits(*context_));
-    gpu::PipelineVariant variant = upload_scene(scene);
-    variant.output_hits = output_hits;
+    gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes);
+    features.output_hits = output_hits;
     ensure_program(gpu::surface_functions_glsl(scene));
-    select_pipeline(variant);
-    ensure_output(rows * row_bytes);
-    update_descriptors();
+    select_pipeline(features);
+    const gpu::Buffer& output = resources_.output(rows * row_bytes);
 
     if (!continues) image = FloatImage(rs.width, rs.height);
     for (std::uint32_t y0 = 0; y0 < height; y0 += static_cast<std::uint32_t>(rows)) {
         auto band_rows = static_cast<std::uint32_t>(std::min<std::size_t>(rows, height - y0));
         glm::vec4* band_start = &image.pixels[std::size_t(y0) * width];
         const std::size_t band_bytes = band_rows * row_bytes;
-        const auto* band = static_cast<const gpu::vec4*>(output_.data());
+        const auto* band = static_cast<const gpu::vec4*>(output.data());
         auto cut_short = [&] {
-            return variant.check_loop_limit && !output_hits &&
+            return features.check_loop_limit && !output_hits &&
                    std::any_of(band, band + std::size_t(band_rows) * width, [](const gpu::vec4& p) { return p.a < 0.0f; });
         };
         const gpu::BandParams params{y0, band_rows, samples.first, samples.count};
-        if (continues) std::memcpy(output_.data(), band_start, band_bytes);
+        if (continues) std::memcpy(output.data(), band_start, band_bytes);
         // All of the range's samples in one invocation is fastest (lavapipe: ~1.5x one per
         // invocation); where the driver's loop limit cut that short, one sample per pass.
         dispatch_band(params, samples.count, width, double(y0) / height, progress);
         if (samples.count > 1 && cut_short()) {
             ++bands_rerendered_;
-            if (continues) std::memcpy(output_.data(), band_start, band_bytes);  // the sums before this range
+            if (continues) std::memcpy(output.data(), band_start, band_bytes);  // the sums before this range
             dispatch_band(params, 1, width, double(y0) / height, progress);
         }
         if (cut_short())
@@ -347,7 +248,7 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
                 "a sample of this scene needs more loop iterations than the {} driver allows in one shader "
                 "invocation (65535); render with --backend cpu, or lower max_depth or the number of lights",
                 context_->info().name));
-        std::memcpy(band_start, output_.data(), band_bytes);
+        std::memcpy(band_start, output.data(), band_bytes);
         if (progress && !progress(double(y0 + band_rows) / height)) throw RenderCancelled();
     }
 }

@@ -7,22 +7,14 @@
 #include <vector>
 
 #include "accel/bvh.hpp"
-#include "gpu/buffer.hpp"
 #include "gpu/context.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/pipeline.hpp"
 #include "gpu/shader_compiler.hpp"
+#include "gpu/trace_resources.hpp"
 #include "render/renderer.hpp"
 
 namespace lancer {
-
-// What the last render() copied to the GPU. Scene buffers whose packed contents equal what the
-// GPU already holds are skipped, so an animation frame that only moves the camera writes the
-// frame uniform alone, and one that moves lights writes the light buffer too.
-struct UploadStats {
-    std::size_t bytes_written = 0;  // frame uniform included
-    std::size_t bytes_skipped = 0;  // scene buffers left as they were
-};
 
 class GpuRenderer final : public Renderer {
 public:
@@ -33,6 +25,9 @@ public:
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
     FloatImage render_hits(const Scene& scene) override;
     void prepare(const Scene& scene) override;
+    std::vector<std::string> notes() const override;
+    bool runs_shaders() const override { return true; }
+    void use_shader_directory(const std::string& directory) override;
 
     // Progressive rendering (the viewer): traces samples [first, first + count) of every pixel's
     // N x N grid, continuing `sums`, which holds what the passes before left (ignored, and
@@ -51,7 +46,7 @@ public:
     // Bands rendered again with one sample per invocation because the driver's loop limit cut
     // the first attempt short (lavapipe; see shaders/trace.comp), since this renderer was made.
     std::size_t bands_rerendered() const { return bands_rerendered_; }
-    const UploadStats& last_upload() const { return last_upload_; }
+    const gpu::UploadStats& last_upload() const { return resources_.last_upload(); }
     std::size_t bvh_builds() const { return bvh_cache_.builds(); }  // trees built so far (for tests)
 
     // Rebuilds the tracer from GLSL sources at run time (same entry point, same defines as the
@@ -61,16 +56,13 @@ public:
     void use_shaders(const gpu::ShaderTree& tree, const std::string& display_root = "");
 
 private:
-    // Returns the pipeline variant the scene needs.
-    gpu::PipelineVariant upload_scene(const Scene& scene);
-    template <typename T>
-    void upload(gpu::Buffer& buffer, std::vector<T>& shadow, std::vector<T>&& items);
+    // Packs the scene within the device's limits and uploads it; returns the shader features
+    // it needs.
+    gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes);
     // Makes spirv_ the tracer built from base_tree_ with `surface_code` as surface_functions.glsl
     // ("" = the file as it is in the tree), compiling only when that changed.
     void ensure_program(const std::string& surface_code);
-    void select_pipeline(const gpu::PipelineVariant& variant);
-    void ensure_output(std::size_t bytes);
-    void update_descriptors();
+    void select_pipeline(const gpu::ShaderFeatures& features);
     struct SampleRange {
         std::uint32_t first, count;
     };
@@ -91,30 +83,12 @@ private:
     std::string display_root_;
     std::string surface_code_;
     std::vector<std::uint32_t> spirv_;
-    std::map<gpu::PipelineVariant, std::unique_ptr<gpu::ComputePipeline>> pipelines_;
+    std::map<gpu::ShaderFeatures, std::unique_ptr<gpu::ComputePipeline>> pipelines_;
     gpu::ComputePipeline* pipeline_ = nullptr;  // the one for the current render
-    gpu::Buffer frame_, primitives_, nodes_, patches_, surfaces_, cells_, materials_, lights_, output_;
-    gpu::Buffer textures_, texels_, patterns_, permutation_;
-    VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
-    VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;
+    gpu::TraceResources resources_;
     VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
-    bool descriptors_dirty_ = true;
     Acceleration acceleration_;
-    // What each scene buffer holds, kept on the host to compare against (reading mapped GPU
-    // memory back can be very slow on discrete GPUs).
-    std::vector<gpu::Primitive> primitives_shadow_;
-    std::vector<gpu::BvhNode> nodes_shadow_;
-    std::vector<gpu::PatchLeaf> patches_shadow_;
-    std::vector<gpu::SurfaceInfo> surfaces_shadow_;
-    std::vector<gpu::ParametricCell> cells_shadow_;
-    std::vector<gpu::Material> materials_shadow_;
-    std::vector<gpu::Light> lights_shadow_;
-    std::vector<gpu::TextureInfo> textures_shadow_;
-    std::vector<gpu::uint> texels_shadow_;
-    std::vector<gpu::PatternInfo> patterns_shadow_;
-    std::vector<int> permutation_shadow_;
-    UploadStats last_upload_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
     std::size_t bands_rerendered_ = 0;
     std::size_t max_dispatch_samples_ = 0;

@@ -2,33 +2,20 @@
 
 #include <array>
 #include <iterator>
+#include <string>
 #include <utility>
 
 #include "gpu/layout.hpp"
+#include "gpu/resource_kinds.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace lancer::gpu {
 
 TraceLayout::TraceLayout(const Context& context) : device_(context.device()) {
-    const std::array<std::pair<uint, VkDescriptorType>, 13> kinds = {{
-        {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-        {BINDING_PRIMITIVES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_PATCHES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_SURFACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_CELLS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_TEXELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_PATTERNS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-        {BINDING_PERMUTATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-    }};
-    std::array<VkDescriptorSetLayoutBinding, kinds.size()> bindings{};
-    for (std::size_t i = 0; i < kinds.size(); ++i) {
-        bindings[i].binding = kinds[i].first;
-        bindings[i].descriptorType = kinds[i].second;
+    std::array<VkDescriptorSetLayoutBinding, kResourceCount> bindings{};
+    for (std::size_t i = 0; i < kResourceCount; ++i) {
+        bindings[i].binding = kResources[i].binding;
+        bindings[i].descriptorType = descriptor_type(kResources[i].kind);
         bindings[i].descriptorCount = 1;
         bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     }
@@ -37,6 +24,7 @@ TraceLayout::TraceLayout(const Context& context) : device_(context.device()) {
         set_info.bindingCount = static_cast<std::uint32_t>(bindings.size());
         set_info.pBindings = bindings.data();
         VK_CHECK(vkCreateDescriptorSetLayout(device_, &set_info, nullptr, &set_layout_));
+        context.set_name(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, set_layout_, "tracer descriptors");
 
         VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(BandParams)};
         VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -45,6 +33,7 @@ TraceLayout::TraceLayout(const Context& context) : device_(context.device()) {
         layout_info.pushConstantRangeCount = 1;
         layout_info.pPushConstantRanges = &push;
         VK_CHECK(vkCreatePipelineLayout(device_, &layout_info, nullptr, &pipeline_layout_));
+        context.set_name(VK_OBJECT_TYPE_PIPELINE_LAYOUT, pipeline_layout_, "tracer");
     } catch (...) {
         release();
         throw;
@@ -61,27 +50,17 @@ void TraceLayout::release() noexcept {
 }
 
 ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layout,
-                                 const std::vector<std::uint32_t>& spirv, const PipelineVariant& variant)
+                                 const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features)
     : device_(context.device()) {
-    const std::pair<uint, bool> constants[] = {
-        {SPEC_HAS_BEZIER, variant.has_bezier},
-        {SPEC_HAS_BVH, variant.has_bvh},
-        {SPEC_OUTPUT_HITS, variant.output_hits},
-        {SPEC_CHECK_LOOP_LIMIT, variant.check_loop_limit},
-        {SPEC_HAS_TEXTURES, variant.has_textures},
-        {SPEC_HAS_PATTERNS, variant.has_patterns},
-        {SPEC_HAS_TRANSPARENCY, variant.has_transparency},
-        {SPEC_HAS_AREA_LIGHTS, variant.has_area_lights},
-        {SPEC_HAS_SPOT_LIGHTS, variant.has_spot_lights},
-        {SPEC_HAS_FALLOFF, variant.has_falloff},
-        {SPEC_HAS_BLINN, variant.has_blinn},
-    };
-    constexpr std::size_t kCount = std::size(constants);
+    constexpr std::size_t kCount = std::size(kFeatures);
     std::array<VkBool32, kCount> values{};
     std::array<VkSpecializationMapEntry, kCount> entries{};
+    std::string name = "tracer";
     for (std::size_t i = 0; i < kCount; ++i) {
-        values[i] = constants[i].second ? VK_TRUE : VK_FALSE;
-        entries[i] = {constants[i].first, static_cast<std::uint32_t>(i * sizeof(VkBool32)), sizeof(VkBool32)};
+        const bool on = features.*kFeatures[i].member;
+        values[i] = on ? VK_TRUE : VK_FALSE;
+        entries[i] = {kFeatures[i].id, static_cast<std::uint32_t>(i * sizeof(VkBool32)), sizeof(VkBool32)};
+        if (on) name += std::string(" ") + kFeatures[i].name;
     }
     VkSpecializationInfo specialization{};
     specialization.mapEntryCount = static_cast<std::uint32_t>(kCount);
@@ -105,6 +84,7 @@ ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layo
     VkResult result = vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_);
     vkDestroyShaderModule(device_, module, nullptr);
     VK_CHECK(result);
+    context.set_name(VK_OBJECT_TYPE_PIPELINE, pipeline_, name);
 }
 
 ComputePipeline::~ComputePipeline() {

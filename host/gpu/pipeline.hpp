@@ -1,11 +1,13 @@
 #pragma once
-// The tracer's pipeline layout (bindings from shaders/layout.h, created once per device) and the
-// compute pipeline built against it from SPIR-V, which can be replaced (hot reload, expression
-// surfaces) without touching descriptor sets.
+// The tracer's pipeline layout (the descriptors of LANCER_RESOURCES in shaders/layout.h, created
+// once per device) and the compute pipeline built against it from SPIR-V and the specialisation
+// constants of LANCER_FEATURES, which can be replaced (hot reload, expression surfaces) without
+// touching descriptor sets.
 #include <cstdint>
 #include <vector>
 
 #include "gpu/context.hpp"
+#include "gpu/layout.hpp"
 
 namespace lancer::gpu {
 
@@ -27,28 +29,10 @@ private:
     VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
 };
 
-// Which optional shape families and shading features a pipeline is specialised for (the shader's specialization
-// constants; see shaders/scene.glsl). Code for families a scene lacks is compiled out.
-struct PipelineVariant {
-    bool has_bezier = false;
-    bool has_bvh = false;
-    bool output_hits = false;
-    bool check_loop_limit = false;  // lavapipe; see loop_limit_reached() in shaders/trace.comp
-    // Shading features (shaders/trace.comp, shade.glsl, appearance.glsl).
-    bool has_textures = false;
-    bool has_patterns = false;  // colour patterns or bumps
-    bool has_transparency = false;
-    bool has_area_lights = false;
-    bool has_spot_lights = false;
-    bool has_falloff = false;
-    bool has_blinn = false;
-    auto operator<=>(const PipelineVariant&) const = default;
-};
-
 class ComputePipeline {
 public:
     ComputePipeline(const Context& context, const TraceLayout& layout, const std::vector<std::uint32_t>& spirv,
-                    const PipelineVariant& variant);
+                    const ShaderFeatures& features);
     ~ComputePipeline();
     ComputePipeline(const ComputePipeline&) = delete;
     ComputePipeline& operator=(const ComputePipeline&) = delete;

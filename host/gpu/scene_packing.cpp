@@ -40,6 +40,7 @@ void pack_box(const Aabb& box, vec4& lo, vec4& hi) {
 struct PrimitivePacker {
     PackedScene& out;
     std::vector<std::pair<Primitive, std::optional<Aabb>>>& prims;
+    const DeviceMemoryLimits* limits;
     uint material = 0;
     uint object = 0;
 
@@ -96,6 +97,7 @@ struct PrimitivePacker {
     // boxes cull more rays before Bezier clipping starts, and clipping converges sooner.
     void operator()(const BezierSurface& s) {
         const int n = 1 << s.subdivision;
+        if (limits) check_buffer_need(array_need(SceneArray::PATCHES, out.patches.size() + s.patches.size() * n * n), *limits);
         for (std::size_t i = 0; i < s.patches.size(); ++i) {
             for (int a = 0; a < n; ++a) {
                 for (int b = 0; b < n; ++b) {
@@ -224,13 +226,14 @@ float round_up(double x) {
     return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-PackedScene pack_scene(const Scene& scene, Acceleration acceleration, BvhCache* cache) {
+PackedScene pack_scene(const Scene& scene, const PackOptions& options) {
     PackedScene packed;
     std::vector<std::pair<Primitive, std::optional<Aabb>>> prims;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
-        std::visit(PrimitivePacker{packed, prims, o.material, static_cast<uint>(i)}, o.shape);
+        std::visit(PrimitivePacker{packed, prims, options.limits, o.material, static_cast<uint>(i)}, o.shape);
     }
+    const Acceleration acceleration = options.acceleration;
     std::size_t bounded_count = 0;
     for (const auto& [p, box] : prims) bounded_count += box.has_value();
     bool use_bvh = acceleration == Acceleration::BvhAlways ||
@@ -246,7 +249,7 @@ PackedScene pack_scene(const Scene& scene, Acceleration acceleration, BvhCache* 
         }
     }
     Bvh built;
-    const Bvh& bvh = cache ? cache->build(boxes) : (built = build_bvh(boxes));
+    const Bvh& bvh = options.cache ? options.cache->build(boxes) : (built = build_bvh(boxes));
     for (std::uint32_t index : bvh.order) packed.primitives.push_back(bounded[index]);
     packed.primitives.insert(packed.primitives.end(), unbounded.begin(), unbounded.end());
     packed.unbounded_count = static_cast<uint>(unbounded.size());
@@ -261,16 +264,49 @@ PackedScene pack_scene(const Scene& scene, Acceleration acceleration, BvhCache* 
     for (const lancer::Material& m : scene.materials) packed.materials.push_back(maps.material(m));
     if (!packed.patterns.empty()) packed.permutation.assign(kPerlinPermutation.begin(), kPerlinPermutation.end());
     for (const lancer::Light& l : scene.lights) packed.lights.push_back(pack_light(l));
+    ShaderFeatures& f = packed.features;
+    f.has_bezier = !packed.patches.empty();
+    f.has_bvh = !packed.nodes.empty();
+    f.has_textures = !packed.textures.empty();
+    f.has_patterns = !packed.patterns.empty();
     for (const lancer::Material& m : scene.materials) {
-        packed.features.transparency |= m.transparent();
-        packed.features.blinn |= m.highlight == Highlight::Blinn;
+        f.has_transparency |= m.transparent();
+        f.has_blinn |= m.highlight == Highlight::Blinn;
     }
     for (const lancer::Light& l : scene.lights) {
-        packed.features.area_lights |= l.type == LightType::Area;
-        packed.features.spot_lights |= l.type == LightType::Spot;
-        packed.features.falloff |= l.falloff != Falloff::None;
+        f.has_area_lights |= l.type == LightType::Area;
+        f.has_spot_lights |= l.type == LightType::Spot;
+        f.has_falloff |= l.falloff != Falloff::None;
     }
     return packed;
+}
+
+std::size_t PackedScene::count(SceneArray array) const {
+    switch (array) {
+#define LANCER_PACKED_COUNT(NAME, slot, kind, Element, member, reader, what) \
+    case SceneArray::NAME: return member.size();
+        LANCER_SCENE_ARRAYS(LANCER_PACKED_COUNT)
+#undef LANCER_PACKED_COUNT
+    }
+    return 0;
+}
+
+std::span<const std::byte> PackedScene::bytes(SceneArray array) const {
+    switch (array) {
+#define LANCER_PACKED_BYTES(NAME, slot, kind, Element, member, reader, what) \
+    case SceneArray::NAME: return std::as_bytes(std::span(member));
+        LANCER_SCENE_ARRAYS(LANCER_PACKED_BYTES)
+#undef LANCER_PACKED_BYTES
+    }
+    return {};
+}
+
+std::vector<BufferNeed> buffer_needs(const PackedScene& packed, std::uint64_t output_bytes) {
+    std::vector<BufferNeed> needs;
+    for (std::size_t a = 0; a < kSceneArrayCount; ++a)
+        needs.push_back(array_need(SceneArray(a), packed.count(SceneArray(a))));
+    needs.push_back({"output rows", RESOURCE_OUTPUT, output_bytes / sizeof(vec4), output_bytes});
+    return needs;
 }
 
 FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {

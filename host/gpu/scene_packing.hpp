@@ -1,44 +1,46 @@
 #pragma once
-// Scene model -> the GPU structs of shaders/layout.h: primitives ordered for the BVH (bounded
-// ones in leaf order, then the unbounded planes), the flattened BVH, materials and lights.
-// Pure data conversion, no Vulkan.
+// Scene model -> the GPU's arrays (LANCER_SCENE_ARRAYS in shaders/layout.h): primitives ordered
+// for the BVH (bounded ones in leaf order, then the unbounded planes), the flattened BVH,
+// materials, lights, patch leaves, parametric cells, textures and patterns; and which optional
+// shader features the scene needs. Pure data conversion, no Vulkan.
+#include <cstddef>
+#include <span>
 #include <vector>
 
 #include "accel/bvh.hpp"
 #include "gpu/layout.hpp"
+#include "gpu/memory_budget.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
 namespace lancer::gpu {
 
-// The optional shading features a scene uses: the pipeline compiles out the others.
-struct ShadingFeatures {
-    bool transparency = false;
-    bool area_lights = false;
-    bool spot_lights = false;
-    bool falloff = false;
-    bool blinn = false;
-};
-
 struct PackedScene {
-    std::vector<Primitive> primitives;
-    std::vector<BvhNode> nodes;
-    std::vector<PatchLeaf> patches;
-    std::vector<SurfaceInfo> surfaces;
-    std::vector<ParametricCell> cells;
-    std::vector<Material> materials;
-    std::vector<TextureInfo> textures;  // one per material with a texture
-    std::vector<uint> texels;           // every texture image once, RGBA8
-    std::vector<PatternInfo> patterns;  // colour patterns and bumps
-    std::vector<int> permutation;       // Ken Perlin's, when there are patterns
-    std::vector<Light> lights;
+#define LANCER_PACKED_ARRAY(NAME, slot, kind, Element, member, reader, what) std::vector<Element> member;
+    LANCER_SCENE_ARRAYS(LANCER_PACKED_ARRAY)
+#undef LANCER_PACKED_ARRAY
     uint unbounded_count = 0;
-    ShadingFeatures features;
+    // The scene's shape families and shading features: has_bezier, has_bvh, has_textures, ...
+    // (output_hits and check_loop_limit are the renderer's to set).
+    ShaderFeatures features;
+
+    std::size_t count(SceneArray array) const;
+    std::span<const std::byte> bytes(SceneArray array) const;
 };
 
-// With a cache, a BVH over the same boxes as the last one is not built again (animations).
-PackedScene pack_scene(const Scene& scene, Acceleration acceleration = Acceleration::Bvh, BvhCache* cache = nullptr);
+struct PackOptions {
+    Acceleration acceleration = Acceleration::Bvh;
+    BvhCache* cache = nullptr;  // with one, a BVH over the same boxes as the last one is not built again
+    // When given, an array that would not fit the device is refused (UserError) before it is
+    // filled: Bezier leaves multiply a scene's patches by up to 256.
+    const DeviceMemoryLimits* limits = nullptr;
+};
+
+PackedScene pack_scene(const Scene& scene, const PackOptions& options = {});
 FrameParams pack_frame(const Scene& scene, const PackedScene& packed);
+
+// What the packed scene needs on the device, one entry per array, and the output band.
+std::vector<BufferNeed> buffer_needs(const PackedScene& packed, std::uint64_t output_bytes);
 
 // float(x) rounded toward -inf / +inf, so float boxes contain their double originals.
 float round_down(double x);

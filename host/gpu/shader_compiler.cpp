@@ -149,6 +149,7 @@ std::vector<ReflectedMember> reflect_block_members(const ShaderTree& tree, const
     std::vector<ReflectedMember> members;
     for (int i = 0; i < c.program->getNumUniformVariables(); ++i) {
         const auto& u = c.program->getUniform(i);
+        if (u.getType()->getBasicType() == glslang::EbtSampler) continue;  // not in a block (texel buffers)
         members.push_back({u.name, u.offset, 0});
     }
     for (int i = 0; i < c.program->getNumBufferVariables(); ++i) {
@@ -158,15 +159,32 @@ std::vector<ReflectedMember> reflect_block_members(const ShaderTree& tree, const
     return members;
 }
 
-std::map<std::string, int> reflect_block_bindings(const ShaderTree& tree, const std::string& entry) {
+std::vector<ReflectedResource> reflect_resources(const ShaderTree& tree, const std::string& entry) {
     Compiled c = compile(tree, entry, {}, "");
     c.program->buildReflection(EShReflectionSeparateBuffers);
-    std::map<std::string, int> bindings;
-    for (int i = 0; i < c.program->getNumUniformBlocks(); ++i)
-        bindings[c.program->getUniformBlock(i).name] = c.program->getUniformBlock(i).getBinding();
+    std::vector<ReflectedResource> resources;
+    for (int i = 0; i < c.program->getNumUniformBlocks(); ++i) {
+        const glslang::TObjectReflection& block = c.program->getUniformBlock(i);
+        const bool push = block.getType()->getQualifier().isPushConstant();
+        resources.push_back({block.name, push ? "push constants" : "uniform block", block.getBinding()});
+    }
     for (int i = 0; i < c.program->getNumBufferBlocks(); ++i)
-        bindings[c.program->getBufferBlock(i).name] = c.program->getBufferBlock(i).getBinding();
-    return bindings;
+        resources.push_back({c.program->getBufferBlock(i).name, "storage block", c.program->getBufferBlock(i).getBinding()});
+    for (int i = 0; i < c.program->getNumUniformVariables(); ++i) {
+        const glslang::TObjectReflection& u = c.program->getUniform(i);
+        const glslang::TType* type = u.getType();
+        if (type->getBasicType() != glslang::EbtSampler) continue;  // a member of a uniform block
+        std::string kind = "other uniform";
+        if (type->getSampler().dim == glslang::EsdBuffer && !type->getSampler().isImage()) {
+            switch (type->getSampler().type) {
+                case glslang::EbtUint: kind = "uint texel buffer"; break;
+                case glslang::EbtInt: kind = "int texel buffer"; break;
+                default: kind = "float texel buffer"; break;
+            }
+        }
+        resources.push_back({u.name, kind, u.getBinding()});
+    }
+    return resources;
 }
 
 }  // namespace lancer::gpu

@@ -5,7 +5,6 @@
 // line they occur in, included files too.
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -44,7 +43,14 @@ struct ReflectedMember {
     int top_level_stride;  // for members of a runtime-sized array of structs: the struct's stride
 };
 std::vector<ReflectedMember> reflect_block_members(const ShaderTree& tree, const std::string& entry);
-// Block name (e.g. "TextureBlock") -> its descriptor binding, for layout tests.
-std::map<std::string, int> reflect_block_bindings(const ShaderTree& tree, const std::string& entry);
+
+// One resource of the shader's interface as glslang reflects it, for layout tests.
+struct ReflectedResource {
+    std::string name;  // a block's name ("FRAME_Block") or a texel buffer's ("PRIMITIVES_texels")
+    std::string kind;  // "uniform block", "storage block", "push constants", "uint texel buffer",
+                       // "int texel buffer", "float texel buffer", or "other uniform" (images, ...)
+    int binding;       // -1 for push constants
+};
+std::vector<ReflectedResource> reflect_resources(const ShaderTree& tree, const std::string& entry);
 
 }  // namespace lancer::gpu

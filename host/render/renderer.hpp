@@ -3,7 +3,9 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "core/error.hpp"
 #include "image/image.hpp"
 #include "scene/scene.hpp"
 
@@ -41,6 +43,18 @@ public:
     // (t, u, v, part): t < 0 for a miss, (u, v) the surface's own parameters where it has them,
     // part the index of the patch hit in a Bezier surface (else -1).
     virtual FloatImage render_hits(const Scene& scene) = 0;
+
+    // What the user should know about the renders so far beyond their pictures, one line each
+    // (e.g. work the driver's limits made the GPU renderer do again).
+    virtual std::vector<std::string> notes() const { return {}; }
+
+    // Renderers that run shaders compile them from the sources in `directory` instead of the
+    // built-in ones (development, `lancer watch`); throws ShaderCompileError (a UserError) and
+    // keeps the shaders it had when they do not compile. The others refuse.
+    virtual bool runs_shaders() const { return false; }
+    virtual void use_shader_directory(const std::string& /*directory*/) {
+        throw UserError("--shaders needs the gpu backend");
+    }
 };
 
 }  // namespace lancer

@@ -362,11 +362,7 @@ int run_viewer(const ViewerOptions& options) {
         Viewer viewer(options);
         viewer.run(watcher);
     }  // worker joined, every Vulkan object released, window closed
-    if (std::uint32_t n = gpu::validation_message_count()) {
-        std::fprintf(stderr, "lancer: error: %u Vulkan validation message(s)\n", n);
-        return 1;
-    }
-    return 0;
+    return gpu::exit_code_after_validation(0);
 }
 
 }  // namespace lancer::view

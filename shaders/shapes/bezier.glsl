@@ -11,8 +11,6 @@
 
 // The small fixed loops are [[unroll]]ed: lavapipe counts every iteration of a loop that stays a
 // loop against its per-invocation limit (see loop_limit_reached in trace.comp), and unrolled they also run faster.
-layout(std430, set = 0, binding = BINDING_PATCHES) readonly buffer PatchBlock { PatchLeaf patch_leaves[]; };
-
 const float BEZIER_EPS = 1e-5;     // converged box width, in the leaf's own parameters
 const float BEZIER_SLACK = 1e-6;   // absolute widening of each clip, in the leaf's parameters
 const int BEZIER_STACK = 32;       // pending boxes after splits
@@ -96,7 +94,7 @@ vec2 clip_interval(vec4 net[16], vec2 line, bool along_u, float eps) {
 
 bool bezier_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit) {
     uint leaf = prim.data;
-    vec3 o = ray.origin - patch_leaves[leaf].origin.xyz;  // re-origin: small numbers near the patch
+    vec3 o = ray.origin - patch_leaf_at(leaf).origin.xyz;  // re-origin: small numbers near the patch
     vec3 d = ray.dir;
     // Two planes through the ray: n1, n2 perpendicular to d and to each other.
     vec3 a = abs(d.x) <= abs(d.y) && abs(d.x) <= abs(d.z) ? vec3(1.0, 0.0, 0.0)
@@ -108,7 +106,7 @@ bool bezier_intersect(Primitive prim, Ray ray, float t_min, float t_max, out flo
     vec4 base[16];
     float extent = 0.0;
     [[unroll]] for (int k = 0; k < 16; ++k) {
-        vec4 p = patch_leaves[leaf].points[k];
+        vec4 p = patch_leaf_at(leaf).points[k];
         vec3 q = p.xyz - o;
         base[k] = p.w * vec4(dot(n1, q), dot(n2, q), dot(d, q), 1.0);
         extent = max(extent, p.w * length(q));
@@ -204,7 +202,7 @@ void bezier_leaf_eval(uint leaf, vec2 uv, out vec3 P, out vec3 Pu, out vec3 Pv) 
     vec4 h = vec4(0.0), hu = vec4(0.0), hv = vec4(0.0);
     [[unroll]] for (int i = 0; i < 4; ++i) {
         [[unroll]] for (int j = 0; j < 4; ++j) {
-            vec4 p = patch_leaves[leaf].points[4 * i + j];
+            vec4 p = patch_leaf_at(leaf).points[4 * i + j];
             vec4 hp = vec4(p.xyz * p.w, p.w);
             h += bu[i] * bv[j] * hp;
             hu += du[i] * bv[j] * hp;

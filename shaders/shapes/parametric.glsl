@@ -7,9 +7,6 @@
 // n1.(S(u,v) - o) = 0 and n2.(S(u,v) - o) = 0, by Newton from where the ray crosses the cell's
 // corner triangles (else from the cell's centre), and keeps a converged root inside the cell.
 
-layout(std430, set = 0, binding = BINDING_SURFACES) readonly buffer SurfaceBlock { SurfaceInfo surfaces[]; };
-layout(std430, set = 0, binding = BINDING_CELLS) readonly buffer CellBlock { ParametricCell cells[]; };
-
 #include "surface_functions.glsl"
 
 const int NEWTON_STEPS = 12;
@@ -18,7 +15,7 @@ const int NEWTON_STEPS = 12;
 void surface_world(uint surface, vec2 uv, out vec3 P, out vec3 Pu, out vec3 Pv) {
     vec3 p, pu, pv;
     surface_eval(surface, uv, p, pu, pv);
-    SurfaceInfo s = surfaces[surface];
+    SurfaceInfo s = surface_at(surface);
     mat3 m = transpose(mat3(s.row0.xyz, s.row1.xyz, s.row2.xyz));
     P = m * p + vec3(s.row0.w, s.row1.w, s.row2.w);
     Pu = m * pu;
@@ -77,7 +74,7 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
     // The cell's own proved box first (p0, p1): a BVH leaf holds several cells, and a slab test
     // costs far less than Newton's method.
     if (box_entry(prim.p0.xyz, prim.p1.xyz, ray.origin, safe_inverse(ray.dir), t_max) == INFINITY) return false;
-    ParametricCell c = cells[prim.data];
+    ParametricCell c = cell_at(prim.data);
     uint surface = uint(c.p00.w);
     vec4 cell = c.domain;  // (u0, u1, v0, v1)
     vec2 size = vec2(cell.y - cell.x, cell.w - cell.z);
@@ -115,13 +112,13 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
 // Unit normal from the exact partials; at poles and collapsed edges (S_u x S_v = 0) the limit
 // normal is taken a little toward the inside of the surface's domain.
 vec3 parametric_normal(Primitive prim, vec2 uv) {
-    uint surface = uint(cells[prim.data].p00.w);
+    uint surface = uint(cell_at(prim.data).p00.w);
     vec3 P, Pu, Pv;
     surface_world(surface, uv, P, Pu, Pv);
     vec3 n = cross(Pu, Pv);
     float scale = dot(Pu, Pu) + dot(Pv, Pv);
     if (dot(n, n) <= 1e-12 * scale * scale) {
-        vec4 dom = surfaces[surface].domain;
+        vec4 dom = surface_at(surface).domain;
         vec2 centre = vec2(0.5 * (dom.x + dom.y), 0.5 * (dom.z + dom.w));
         surface_world(surface, mix(uv, centre, 1e-3), P, Pu, Pv);
         n = cross(Pu, Pv);
@@ -132,6 +129,6 @@ vec3 parametric_normal(Primitive prim, vec2 uv) {
 
 // Texture (u, v): the hit's parameters, the surface's domain mapped to [0, 1] x [0, 1].
 vec2 parametric_texture_uv(Primitive prim, vec2 uv) {
-    vec4 dom = surfaces[uint(cells[prim.data].p00.w)].domain;
+    vec4 dom = surface_at(uint(cell_at(prim.data).p00.w)).domain;
     return (uv - dom.xz) / (dom.yw - dom.xz);
 }

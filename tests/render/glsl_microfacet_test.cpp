@@ -10,7 +10,7 @@
 
 #include "optics/ggx.hpp"
 #include "optics/metals.hpp"
-#include "support/device_kernel.hpp"
+#include "support/gpu_kernel.hpp"
 
 namespace lancer {
 namespace {
@@ -18,19 +18,23 @@ namespace {
 using glm::dvec3;
 
 // Per case, 4 vec4 in: (wo, alpha), (wi, eta), (u1, u2, k, 0); 4 vec4 out.
-const char* kKernel = R"(
+const char* kKernel = R"(#version 450
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
+#include "interface.glsl"
+layout(local_size_x = 1) in;
 #include "microfacet.glsl"
 void main() {
     uint i = gl_GlobalInvocationID.x;
-    vec4 a = data[8u * i], b = data[8u * i + 1u], c = data[8u * i + 2u];
+    vec4 a = pixels[8u * i], b = pixels[8u * i + 1u], c = pixels[8u * i + 2u];
     vec3 wo = a.xyz, wi = b.xyz;
     float alpha = a.w;
-    data[8u * i + 4u] = vec4(ggx_distribution(normalize(wo + wi).z, alpha), smith_g1(wo.z, alpha),
+    pixels[8u * i + 4u] = vec4(ggx_distribution(normalize(wo + wi).z, alpha), smith_g1(wo.z, alpha),
                              smith_g2(wo.z, wi.z, alpha), ggx_reflection(wo, wi, alpha));
-    data[8u * i + 5u] = vec4(sample_visible_normal(wo, alpha, c.xy), 0.0);
-    data[8u * i + 6u] = vec4(conductor_fresnel_channel(wo.z, b.w, c.z), conductor_fresnel_channel(wi.z, b.w, c.z), 0.0, 0.0);
+    pixels[8u * i + 5u] = vec4(sample_visible_normal(wo, alpha, c.xy), 0.0);
+    pixels[8u * i + 6u] = vec4(conductor_fresnel_channel(wo.z, b.w, c.z), conductor_fresnel_channel(wi.z, b.w, c.z), 0.0, 0.0);
     mat3 frame = basis_around(normalize(wi));
-    data[8u * i + 7u] = vec4(dot(frame[0], frame[1]), dot(frame[0], frame[2]), length(frame[0]) - 1.0, length(frame[1]) - 1.0);
+    pixels[8u * i + 7u] = vec4(dot(frame[0], frame[1]), dot(frame[0], frame[2]), length(frame[0]) - 1.0, length(frame[1]) - 1.0);
 }
 )";
 
@@ -38,7 +42,8 @@ TEST(GlslMicrofacetOnDevice, AgreesWithTheDoublePrecisionModel) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u01(0.0, 1.0);
     const int cases = 512;
-    std::vector<float> data(cases * 32, 0.0f);
+    std::vector<glm::vec4> io(cases * 8, glm::vec4(0.0f));
+    float* data = &io[0].x;
     struct Case {
         dvec3 wo, wi;
         double alpha, eta, k, u1, u2;
@@ -60,7 +65,8 @@ TEST(GlslMicrofacetOnDevice, AgreesWithTheDoublePrecisionModel) {
         d[4] = float(c.wi.x), d[5] = float(c.wi.y), d[6] = float(c.wi.z), d[7] = float(c.eta);
         d[8] = float(c.u1), d[9] = float(c.u2), d[10] = float(c.k);
     }
-    std::vector<float> out = test::run_kernel(kKernel, data, cases);
+    std::vector<glm::vec4> result = test::GpuKernel(kKernel).run(io, cases);
+    const float* out = &result[0].x;
     auto near = [](double got, double want, double rel) { return std::abs(got - want) <= rel * std::max(1.0, std::abs(want)); };
     for (int i = 0; i < cases; ++i) {
         const Case& c = in[i];

@@ -4,16 +4,13 @@
 // what it computes, derivative rules included.)
 #include <cmath>
 #include <cstring>
-#include <memory>
-#include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "support/device_kernel.hpp"
-#include "support/test_support.hpp"
+#include "support/gpu_kernel.hpp"
 #include "surface/expr/evaluate.hpp"
 #include "surface/expr/glsl_emitter.hpp"
 #include "unit/surface_fixtures.hpp"
@@ -26,21 +23,24 @@ using surface::ParametricSurface;
 
 // Runs surf() at each (u, v) on the device; returns P, Pu, Pv per point (12 floats with padding).
 std::vector<float> run_on_device(const std::string& function, const std::vector<std::pair<float, float>>& uvs) {
-    const std::string body = function +
-                             "void main() {\n"
-                             "    uint i = gl_GlobalInvocationID.x;\n"
-                             "    vec3 P, Pu, Pv;\n"
-                             "    surf(data[4u * i].xy, P, Pu, Pv);\n"
-                             "    data[4u * i + 1u] = vec4(P, 0.0);\n"
-                             "    data[4u * i + 2u] = vec4(Pu, 0.0);\n"
-                             "    data[4u * i + 3u] = vec4(Pv, 0.0);\n"
-                             "}\n";
-    std::vector<float> data(uvs.size() * 16, 0.0f);
-    for (std::size_t i = 0; i < uvs.size(); ++i) {
-        data[16 * i] = uvs[i].first;
-        data[16 * i + 1] = uvs[i].second;
-    }
-    return test::run_kernel(body, std::move(data), static_cast<std::uint32_t>(uvs.size()));
+    const std::string source = "#version 450\n#extension GL_GOOGLE_include_directive : require\n"
+                               "#extension GL_EXT_control_flow_attributes : require\n#include \"interface.glsl\"\n"
+                               "layout(local_size_x = 1) in;\n" +
+                               function +
+                               "void main() {\n"
+                               "    uint i = gl_GlobalInvocationID.x;\n"
+                               "    vec3 P, Pu, Pv;\n"
+                               "    surf(pixels[4u * i].xy, P, Pu, Pv);\n"
+                               "    pixels[4u * i + 1u] = vec4(P, 0.0);\n"
+                               "    pixels[4u * i + 2u] = vec4(Pu, 0.0);\n"
+                               "    pixels[4u * i + 3u] = vec4(Pv, 0.0);\n"
+                               "}\n";
+    std::vector<glm::vec4> io(uvs.size() * 4, glm::vec4(0.0f));
+    for (std::size_t i = 0; i < uvs.size(); ++i) io[4 * i] = glm::vec4(uvs[i].first, uvs[i].second, 0.0f, 0.0f);
+    io = test::GpuKernel(source).run(io, static_cast<std::uint32_t>(uvs.size()));
+    std::vector<float> data(io.size() * 4);
+    std::memcpy(data.data(), io.data(), data.size() * sizeof(float));
+    return data;
 }
 
 // Compares the device's results with Dual<double> at the same (float) parameters. Float

@@ -1,7 +1,13 @@
-// The host's structs (shaders/layout.h compiled as C++) must match what glslang lays out for the
-// shader: every member offset of every block, taken from glslang's reflection of trace.comp.
+// The host's view of the interface (shaders/layout.h compiled as C++) must be what glslang makes
+// of the shader: every member of every block it reflects at the host's offset, every member the
+// host has reflected, and every descriptor of LANCER_RESOURCES declared at its binding with the
+// type its kind means. Nothing here lists members or bindings by hand: a member or resource added
+// to layout.h is checked at once. (Structs read from texel buffers have no block to reflect:
+// tests/render/interface_test.cpp reads each back through the shader instead.)
 #include <cstddef>
 #include <map>
+#include <set>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -12,7 +18,7 @@
 namespace lancer::gpu {
 namespace {
 
-// The shaders, with a parametric surface compiled in, so the blocks only its code uses are
+// The shaders, with a parametric surface compiled in, so the resources only its code uses are
 // reflected too.
 ShaderTree full_tree() {
     auto disk = directory_tree(test::source_path("shaders"));
@@ -25,132 +31,81 @@ ShaderTree full_tree() {
     };
 }
 
-std::map<std::string, int> reflected(bool strides = false) {
-    std::map<std::string, int> values;
-    for (const auto& m : reflect_block_members(full_tree(), "trace.comp"))
-        values[m.name] = strides ? m.top_level_stride : m.offset;
-    return values;
+// Member name -> offset in the C++ struct, from the struct's row list.
+using Offsets = std::map<std::string, std::size_t>;
+#define OFFSET_VEC4(name) {#name, offsetof(S, name)},
+#define OFFSET_VEC4S(name, n) {#name, offsetof(S, name)},
+#define OFFSET_SCALARS(T0, n0, T1, n1, T2, n2, T3, n3) \
+    {#n0, offsetof(S, n0)}, {#n1, offsetof(S, n1)}, {#n2, offsetof(S, n2)}, {#n3, offsetof(S, n3)},
+#define HOST_OFFSETS(Name)                                                          \
+    [] {                                                                             \
+        using S = Name;                                                              \
+        return Offsets{LANCER_ROWS_##Name(OFFSET_VEC4, OFFSET_VEC4S, OFFSET_SCALARS)}; \
+    }()
+
+// The block variables of the shader, by their name in glslang's reflection, and the host struct
+// each holds (an array of vec4 has the one member "", at offset 0).
+struct BlockVariable {
+    Offsets members;
+    int stride;  // of a runtime-sized array, else 0
+};
+std::map<std::string, BlockVariable> host_block_variables() {
+    return {{"frame", {HOST_OFFSETS(FrameParams), 0}},
+            {"band", {HOST_OFFSETS(BandParams), 0}},
+            {"pixels", {Offsets{{"", 0}}, int(sizeof(vec4))}}};
 }
 
-#define EXPECT_OFFSET(block_member, type, member) \
-    do {                                                                                 \
-        auto found = offsets.find(block_member);                                         \
-        ASSERT_NE(found, offsets.end()) << "glslang does not reflect " << block_member;   \
-        EXPECT_EQ(found->second, static_cast<int>(offsetof(type, member))) << block_member; \
-        ++checked;                                                                       \
-    } while (0)
-
-TEST(Layout, HostOffsetsMatchGlslangReflection) {
-    auto offsets = reflected();
-    int checked = 0;
-    EXPECT_OFFSET("frame.eye", FrameParams, eye);
-    EXPECT_OFFSET("frame.forward", FrameParams, forward);
-    EXPECT_OFFSET("frame.right", FrameParams, right);
-    EXPECT_OFFSET("frame.up", FrameParams, up);
-    EXPECT_OFFSET("frame.background", FrameParams, background);
-    EXPECT_OFFSET("frame.ambient", FrameParams, ambient);
-    EXPECT_OFFSET("frame.width", FrameParams, width);
-    EXPECT_OFFSET("frame.height", FrameParams, height);
-    EXPECT_OFFSET("frame.samples", FrameParams, samples);
-    EXPECT_OFFSET("frame.max_depth", FrameParams, max_depth);
-    EXPECT_OFFSET("frame.primitive_count", FrameParams, primitive_count);
-    EXPECT_OFFSET("frame.light_count", FrameParams, light_count);
-    EXPECT_OFFSET("frame.node_count", FrameParams, node_count);
-    EXPECT_OFFSET("frame.unbounded_count", FrameParams, unbounded_count);
-    EXPECT_OFFSET("frame.loop_probe", FrameParams, loop_probe);
-    EXPECT_OFFSET("primitives.type", Primitive, type);
-    EXPECT_OFFSET("primitives.material", Primitive, material);
-    EXPECT_OFFSET("primitives.p0", Primitive, p0);
-    EXPECT_OFFSET("primitives.p1", Primitive, p1);
-    EXPECT_OFFSET("primitives.p2", Primitive, p2);
-    EXPECT_OFFSET("primitives.data", Primitive, data);
-    EXPECT_OFFSET("primitives.object", Primitive, object);
-    EXPECT_OFFSET("nodes.lo", BvhNode, lo);
-    EXPECT_OFFSET("nodes.hi", BvhNode, hi);
-    EXPECT_OFFSET("nodes.first", BvhNode, first);
-    EXPECT_OFFSET("nodes.count", BvhNode, count);
-    EXPECT_OFFSET("patch_leaves.points", PatchLeaf, points);
-    EXPECT_OFFSET("patch_leaves.origin", PatchLeaf, origin);
-    EXPECT_OFFSET("patch_leaves.domain", PatchLeaf, domain);
-    EXPECT_OFFSET("surfaces.row0", SurfaceInfo, row0);
-    EXPECT_OFFSET("surfaces.row1", SurfaceInfo, row1);
-    EXPECT_OFFSET("surfaces.row2", SurfaceInfo, row2);
-    EXPECT_OFFSET("surfaces.domain", SurfaceInfo, domain);
-    EXPECT_OFFSET("cells.domain", ParametricCell, domain);
-    EXPECT_OFFSET("cells.p00", ParametricCell, p00);
-    EXPECT_OFFSET("cells.p10", ParametricCell, p10);
-    EXPECT_OFFSET("cells.p01", ParametricCell, p01);
-    EXPECT_OFFSET("cells.p11", ParametricCell, p11);
-    EXPECT_OFFSET("materials.color", Material, color);
-    EXPECT_OFFSET("materials.color2", Material, color2);
-    EXPECT_OFFSET("materials.phong", Material, phong);
-    EXPECT_OFFSET("materials.reflection", Material, reflection);
-    EXPECT_OFFSET("materials.pattern", Material, pattern);
-    EXPECT_OFFSET("materials.checker_size", Material, checker_size);
-    EXPECT_OFFSET("materials.texture_map", Material, texture_map);
-    EXPECT_OFFSET("materials.color_pattern", Material, color_pattern);
-    EXPECT_OFFSET("materials.bump_pattern", Material, bump_pattern);
-    EXPECT_OFFSET("materials.transmission", Material, transmission);
-    EXPECT_OFFSET("materials.absorption", Material, absorption);
-    EXPECT_OFFSET("materials.highlight", Material, highlight);
-    EXPECT_OFFSET("textures.to_image_s", TextureInfo, to_image_s);
-    EXPECT_OFFSET("textures.to_image_t", TextureInfo, to_image_t);
-    EXPECT_OFFSET("textures.texel_offset", TextureInfo, texel_offset);
-    EXPECT_OFFSET("textures.width", TextureInfo, width);
-    EXPECT_OFFSET("textures.height", TextureInfo, height);
-    EXPECT_OFFSET("textures.flags", TextureInfo, flags);
-    EXPECT_OFFSET("patterns.row0", PatternInfo, row0);
-    EXPECT_OFFSET("patterns.row1", PatternInfo, row1);
-    EXPECT_OFFSET("patterns.row2", PatternInfo, row2);
-    EXPECT_OFFSET("patterns.params", PatternInfo, params);
-    EXPECT_OFFSET("patterns.type", PatternInfo, type);
-    EXPECT_OFFSET("patterns.octaves", PatternInfo, octaves);
-    EXPECT_OFFSET("patterns.color_count", PatternInfo, color_count);
-    EXPECT_OFFSET("patterns.colors", PatternInfo, colors);
-    EXPECT_OFFSET("lights.position", Light, position);
-    EXPECT_OFFSET("lights.color", Light, color);
-    EXPECT_OFFSET("lights.direction", Light, direction);
-    EXPECT_OFFSET("lights.spot", Light, spot);
-    EXPECT_OFFSET("lights.edge_u", Light, edge_u);
-    EXPECT_OFFSET("lights.edge_v", Light, edge_v);
-    EXPECT_OFFSET("lights.type", Light, type);
-    EXPECT_OFFSET("lights.samples", Light, samples);
-    EXPECT_OFFSET("lights.jitter", Light, jitter);
-    EXPECT_OFFSET("band.y0", BandParams, y0);
-    EXPECT_OFFSET("band.rows", BandParams, rows);
-    EXPECT_OFFSET("band.sample_first", BandParams, sample_first);
-    EXPECT_OFFSET("band.sample_count", BandParams, sample_count);
-    EXPECT_GT(checked, 0);
+TEST(Layout, EveryReflectedBlockMemberIsAtTheHostsOffsetAndEveryHostMemberIsReflected) {
+    const auto host = host_block_variables();
+    std::set<std::string> seen;
+    for (const ReflectedMember& m : reflect_block_members(full_tree(), "trace.comp")) {
+        const std::string variable = m.name.substr(0, m.name.find('.'));
+        const std::string member = m.name.find('.') == std::string::npos ? "" : m.name.substr(m.name.find('.') + 1);
+        auto block = host.find(variable);
+        ASSERT_NE(block, host.end()) << "the shader has a block variable the host does not know: " << m.name;
+        auto offset = block->second.members.find(member);
+        ASSERT_NE(offset, block->second.members.end()) << "the host's struct has no member " << m.name;
+        EXPECT_EQ(m.offset, static_cast<int>(offset->second)) << m.name;
+        if (block->second.stride) EXPECT_EQ(m.top_level_stride, block->second.stride) << m.name;
+        seen.insert(variable + "." + member);
+    }
+    for (const auto& [variable, block] : host)
+        for (const auto& [member, offset] : block.members)
+            EXPECT_TRUE(seen.count(variable + "." + member)) << "glslang does not reflect " << variable << "." << member;
 }
 
-TEST(Layout, ArrayStridesMatchHostSizes) {
-    auto strides = reflected(/*strides=*/true);
-    EXPECT_EQ(strides.at("primitives.p0"), static_cast<int>(sizeof(Primitive)));
-    EXPECT_EQ(strides.at("materials.color"), static_cast<int>(sizeof(Material)));
-    EXPECT_EQ(strides.at("lights.color"), static_cast<int>(sizeof(Light)));
-    EXPECT_EQ(strides.at("nodes.lo"), static_cast<int>(sizeof(BvhNode)));
-    EXPECT_EQ(strides.at("patch_leaves.origin"), static_cast<int>(sizeof(PatchLeaf)));
-    EXPECT_EQ(strides.at("surfaces.row0"), static_cast<int>(sizeof(SurfaceInfo)));
-    EXPECT_EQ(strides.at("cells.p00"), static_cast<int>(sizeof(ParametricCell)));
-    EXPECT_EQ(strides.at("textures.flags"), static_cast<int>(sizeof(TextureInfo)));
-    EXPECT_EQ(strides.at("patterns.colors"), static_cast<int>(sizeof(PatternInfo)));
-    EXPECT_EQ(strides.at("texels"), static_cast<int>(sizeof(uint)));
-    EXPECT_EQ(strides.at("perlin_permutation"), static_cast<int>(sizeof(int)));
+// What a resource kind must look like in the shader.
+std::string reflected_kind(uint kind) {
+    switch (kind) {
+        case RESOURCE_UNIFORM: return "uniform block";
+        case RESOURCE_OUTPUT: return "storage block";
+        case RESOURCE_ROWS:
+        case RESOURCE_UINT: return "uint texel buffer";
+        case RESOURCE_INT: return "int texel buffer";
+    }
+    return "unknown kind";
 }
 
-// Every block the shader declares sits at the binding layout.h names for it (the host binds
-// its buffers by those names), and every binding is used.
-TEST(Layout, BlockBindingsAreLayoutConstants) {
-    const std::map<std::string, int> expected = {
-        {"FrameBlock", int(BINDING_FRAME)},         {"PrimitiveBlock", int(BINDING_PRIMITIVES)},
-        {"MaterialBlock", int(BINDING_MATERIALS)},  {"LightBlock", int(BINDING_LIGHTS)},
-        {"OutputBlock", int(BINDING_OUTPUT)},       {"NodeBlock", int(BINDING_NODES)},
-        {"PatchBlock", int(BINDING_PATCHES)},       {"SurfaceBlock", int(BINDING_SURFACES)},
-        {"CellBlock", int(BINDING_CELLS)},          {"TextureBlock", int(BINDING_TEXTURES)},
-        {"TexelBlock", int(BINDING_TEXELS)},        {"PatternBlock", int(BINDING_PATTERNS)},
-        {"PermutationBlock", int(BINDING_PERMUTATION)},
-        {"BandBlock", -1}};  // push constants: no binding
-    EXPECT_EQ(reflect_block_bindings(full_tree(), "trace.comp"), expected);
+TEST(Layout, EveryResourceIsDeclaredAtItsBindingWithItsKindAndNothingElse) {
+    std::map<std::string, std::pair<std::string, int>> expected;
+    for (const ResourceSpec& r : kResources) {
+        const std::string kind = reflected_kind(r.kind);
+        const std::string suffix = kind.find("texel") != std::string::npos ? "_texels" : "_Block";
+        expected[std::string(r.name) + suffix] = {kind, int(r.binding)};
+    }
+    expected["BandBlock"] = {"push constants", -1};
+    std::map<std::string, std::pair<std::string, int>> declared;
+    for (const ReflectedResource& r : reflect_resources(full_tree(), "trace.comp")) declared[r.name] = {r.kind, r.binding};
+    EXPECT_EQ(declared, expected);
+}
+
+// Every row list adds up to its struct's size (also static_asserted), and texel-buffer
+// elements are whole texels.
+TEST(Layout, ResourceElementsAreWholeTexels) {
+    for (const ResourceSpec& r : kResources) {
+        if (!texel_bytes(r.kind)) continue;
+        EXPECT_EQ(r.element_bytes % texel_bytes(r.kind), 0u) << r.name;
+    }
 }
 
 }  // namespace

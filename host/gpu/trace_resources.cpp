@@ -1,0 +1,107 @@
+#include "gpu/trace_resources.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "gpu/resource_kinds.hpp"
+#include "gpu/vk_check.hpp"
+
+namespace lancer::gpu {
+TraceResources::TraceResources(const Context& context, VkDescriptorSetLayout set_layout) : context_(context) {
+    VkDevice device = context.device();
+    std::vector<VkDescriptorPoolSize> sizes;
+    for (const ResourceSpec& r : kResources) {
+        VkDescriptorType type = descriptor_type(r.kind);
+        auto same = std::find_if(sizes.begin(), sizes.end(), [&](const auto& s) { return s.type == type; });
+        if (same == sizes.end()) sizes.push_back({type, 1});
+        else ++same->descriptorCount;
+    }
+    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool_info.maxSets = 1;
+    pool_info.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+    pool_info.pPoolSizes = sizes.data();
+    VK_CHECK(vkCreateDescriptorPool(device, &pool_info, nullptr, &pool_));
+    context.set_name(VK_OBJECT_TYPE_DESCRIPTOR_POOL, pool_, "tracer descriptors");
+    VkDescriptorSetAllocateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    set_info.descriptorPool = pool_;
+    set_info.descriptorSetCount = 1;
+    set_info.pSetLayouts = &set_layout;
+    try {
+        VK_CHECK(vkAllocateDescriptorSets(device, &set_info, &set_));
+    } catch (...) {
+        vkDestroyDescriptorPool(device, pool_, nullptr);
+        throw;
+    }
+    context.set_name(VK_OBJECT_TYPE_DESCRIPTOR_SET, set_, "tracer descriptors");
+}
+
+TraceResources::~TraceResources() {
+    buffers_ = {};
+    if (pool_) vkDestroyDescriptorPool(context_.device(), pool_, nullptr);
+}
+
+bool TraceResources::reserve(uint binding, std::size_t bytes) {
+    const ResourceSpec& r = resource(binding);
+    // At least one element: an empty buffer (or texel view) is invalid.
+    bytes = std::max(bytes, r.element_bytes);
+    Buffer& buffer = buffers_[binding];
+    if (buffer.size() >= bytes) return false;
+    buffer = Buffer(context_, bytes, buffer_usage(r.kind), r.name, texel_format(r.kind));
+    descriptors_dirty_ = true;
+    return true;
+}
+
+void TraceResources::upload(const PackedScene& packed, const FrameParams& frame) {
+    last_upload_ = {};
+    for (std::size_t a = 0; a < kSceneArrayCount; ++a) {
+        std::span<const std::byte> bytes = packed.bytes(SceneArray(a));
+        std::vector<std::byte>& held = held_[a];
+        const uint binding = kSceneArrays[a].binding;
+        if (reserve(binding, bytes.size())) {
+            held.clear();
+        } else if (std::equal(bytes.begin(), bytes.end(), held.begin(), held.end())) {
+            last_upload_.bytes_skipped += bytes.size();
+            continue;
+        }
+        if (!bytes.empty()) buffers_[binding].write(bytes.data(), bytes.size());
+        held.assign(bytes.begin(), bytes.end());
+        last_upload_.bytes_written += bytes.size();
+    }
+    reserve(BINDING_FRAME, sizeof(frame));
+    buffers_[BINDING_FRAME].write(&frame, sizeof(frame));
+    last_upload_.bytes_written += sizeof(frame);
+}
+
+const Buffer& TraceResources::output(std::size_t bytes) {
+    reserve(BINDING_OUTPUT, bytes);
+    return buffers_[BINDING_OUTPUT];
+}
+
+VkDescriptorSet TraceResources::descriptor_set() {
+    if (!descriptors_dirty_) return set_;
+    std::array<VkDescriptorBufferInfo, kResourceCount> infos{};
+    std::array<VkBufferView, kResourceCount> views{};
+    std::array<VkWriteDescriptorSet, kResourceCount> writes{};
+    for (std::size_t i = 0; i < kResourceCount; ++i) {
+        const ResourceSpec& r = kResources[i];
+        reserve(r.binding, 0);  // a resource nothing was written to yet still needs a valid buffer
+        const Buffer& buffer = buffers_[r.binding];
+        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[i].dstSet = set_;
+        writes[i].dstBinding = r.binding;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = descriptor_type(r.kind);
+        if (buffer.view()) {
+            views[i] = buffer.view();
+            writes[i].pTexelBufferView = &views[i];
+        } else {
+            infos[i] = {buffer.handle(), 0, VK_WHOLE_SIZE};
+            writes[i].pBufferInfo = &infos[i];
+        }
+    }
+    vkUpdateDescriptorSets(context_.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+    descriptors_dirty_ = false;
+    return set_;
+}
+
+}  // namespace lancer::gpu

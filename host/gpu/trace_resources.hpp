@@ -1,0 +1,57 @@
+#pragma once
+// The tracer's descriptor set and the buffers behind it, one per entry of LANCER_RESOURCES
+// (shaders/layout.h): the frame's uniform block, a texel buffer per scene array, the output
+// band. Everything about a resource (descriptor type, texel format, buffer usage, pool size,
+// debug name) follows from its kind in that table.
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "gpu/buffer.hpp"
+#include "gpu/context.hpp"
+#include "gpu/layout.hpp"
+#include "gpu/scene_packing.hpp"
+
+namespace lancer::gpu {
+
+// What the last upload() copied to the GPU. Scene arrays whose packed contents equal what the
+// GPU already holds are skipped, so an animation frame that only moves the camera writes the
+// frame uniform alone, and one that moves lights writes the light array too.
+struct UploadStats {
+    std::size_t bytes_written = 0;  // frame uniform included
+    std::size_t bytes_skipped = 0;  // scene arrays left as they were
+};
+
+class TraceResources {
+public:
+    TraceResources(const Context& context, VkDescriptorSetLayout set_layout);
+    ~TraceResources();
+    TraceResources(const TraceResources&) = delete;
+    TraceResources& operator=(const TraceResources&) = delete;
+
+    // Writes the frame parameters, and each packed array unless it is what its buffer holds.
+    void upload(const PackedScene& packed, const FrameParams& frame);
+    const UploadStats& last_upload() const { return last_upload_; }
+
+    // The output band: at least `bytes`, mapped for reading back.
+    const Buffer& output(std::size_t bytes);
+
+    // The descriptor set, its writes brought up to date with the buffers.
+    VkDescriptorSet descriptor_set();
+
+private:
+    // Makes the buffer of `binding` hold at least `bytes`; true when it was (re)made.
+    bool reserve(uint binding, std::size_t bytes);
+
+    const Context& context_;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    std::array<Buffer, kResourceCount> buffers_;  // by binding
+    // What each scene array's buffer holds, kept on the host to compare against (reading mapped
+    // GPU memory back can be very slow on discrete GPUs).
+    std::array<std::vector<std::byte>, kSceneArrayCount> held_;
+    bool descriptors_dirty_ = true;
+    UploadStats last_upload_;
+};
+
+}  // namespace lancer::gpu

@@ -1,0 +1,60 @@
+// The shader's side of the host interface, declared from the tables in layout.h: every
+// descriptor of set 0 with the function that reads it, and every specialisation constant.
+// Nothing here is written by hand per struct or per buffer.
+#ifndef LANCER_INTERFACE_GLSL
+#define LANCER_INTERFACE_GLSL
+
+#include "layout.h"
+
+// Reading a struct from a texel buffer: one RGBA32UI texel per row of layout.h's list, in order.
+// A member the caller never uses is never fetched (texel fetches have no side effects, so the
+// compiler drops them).
+void lancer_unpack(uint word, out uint value) { value = word; }
+void lancer_unpack(uint word, out int value) { value = int(word); }
+void lancer_unpack(uint word, out float value) { value = uintBitsToFloat(word); }
+
+#define LANCER_READ_VEC4(name) r.name = uintBitsToFloat(texelFetch(texels, k++));
+#define LANCER_READ_VEC4S(name, n) \
+    [[unroll]] for (int j = 0; j < (n); ++j) r.name[j] = uintBitsToFloat(texelFetch(texels, k++));
+#define LANCER_READ_SCALARS(T0, n0, T1, n1, T2, n2, T3, n3) \
+    {                                                        \
+        uvec4 w = texelFetch(texels, k++);                   \
+        lancer_unpack(w.x, r.n0);                            \
+        lancer_unpack(w.y, r.n1);                            \
+        lancer_unpack(w.z, r.n2);                            \
+        lancer_unpack(w.w, r.n3);                            \
+    }
+
+// X(NAME, slot, kind, Element, member, reader, what) -> the declaration for its kind.
+#define LANCER_DECLARE(NAME, slot, kind, Element, member, reader, what) LANCER_DECLARE_##kind(NAME, slot, Element, member, reader)
+
+#define LANCER_DECLARE_RESOURCE_UNIFORM(NAME, slot, Element, member, reader) \
+    layout(std140, set = 0, binding = slot) uniform NAME##_Block { Element member; };
+
+#define LANCER_DECLARE_RESOURCE_OUTPUT(NAME, slot, Element, member, reader) \
+    layout(std430, set = 0, binding = slot) buffer NAME##_Block { Element member[]; };
+
+#define LANCER_DECLARE_RESOURCE_ROWS(NAME, slot, Element, member, reader)                        \
+    layout(set = 0, binding = slot) uniform usamplerBuffer NAME##_texels;                          \
+    Element reader##_in(usamplerBuffer texels, uint i) {                                           \
+        Element r;                                                                                 \
+        int k = int(i * Element##_ROWS);                                                           \
+        LANCER_ROWS_##Element(LANCER_READ_VEC4, LANCER_READ_VEC4S, LANCER_READ_SCALARS)            \
+        return r;                                                                                  \
+    }                                                                                              \
+    Element reader(uint i) { return reader##_in(NAME##_texels, i); }
+
+#define LANCER_DECLARE_RESOURCE_UINT(NAME, slot, Element, member, reader) \
+    layout(set = 0, binding = slot) uniform usamplerBuffer NAME##_texels; \
+    uint reader(uint i) { return texelFetch(NAME##_texels, int(i)).x; }
+
+#define LANCER_DECLARE_RESOURCE_INT(NAME, slot, Element, member, reader) \
+    layout(set = 0, binding = slot) uniform isamplerBuffer NAME##_texels; \
+    int reader(uint i) { return texelFetch(NAME##_texels, int(i)).x; }
+
+LANCER_RESOURCES(LANCER_DECLARE)
+
+#define LANCER_DECLARE_FEATURE(NAME, id, member, fallback) layout(constant_id = id) const bool NAME = fallback;
+LANCER_FEATURES(LANCER_DECLARE_FEATURE)
+
+#endif
