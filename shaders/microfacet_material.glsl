@@ -3,7 +3,8 @@
 // independently in float. A microfacet material keeps its own constants in the fields Phong
 // does not use (layout.h, Material): tint in color, (eta, alpha) in color2, (k, E_avg) in
 // phong, the multiple-scattering colour in ms_tint, its energy table's index in energy_table.
-// energy(i) reads the tables (32 values of E(mu) each, host/optics/energy.hpp).
+// energy_tables hold ENERGY_TABLE_SIZE values of E(mu) per table, as float bits
+// (host/optics/energy.hpp).
 #ifndef LANCER_MICROFACET_MATERIAL_GLSL
 #define LANCER_MICROFACET_MATERIAL_GLSL
 
@@ -13,11 +14,12 @@ bool is_metal(Material m) { return m.model == MODEL_MICROFACET_METAL; }
 float material_alpha(Material m) { return m.color2.w; }
 
 // E(mu) of the material's table, linear between its 32 values.
-float energy_at(Material m, float mu) {
+float material_energy(Material m, float mu) {
     float x = clamp(mu, 0.0, 1.0) * float(ENERGY_TABLE_SIZE - 1u);
     uint i = min(uint(x), ENERGY_TABLE_SIZE - 2u);
     uint base = m.energy_table * ENERGY_TABLE_SIZE;
-    return mix(energy(base + i), energy(base + i + 1u), x - float(i));
+    float e0 = uintBitsToFloat(energy_table_at(base + i)), e1 = uintBitsToFloat(energy_table_at(base + i + 1u));
+    return mix(e0, e1, x - float(i));
 }
 
 // The BRDF for light arriving from wi and leaving toward wo at a surface with unit normal n
@@ -36,7 +38,7 @@ vec3 microfacet_brdf(Material m, vec3 n, vec3 wo, vec3 wi, float n1, float n2) {
     }
     vec3 f = m.color.rgb * conductor_fresnel(cos_h, m.color2.rgb, m.phong.rgb);
     float e_avg = m.phong.w;
-    float ms = e_avg < 1.0 ? (1.0 - energy_at(m, o.z)) * (1.0 - energy_at(m, i.z)) / (MICROFACET_PI * (1.0 - e_avg)) : 0.0;
+    float ms = e_avg < 1.0 ? (1.0 - material_energy(m, o.z)) * (1.0 - material_energy(m, i.z)) / (MICROFACET_PI * (1.0 - e_avg)) : 0.0;
     return single * f + ms * vec3(m.ms_tint_r, m.ms_tint_g, m.ms_tint_b);
 }
 
@@ -54,7 +56,7 @@ Scattered sample_metal(Material m, vec3 n, vec3 wo, vec3 u) {
     mat3 to_world = basis_around(n);
     vec3 o = wo * to_world;
     if (o.z <= 0.0) return Scattered(n, vec3(0.0));
-    float single_share = energy_at(m, o.z);
+    float single_share = material_energy(m, o.z);
     if (u.x < single_share) {
         vec3 h = sample_visible_normal(o, alpha, u.yz);
         vec3 i = reflect(-o, h);
@@ -66,7 +68,7 @@ Scattered sample_metal(Material m, vec3 n, vec3 wo, vec3 u) {
     float r = sqrt(u.y), phi = 2.0 * MICROFACET_PI * u.z;
     vec3 i = vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.y)));
     vec3 tint = vec3(m.ms_tint_r, m.ms_tint_g, m.ms_tint_b);
-    return Scattered(to_world * i, tint * ((1.0 - energy_at(m, i.z)) / (1.0 - m.phong.w)));
+    return Scattered(to_world * i, tint * ((1.0 - material_energy(m, i.z)) / (1.0 - m.phong.w)));
 }
 
 // A glass of GGX width alpha splits at one normal (n when alpha is 0, else drawn from those wo

@@ -1,7 +1,8 @@
 #version 450
 // Builds the hashed grid of a pass's photons (photon_grid.glsl) by a counting sort, in steps the
 // host dispatches in order with barriers between them (GpuRenderer's photon pass):
-//   GRID_COUNT    per photon: count it in its bucket (the counts start at 0);
+//   GRID_CLEAR    per bucket: its count to 0;
+//   GRID_COUNT    per photon: count it in its bucket;
 //   GRID_SCAN     per block of PHOTON_WORKGROUP buckets: the exclusive prefix sums of the counts
 //                 within the block, into cell_start, and the block's total into block_sums;
 //   GRID_BLOCKS   one invocation: the exclusive prefix sums of the block totals, in place;
@@ -12,13 +13,13 @@
 // Within a bucket the photons' order depends on the atomics, which the gather's exact integer
 // sums do not see: the image is the same, bit for bit, whatever the order.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 
-#include "layout.h"
+#include "interface.glsl"
 
 layout(local_size_x = PHOTON_WORKGROUP, local_size_y = 1, local_size_z = 1) in;
 layout(push_constant) uniform GridBlock { GridStep step; };
 
-#include "photon_pass.glsl"
 #include "photon_grid.glsl"
 
 shared uint block[PHOTON_WORKGROUP];
@@ -33,7 +34,9 @@ void main() {
     uint i = gl_GlobalInvocationID.x;
     uint stored = min(photon_counter[0], photon_params.capacity);
     uint buckets = 2u * photon_params.table_size;
-    if (step.kind == GRID_COUNT) {
+    if (step.kind == GRID_CLEAR) {
+        if (i < buckets) cell_count[i] = 0u;
+    } else if (step.kind == GRID_COUNT) {
         if (i < stored) atomicAdd(cell_count[photon_bucket(i)], 1u);
     } else if (step.kind == GRID_SCAN) {
         uint lane = gl_LocalInvocationID.x;

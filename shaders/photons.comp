@@ -7,17 +7,18 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 
-#include "layout.h"
+#include "interface.glsl"
 
 layout(local_size_x = PHOTON_WORKGROUP, local_size_y = 1, local_size_z = 1) in;
 
 #include "common.glsl"
 #include "scene.glsl"
 #include "dielectric.glsl"
-#include "lights.glsl"
+#include "shade.glsl"
 #include "appearance.glsl"
-#include "microfacet_material.glsl"
-#include "photon_pass.glsl"
+
+// A path passes through at most this many surfaces that do not show (as camera rays).
+const uint MAX_PASS_THROUGH_PHOTON = 16u;
 
 // The numbers photon `photon` of pass `pass` draws: base = h(h(h(seed) ^ pass) ^ photon), then
 // number k is the top 24 bits of h(base ^ h(k)) over 2^24.
@@ -61,13 +62,14 @@ void main() {
     float u = next_number(rng);
     uint chosen = frame.light_count - 1u;
     for (uint i = 0u; i < frame.light_count; ++i) {
-        if (u < emitters[i].power.w) {
+        if (u < emitter_at(i).power.w) {
             chosen = i;
             break;
         }
     }
-    Light light = lights[chosen];
-    vec3 power = emitters[chosen].power.rgb;
+    Light light = light_at(chosen);
+    Emitter emitter = emitter_at(chosen);
+    vec3 power = emitter.power.rgb;
     vec3 origin = light.position.xyz;
     vec3 dir;
     if (light.type == LIGHT_SPOT) {
@@ -78,7 +80,7 @@ void main() {
         vec3 t, b;
         tangents(light.direction.xyz, t, b);
         dir = normalize(sin_theta * (cos(phi) * t + sin(phi) * b) + cos_theta * light.direction.xyz);
-        power *= spot_factor(light, dir) * emitters[chosen].cone.x;
+        power *= spot_factor(light, dir) * emitter.cone.x;
     } else {
         if (light.type == LIGHT_AREA) {
             float a = next_number(rng) - 0.5;
@@ -103,8 +105,8 @@ void main() {
         if (SCENE_HAS_TRANSPARENCY && media.count > 0u) power *= absorption_over(innermost(media), length(p - from));
         vec3 n = hit.normal;
         if (dot(n, ray.dir) > 0.0) n = -n;  // facing the photon
-        uint mat = primitives[hit.primitive].material;
-        Material m = materials[mat];
+        uint mat = primitive_at(hit.primitive).material;
+        Material m = material_at(mat);
         bool clear = SCENE_HAS_TRANSPARENCY && is_transparent(m);
         bool sheet = clear && is_thin_sheet(hit.primitive);
         Media beyond = clear && !sheet ? cross_surface(media, mat) : media;

@@ -4,8 +4,9 @@
 
 namespace lancer::view {
 
-std::vector<SamplePass> refinement_passes(int samples_per_side) {
-    const auto total = static_cast<std::uint32_t>(samples_per_side * samples_per_side);
+namespace {
+
+std::vector<SamplePass> doubling_passes(std::uint32_t total) {
     std::vector<SamplePass> passes;
     std::uint32_t done = 0;
     while (done < total) {
@@ -18,11 +19,29 @@ std::vector<SamplePass> refinement_passes(int samples_per_side) {
     return passes;
 }
 
+}  // namespace
+
+std::vector<SamplePass> refinement_passes(int samples_per_side) {
+    return doubling_passes(static_cast<std::uint32_t>(samples_per_side * samples_per_side));
+}
+
+std::uint32_t refinement_total(const Scene& scene) {
+    if (scene.photons) return static_cast<std::uint32_t>(scene.photons->last_pass() - scene.photons->first_pass);
+    return static_cast<std::uint32_t>(scene.render.samples * scene.render.samples);
+}
+
+std::vector<SamplePass> refinement_plan(const Scene& scene) { return doubling_passes(refinement_total(scene)); }
+
 Scene preview_scene(const Scene& scene, int divisor) {
     Scene s = scene;
     s.render.width = std::max(1, scene.render.width / divisor);
     s.render.height = std::max(1, scene.render.height / divisor);
     s.render.samples = 1;
+    if (s.photons) {
+        s.photons->count = std::max(1000, s.photons->count / 8);
+        s.photons->first_pass = 0;
+        s.photons->pass_count = 1;
+    }
     return s;
 }
 

@@ -22,8 +22,15 @@ struct SamplePass {
 // into the last pass. 3 x 3: [0,1) [1,2) [2,4) [4,9).
 std::vector<SamplePass> refinement_passes(int samples_per_side);
 
+// What a still of `scene` is made of: its N x N grid samples, or with photon mapping its photon
+// passes (each one camera sample per pixel and a photon map: the caustics refine with the
+// anti-aliasing); and the passes that refine them, as refinement_passes does for a grid.
+std::uint32_t refinement_total(const Scene& scene);
+std::vector<SamplePass> refinement_plan(const Scene& scene);
+
 // The preview of `scene` while the camera moves: 1 sample per pixel (the pixel's centre) at
-// 1/`divisor` of the width and height (at least 1 x 1), same camera and aspect ratio.
+// 1/`divisor` of the width and height (at least 1 x 1), same camera and aspect ratio; with
+// photon mapping, one pass of an eighth of the photons (at least 1000).
 Scene preview_scene(const Scene& scene, int divisor);
 
 // The first divisor to try, from the time of one sample per pixel at full size: the smallest

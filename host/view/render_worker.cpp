@@ -215,11 +215,11 @@ void RenderWorker::refine(const Scene& scene, std::uint64_t generation, bool mov
         if (changed_.wait_for(lock, kSettle, [&] { return !wanted_locked(generation); })) throw RenderCancelled();
     }
 
-    const auto total = static_cast<std::uint32_t>(scene.render.samples * scene.render.samples);
+    const std::uint32_t total = refinement_total(scene);
     auto view_start = Clock::now();
     FloatImage sums;
     double rays_before = 0.0;
-    const std::vector<SamplePass> passes = refinement_passes(scene.render.samples);
+    const std::vector<SamplePass> passes = refinement_plan(scene);
     for (std::size_t p = 0; p < passes.size(); ++p) {
         auto start = Clock::now();
         renderer_->render_samples(scene, passes[p].first, passes[p].count, sums, wanted);

@@ -123,7 +123,7 @@ TEST_P(Furnace, SmoothClearGlassReturnsTheEnvironmentAndRoughGlassNoMore) {
     EXPECT_LT(absorbing.mean.b, 0.8 * absorbing.mean.g);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, Furnace, testing::Values(Backend::Cpu),
+INSTANTIATE_TEST_SUITE_P(Backends, Furnace, testing::Values(Backend::Gpu, Backend::Cpu),
                          [](const auto& info) { return test::backend_name(info.param); });
 
 }  // namespace

@@ -116,7 +116,7 @@ TEST_P(PhotonRender, FloorShowsTheLightAndItsMirrorImage) {
     EXPECT_NEAR(photon_part / expected_part, 1.0, 0.04);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, PhotonRender, testing::Values(Backend::Cpu),
+INSTANTIATE_TEST_SUITE_P(Backends, PhotonRender, testing::Values(Backend::Gpu, Backend::Cpu),
                          [](const auto& info) { return test::backend_name(info.param); });
 
 TEST(PhotonRenderDeterminism, CpuGivesTheSameBytesOnAnyNumberOfThreads) {
