@@ -312,7 +312,11 @@ LANCER_CONST RESOURCE_INT = 4;
     X(PHOTON_COUNTER, 18, RESOURCE_OUTPUT, uint, photon_counter, photon_counter, "photon counter")   \
     X(CELL_COUNT, 19, RESOURCE_OUTPUT, uint, cell_count, cell_count, "photons per grid bucket")     \
     X(CELL_START, 20, RESOURCE_OUTPUT, uint, cell_start, cell_start, "grid bucket starts")          \
-    X(BLOCK_SUMS, 21, RESOURCE_OUTPUT, uint, block_sums, block_sums, "grid scan block sums")
+    X(BLOCK_SUMS, 21, RESOURCE_OUTPUT, uint, block_sums, block_sums, "grid scan block sums")         \
+    /* the sorted photons and bucket starts again, as texel buffers for the tracer's gather (llvmpipe */ \
+    /* reads storage buffers lane by lane): copied from the two above once a pass is sorted */            \
+    X(GATHER_PHOTONS, 22, RESOURCE_ROWS, Photon, gather_photons, gather_photon_at, "photons to gather")   \
+    X(GATHER_STARTS, 23, RESOURCE_UINT, uint, gather_starts, gather_start_at, "grid bucket starts to gather")
 
 #define LANCER_BINDING_CONSTANT(NAME, slot, kind, Element, member, reader, what) LANCER_CONST BINDING_##NAME = slot;
 LANCER_RESOURCES(LANCER_BINDING_CONSTANT)

@@ -35,8 +35,9 @@ vec3 photon_irradiance(vec3 p, vec3 n) {
                     for (uint k = 0u; k < count; ++k) again = again || seen[k] == bucket;
                     if (again) continue;
                     seen[count++] = bucket;
-                    for (uint i = cell_start[bucket]; i < cell_start[bucket + 1u]; ++i) {
-                        Photon ph = photons_sorted[i];
+                    uint end = gather_start_at(bucket + 1u);
+                    for (uint i = gather_start_at(bucket); i < end; ++i) {
+                        Photon ph = gather_photon_at(i);
                         vec3 d = ph.position.xyz - p;
                         if (dot(d, d) <= r * r && dot(ph.direction.xyz, n) < 0.0)
                             add_quanta(high, low, ph.power.rgb);

@@ -151,6 +151,15 @@ std::uint32_t PhotonPass::submit(const PhotonParams& p, const ShaderFeatures& fe
     if (cancel) throw RenderCancelled();
     uint stored = 0;
     std::memcpy(&stored, counter.data(), sizeof(stored));
+    if (stored <= p.capacity) {
+        // The tracer gathers from texel buffers: the sorted photons and the bucket starts copied
+        // there (the buffers are mapped on the host; a few MiB per pass).
+        const Buffer& sorted = resources.working(BINDING_PHOTONS_SORTED, 0);
+        const Buffer& starts = resources.working(BINDING_CELL_START, 0);
+        const std::size_t photon_bytes = std::size_t(stored) * sizeof(Photon), start_bytes = (buckets + 1) * sizeof(uint);
+        resources.working(BINDING_GATHER_PHOTONS, photon_bytes).write(sorted.data(), photon_bytes);
+        resources.working(BINDING_GATHER_STARTS, start_bytes).write(starts.data(), start_bytes);
+    }
     return stored;
 }
 

@@ -283,7 +283,7 @@ std::uint32_t photon_capacity(std::uint32_t count) {
 }
 
 std::uint32_t photon_buckets(std::uint32_t capacity) {
-    return std::clamp(std::bit_ceil(capacity), 1024u, 1u << 20);
+    return std::clamp(std::bit_ceil(capacity / 8), 1024u, 1u << 20);
 }
 
 float round_down(double x) {
