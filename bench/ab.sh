@@ -26,6 +26,10 @@ scene=$1
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
+source bench/machine.sh
+machine_description
+echo
+
 command_for() {  # the lancer command line of a variant
   if [ -d "$1" ]; then echo "build/lancer render --shaders $1"; else echo "$1 render"; fi
 }

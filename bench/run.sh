@@ -31,6 +31,10 @@ if ((${#need[@]})); then
 fi
 [ -x build/lancer ] || ./setup.sh build
 
+source bench/machine.sh
+machine_description
+echo
+
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 
 # One timed run: prints "wall render rays peak_mib" (render and rays may be "-").

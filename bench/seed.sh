@@ -14,6 +14,10 @@ trap 'rm -rf "$out"' EXIT
 # One warm-up GPU render fills Mesa's shader cache, so timings exclude the one-time JIT.
 ./build/lancer render scenes/seed.toml --width 64 --height 36 -q -o "$out/warm.png"
 
+source bench/machine.sh
+machine_description
+echo
+
 printf '%-8s %8s %10s %12s %10s\n' backend run seconds Mrays/s "peak MiB"
 declare -A best
 for run in $(seq 1 "$runs"); do

@@ -338,9 +338,13 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(SCENE_HAS_AREA_LIGHTS, 7, has_area_lights, true)                                               \
     X(SCENE_HAS_SPOT_LIGHTS, 8, has_spot_lights, true)                                               \
     X(SCENE_HAS_FALLOFF, 9, has_falloff, true)      /* a light with distance fall-off */             \
-    X(SCENE_HAS_BLINN, 10, has_blinn, true)         /* a material with highlight = "blinn" */         \
-    X(SCENE_HAS_MICROFACET, 11, has_microfacet, true) /* a material with model = "microfacet" */     \
-    X(SCENE_HAS_PHOTONS, 12, has_photons, true)     /* photon mapping: gather at diffuse hits */
+    X(SCENE_HAS_BLINN, 10, has_blinn, true)         /* a material with highlight = "blinn" */          \
+    X(SCENE_HAS_SPHERE, 11, has_sphere, true)       /* shape families: lavapipe runs every case of a */ \
+    X(SCENE_HAS_PLANE, 12, has_plane, true)         /* switch on the shape type, whatever the type */  \
+    X(SCENE_HAS_RECTANGLE, 13, has_rectangle, true)                                                  \
+    X(SCENE_HAS_BOX, 14, has_box, true)                                                              \
+    X(SCENE_HAS_MICROFACET, 15, has_microfacet, true) /* a material with model = "microfacet" */      \
+    X(SCENE_HAS_PHOTONS, 16, has_photons, true)     /* photon mapping: gather at diffuse hits */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

@@ -13,15 +13,17 @@
 #include "shapes/bezier.glsl"
 #include "shapes/parametric.glsl"
 
-// uv: the surface's own parameters at the hit, for shapes that have them.
-bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv) {
-    Primitive p = primitive_at(index);
+// uv: the surface's own parameters at the hit, for shapes that have them. Only families the
+// scene has are compiled in (lavapipe runs every case of a switch, the type being known only at
+// run time); planes_only, for the unbounded primitives of a scene with a BVH, leaves planes alone.
+bool primitive_intersect(Primitive p, Ray ray, float t_min, float t_max, bool planes_only, out float t_hit, out vec2 uv) {
     uv = vec2(0.0);
+    if (planes_only) return SCENE_HAS_PLANE && plane_intersect(p, ray, t_min, t_max, t_hit);
     switch (p.type) {
-        case SHAPE_SPHERE: return sphere_intersect(p, ray, t_min, t_max, t_hit);
-        case SHAPE_PLANE: return plane_intersect(p, ray, t_min, t_max, t_hit);
-        case SHAPE_RECTANGLE: return rectangle_intersect(p, ray, t_min, t_max, t_hit, uv);
-        case SHAPE_BOX: return box_intersect(p, ray, t_min, t_max, t_hit);
+        case SHAPE_SPHERE: return SCENE_HAS_SPHERE && sphere_intersect(p, ray, t_min, t_max, t_hit);
+        case SHAPE_PLANE: return SCENE_HAS_PLANE && plane_intersect(p, ray, t_min, t_max, t_hit);
+        case SHAPE_RECTANGLE: return SCENE_HAS_RECTANGLE && rectangle_intersect(p, ray, t_min, t_max, t_hit, uv);
+        case SHAPE_BOX: return SCENE_HAS_BOX && box_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_BEZIER: return SCENE_HAS_BEZIER && bezier_intersect(p, ray, t_min, t_max, t_hit, uv);
 #if LANCER_PARAMETRIC_SURFACES
         case SHAPE_PARAMETRIC: return parametric_intersect(p, ray, t_min, t_max, t_hit, uv);
@@ -33,10 +35,10 @@ bool primitive_intersect(uint index, Ray ray, float t_min, float t_max, out floa
 vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
     Primitive prim = primitive_at(index);
     switch (prim.type) {
-        case SHAPE_SPHERE: return sphere_normal(prim, p);
-        case SHAPE_PLANE: return plane_normal(prim);
-        case SHAPE_RECTANGLE: return rectangle_normal(prim);
-        case SHAPE_BOX: return box_normal(prim, p);
+        case SHAPE_SPHERE: if (SCENE_HAS_SPHERE) return sphere_normal(prim, p); break;
+        case SHAPE_PLANE: if (SCENE_HAS_PLANE) return plane_normal(prim); break;
+        case SHAPE_RECTANGLE: if (SCENE_HAS_RECTANGLE) return rectangle_normal(prim); break;
+        case SHAPE_BOX: if (SCENE_HAS_BOX) return box_normal(prim, p); break;
         case SHAPE_BEZIER: if (SCENE_HAS_BEZIER) return bezier_normal(prim, uv); break;
 #if LANCER_PARAMETRIC_SURFACES
         case SHAPE_PARAMETRIC: return parametric_normal(prim, uv);
@@ -55,7 +57,7 @@ const uint NO_PRIMITIVE = 0xffffffffu;
 const float TIE = 1e-5;
 
 // Object index and shape data: the same whichever order the primitives are stored in.
-uvec2 stable_key(uint i) { return uvec2(primitive_at(i).object, primitive_at(i).data); }
+uvec2 stable_key(Primitive p) { return uvec2(p.object, p.data); }
 
 struct Nearest {
     float t;  // nearest hit so far, or t_max
@@ -66,17 +68,22 @@ struct Nearest {
 // How far a test must look: up to t_max, or a little past the best hit to see its ties.
 float reach(Nearest best) { return best.prim == NO_PRIMITIVE ? best.t : best.t * (1.0 + TIE); }
 
-// Tests primitive i and keeps it if it is nearer (or an equally near, smaller-keyed twin).
-bool consider(uint i, Ray ray, float t_min, inout Nearest best) {
+// Tests primitive i, which is p, and keeps it if it is nearer (or an equally near,
+// smaller-keyed twin).
+bool consider_primitive(uint i, Primitive p, Ray ray, float t_min, bool planes_only, inout Nearest best) {
     float t;
     vec2 uv;
-    if (!primitive_intersect(i, ray, t_min, reach(best), t, uv)) return false;
+    if (!primitive_intersect(p, ray, t_min, reach(best), planes_only, t, uv)) return false;
     if (best.prim != NO_PRIMITIVE && t >= best.t * (1.0 - TIE)) {
-        uvec2 a = stable_key(i), b = stable_key(best.prim);
+        uvec2 a = stable_key(p), b = stable_key(primitive_at(best.prim));
         if (!(a.x < b.x || (a.x == b.x && a.y < b.y))) return false;
     }
     best = Nearest(min(t, best.t), i, uv);
     return true;
+}
+
+bool consider(uint i, Ray ray, float t_min, bool planes_only, inout Nearest best) {
+    return consider_primitive(i, primitive_at(i), ray, t_min, planes_only, best);
 }
 
 // Nearest hit in (t_min, t_max) over all primitives; with any_hit, the first hit found.
@@ -84,7 +91,8 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out Nearest be
     best = Nearest(t_max, NO_PRIMITIVE, vec2(0.0));
     uint bounded = frame.primitive_count - frame.unbounded_count;
     for (uint i = bounded; i < frame.primitive_count; ++i) {
-        if (consider(i, ray, t_min, best) && any_hit) return true;
+        // With a BVH, everything bounded is in it: the rest are planes.
+        if (consider(i, ray, t_min, SCENE_HAS_BVH, best) && any_hit) return true;
     }
     if (!SCENE_HAS_BVH || frame.node_count == 0u) return best.prim != NO_PRIMITIVE;
 
@@ -100,7 +108,7 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out Nearest be
         BvhNode n = node_at(node);
         if (n.count > 0u) {
             for (uint i = n.first; i < n.first + n.count; ++i) {
-                if (consider(i, ray, t_min, best) && any_hit) return true;
+                if (consider(i, ray, t_min, false, best) && any_hit) return true;
             }
         } else {
             uint near_child = n.first;

@@ -8,9 +8,9 @@
 vec2 texture_uv(Hit hit, vec3 p) {
     Primitive prim = primitive_at(hit.primitive);
     switch (prim.type) {
-        case SHAPE_SPHERE: return sphere_texture_uv(prim, p);
-        case SHAPE_PLANE: return plane_texture_uv(prim, p);
-        case SHAPE_BOX: return box_texture_uv(prim, p, hit.normal);
+        case SHAPE_SPHERE: if (SCENE_HAS_SPHERE) return sphere_texture_uv(prim, p); break;
+        case SHAPE_PLANE: if (SCENE_HAS_PLANE) return plane_texture_uv(prim, p); break;
+        case SHAPE_BOX: if (SCENE_HAS_BOX) return box_texture_uv(prim, p, hit.normal); break;
         case SHAPE_BEZIER: return surface_uv(hit);  // each patch's (u, v)
 #if LANCER_PARAMETRIC_SURFACES
         case SHAPE_PARAMETRIC: return parametric_texture_uv(prim, hit.uv);

@@ -15,7 +15,7 @@
 #include "cli/still_render.hpp"
 #include "cli/video.hpp"
 #include "gpu/context.hpp"
-#include "image/png_size.hpp"
+#include "image/image.hpp"
 #include "scene/animation.hpp"
 
 namespace lancer {
@@ -25,12 +25,19 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// A frame counts as rendered when its file is a PNG of the requested size. Writes are atomic,
-// so a killed run never leaves a partial frame; a file of another size (the scene or --width
-// changed) is rendered again.
+// A frame counts as rendered when its file decodes completely (every scanline, up to the PNG's
+// last chunk) at the requested size. lancer's own writes are atomic, but a frame copied from
+// another machine may have been cut short, and its header alone would still give the size; a
+// file of another size (the scene or --width changed) is rendered again too.
 bool frame_done(const std::string& path, const RenderSettings& r) {
-    auto size = read_png_size(path);
-    return size && size->width == r.width && size->height == r.height;
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return false;
+    try {
+        Rgb8Image image = read_png(path);
+        return image.width == r.width && image.height == r.height;
+    } catch (const UserError&) {
+        return false;
+    }
 }
 
 // "orbit.png" -> "orbit_%03d.png", for the message that asks for a pattern.
@@ -82,14 +89,26 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
         check_output_writable(opts.video);
     }
 
-    std::vector<int> todo, skipped;
-    for (int k = range.first; k <= range.last; ++k)
-        (opts.force || !frame_done(pattern->path(k), r) ? todo : skipped).push_back(k);
+    std::vector<int> todo, skipped, unfinished;
+    for (int k = range.first; k <= range.last; ++k) {
+        if (opts.force) {
+            todo.push_back(k);
+        } else if (frame_done(pattern->path(k), r)) {
+            skipped.push_back(k);
+        } else {
+            todo.push_back(k);
+            std::error_code ec;
+            if (std::filesystem::exists(pattern->path(k), ec)) unfinished.push_back(k);
+        }
+    }
 
     FrameProgress progress(options.quiet, static_cast<int>(todo.size()));
     if (!skipped.empty())
         progress.message(fmt::format("{}: skipping {} finished frame(s): {} (--force renders them again)", pattern->text(),
                                      skipped.size(), format_frame_list(skipped)));
+    if (!unfinished.empty())
+        progress.message(fmt::format("{}: rendering frame(s) {} again: their files do not decode completely at {}x{}",
+                                     pattern->text(), format_frame_list(unfinished), r.width, r.height));
 
     if (!todo.empty()) {
         create_frame_directory(pattern->directory());
@@ -98,7 +117,17 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
         Interrupts interrupts;
         auto start = Clock::now();
         std::unique_ptr<Renderer> renderer = make_renderer(options);
-        renderer->prepare(scene_at(scene, frame_time(animation, todo.front())));
+        try {
+            renderer->prepare(scene_at(scene, frame_time(animation, todo.front())),
+                              [&](double) { return !interrupts.requested(); });
+        } catch (const RenderCancelled&) {
+            progress.clear();
+            renderer.reset();
+            throw Interrupted(interrupts.signal_number(),
+                              fmt::format("frame {} ('{}') was not written; no frame was finished; run the same "
+                                          "command again to resume",
+                                          todo.front(), pattern->path(todo.front())));
+        }
         double startup = seconds_since(start);
         std::vector<double> times;
         std::vector<int> written;
@@ -157,7 +186,13 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
                                         opts.video, format_frame_list(missing), pattern->text(),
                                         missing.size() == 1 ? fmt::format("{}", missing[0])
                                                             : fmt::format("{}-{}", missing.front(), missing.back())));
-        make_video(pattern->text(), animation.frames, animation.fps, opts.video);
+        progress.status(fmt::format("{}: encoding {} frames with ffmpeg", opts.video, animation.frames));
+        try {
+            make_video(pattern->text(), animation.frames, animation.fps, opts.video);
+        } catch (...) {
+            progress.clear();
+            throw;
+        }
         progress.message(fmt::format("{}: {} frames at {:g} fps ({:.2f} s){}", opts.video, animation.frames,
                                      animation.fps, animation.frames / animation.fps,
                                      animation.cyclic ? ", loops seamlessly" : ""));

@@ -5,15 +5,17 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "core/cancel.hpp"
+
 namespace lancer {
 namespace {
 
-volatile sig_atomic_t g_signal = 0;
 int g_pipe[2] = {-1, -1};
+int g_depth = 0;  // nested Interrupts objects; the outermost owns the handlers and the pipe
 struct sigaction g_previous_int, g_previous_term;
 
 void on_signal(int number) {
-    g_signal = number;
+    request_cancellation(number);
     char byte = 1;
     [[maybe_unused]] ssize_t n = ::write(g_pipe[1], &byte, 1);  // async-signal-safe; a full pipe is fine
 }
@@ -21,17 +23,19 @@ void on_signal(int number) {
 }  // namespace
 
 Interrupts::Interrupts() {
-    g_signal = 0;
+    if (g_depth++ > 0) return;
+    clear_cancellation();
     if (::pipe2(g_pipe, O_CLOEXEC | O_NONBLOCK) != 0) g_pipe[0] = g_pipe[1] = -1;
     struct sigaction action {};
     action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART | SA_RESETHAND;
+    action.sa_flags = SA_RESETHAND;  // no SA_RESTART: see interrupt.hpp
     ::sigaction(SIGINT, &action, &g_previous_int);
     ::sigaction(SIGTERM, &action, &g_previous_term);
 }
 
 Interrupts::~Interrupts() {
+    if (--g_depth > 0) return;
     ::sigaction(SIGINT, &g_previous_int, nullptr);
     ::sigaction(SIGTERM, &g_previous_term, nullptr);
     for (int& fd : g_pipe) {
@@ -51,8 +55,8 @@ std::string signal_name(int signal_number) {
 Interrupted::Interrupted(int signal_number, const std::string& what_was_left)
     : std::runtime_error("interrupted by " + signal_name(signal_number) + ": " + what_was_left), signal_(signal_number) {}
 
-bool Interrupts::requested() const { return g_signal != 0; }
+bool Interrupts::requested() const { return cancellation_requested(); }
 int Interrupts::fd() const { return g_pipe[0]; }
-int Interrupts::signal_number() const { return g_signal; }
+int Interrupts::signal_number() const { return cancellation_signal(); }
 
 }  // namespace lancer

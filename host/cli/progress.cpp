@@ -122,6 +122,13 @@ void FrameProgress::message(const std::string& line) {
     std::fflush(stderr);
 }
 
+void FrameProgress::status(const std::string& line) {
+    if (quiet_ || !terminal_) return;
+    std::fprintf(stderr, "\r\033[K%s", line.c_str());
+    std::fflush(stderr);
+    dirty_ = true;
+}
+
 void FrameProgress::clear() {
     if (dirty_) std::fprintf(stderr, "\r\033[K");
     dirty_ = false;

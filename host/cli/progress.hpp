@@ -56,6 +56,8 @@ public:
     void message(const std::string& line);
     // Clears the live line (before an error message).
     void clear();
+    // What is going on now, as the live line on a terminal (elsewhere nothing): "encoding ...".
+    void status(const std::string& line);
 
 private:
     void draw(double fraction);

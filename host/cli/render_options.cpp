@@ -132,6 +132,13 @@ void check_output_writable(const std::string& path) {
         throw UserError("cannot write '" + path + "': directory '" + dir.string() + "' does not exist");
     if (::access(dir.c_str(), W_OK) != 0)
         throw UserError("cannot write '" + path + "': directory '" + dir.string() + "' is not writable");
+    // Refused before rendering, not after (the temporary file's name is shortened to fit, the
+    // destination's cannot be).
+    long name_max = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+    std::size_t length = fs::path(path).filename().string().size();
+    if (name_max > 0 && length > static_cast<std::size_t>(name_max))
+        throw UserError(fmt::format("cannot write '{}': its name is {} bytes long, and the file system allows {}", path,
+                                    length, name_max));
 }
 
 std::unique_ptr<Renderer> make_renderer(const RenderOptions& o) {

@@ -5,10 +5,13 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <csignal>
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -16,7 +19,10 @@
 
 #include <fmt/format.h>
 
+#include "cli/interrupt.hpp"
+#include "core/cancel.hpp"
 #include "core/error.hpp"
+#include "core/temporary_name.hpp"
 
 extern char** environ;
 
@@ -48,8 +54,11 @@ struct Result {
     std::string err;
 };
 
-// Runs `program` with `args`, stdin and stdout on /dev/null, and collects its stderr.
-Result run(const std::string& program, const std::vector<std::string>& args) {
+// Runs `program` with `args`, stdin and stdout on /dev/null, and collects its stderr. A SIGINT or
+// SIGTERM to lancer while it runs stops it (SIGKILL: its output is thrown away anyway) and
+// returns nullopt; so does the program's own exit while an interrupt is pending (Ctrl-C on a
+// terminal reaches the whole process group, ffmpeg too).
+std::optional<Result> run(const std::string& program, const std::vector<std::string>& args) {
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -61,17 +70,38 @@ Result run(const std::string& program, const std::vector<std::string>& args) {
     posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], STDERR_FILENO);
+    // The child starts with lancer's handlers reset to the defaults (exec does that) and no
+    // signal blocked.
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    sigset_t none;
+    sigemptyset(&none);
+    posix_spawnattr_setsigmask(&attributes, &none);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
     pid_t pid = 0;
-    int spawn_error = ::posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+    int spawn_error = ::posix_spawn(&pid, program.c_str(), &actions, &attributes, argv.data(), environ);
+    posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     ::close(pipe_fds[1]);
     if (spawn_error != 0) {
         ::close(pipe_fds[0]);
         throw UserError(fmt::format("cannot run {}: {}", program, std::strerror(spawn_error)));
     }
+    Interrupts interrupts;
     std::string err;
     char buffer[4096];
+    bool killed = false;
     for (;;) {
+        if (interrupts.requested() && !killed) {
+            ::kill(pid, SIGKILL);
+            killed = true;
+        }
+        pollfd fds[2] = {{pipe_fds[0], POLLIN, 0}, {interrupts.fd(), POLLIN, 0}};
+        if (::poll(fds, killed || interrupts.fd() < 0 ? 1 : 2, -1) < 0) {
+            if (errno == EINTR) continue;
+            break;
+        }
+        if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR))) continue;
         ssize_t n = ::read(pipe_fds[0], buffer, sizeof buffer);
         if (n > 0) err.append(buffer, static_cast<std::size_t>(n));
         else if (n == 0 || errno != EINTR) break;
@@ -80,8 +110,9 @@ Result run(const std::string& program, const std::vector<std::string>& args) {
     int status = 0;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
+    if (interrupts.requested()) return std::nullopt;
     int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    return {code, err};
+    return Result{code, err};
 }
 
 std::string last_line(const std::string& text) {
@@ -119,13 +150,10 @@ void check_video_possible(const std::string& path) {
 }
 
 void make_video(const std::string& pattern, int frames, double fps, const std::string& output) {
-    namespace fs = std::filesystem;
     std::string ffmpeg = find_program("ffmpeg");
     if (ffmpeg.empty()) check_video_possible(output);  // throws the message about the package
 
-    fs::path target(output);
-    fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    std::string temp = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
+    std::string temp = temporary_template(output);
     int fd = ::mkstemp(temp.data());
     if (fd < 0) throw UserError(fmt::format("cannot write '{}': {}", output, std::strerror(errno)));
     ::close(fd);
@@ -138,13 +166,18 @@ void make_video(const std::string& pattern, int frames, double fps, const std::s
     for (std::string& a : encoder_arguments(extension_of(output))) args.push_back(std::move(a));
     args.push_back("file:" + temp);
 
-    Result r;
+    std::optional<Result> ran;
     try {
-        r = run(ffmpeg, args);
+        ran = run(ffmpeg, args);
     } catch (...) {
         ::unlink(temp.c_str());
         throw;
     }
+    if (!ran) {
+        ::unlink(temp.c_str());
+        throw Interrupted(cancellation_signal(), fmt::format("'{}' was not written; the frames are complete", output));
+    }
+    const Result& r = *ran;
     if (r.exit_code != 0) {
         ::unlink(temp.c_str());
         throw UserError(fmt::format("ffmpeg could not make '{}' (exit code {}): {}", output, r.exit_code, last_line(r.err)));

@@ -13,6 +13,7 @@
 #include "cli/file_watcher.hpp"
 #include "cli/hot_reload.hpp"
 #include "cli/render_options.hpp"
+#include "core/cancel.hpp"
 #include "gpu/context.hpp"
 #include "gpu/shader_compiler.hpp"
 
@@ -57,6 +58,8 @@ struct WatchCommand {
                 std::fprintf(stderr, "%s\n", format_error(e).c_str());
                 scene_files.watch_failure(e);
                 return false;
+            } catch (const Cancelled&) {
+                return false;  // Ctrl-C while loading: the loop below sees it and ends
             }
         };
         // On failure the renderer keeps the shaders it had: the last good ones, or the built-in ones.
@@ -68,6 +71,8 @@ struct WatchCommand {
                 return true;
             } catch (const gpu::ShaderCompileError& e) {
                 std::fprintf(stderr, "%s\n", e.what());
+                return false;
+            } catch (const Cancelled&) {
                 return false;
             }
         };
@@ -85,17 +90,23 @@ struct WatchCommand {
 
         double compile_ms = 0.0, render_ms = 0.0;
         std::string first;
+        bool compiled = false;
+        if (gpu && !shaders.empty()) {
+            compiled = compile(compile_ms);
+            if (!compiled && watcher.signal_pending()) return finish(std::move(renderer));  // Ctrl-C while compiling
+        }
         if (!gpu) {
             append(first, "cpu backend");
         } else if (shaders.empty()) {
             append(first, "built-in shaders");
-        } else if (compile(compile_ms)) {
+        } else if (compiled) {
             append(first, fmt::format("{}/ compiled in {:.0f} ms", shaders, compile_ms));
         } else {
             std::fprintf(stderr, "watch: %s/ does not compile; using the built-in shaders until it does\n", shaders.c_str());
             append(first, fmt::format("built-in shaders until {}/ compiles", shaders));
         }
         if (!load()) {
+            if (watcher.signal_pending()) return finish(std::move(renderer));
             append(first, "no image until the scene loads");
         } else {
             if (!render(render_ms)) return finish(std::move(renderer));  // interrupted

@@ -2,13 +2,15 @@
 
 #include <sstream>
 
+#include "core/escape.hpp"
+
 namespace lancer {
 
 std::string format_error(const std::exception& e) {
     std::ostringstream out;
     if (const auto* scene = dynamic_cast<const SceneError*>(&e)) {
         const SourceLocation& at = scene->where();
-        out << (at.file.empty() ? "lancer" : at.file);
+        out << (at.file.empty() ? "lancer" : escape_control_characters(at.file));
         if (at.line > 0) {
             out << ':' << at.line;
             if (at.column > 0) out << ':' << at.column;
@@ -16,7 +18,7 @@ std::string format_error(const std::exception& e) {
     } else {
         out << "lancer";
     }
-    out << ": error: " << e.what();
+    out << ": error: " << escape_control_characters(e.what(), dynamic_cast<const MultiLineUserError*>(&e) != nullptr);
     return out.str();
 }
 

@@ -19,6 +19,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A message of several lines on purpose (a shader compiler's log): format_error keeps its line
+// breaks, where in any other message a line break can only come from a name and is escaped.
+class MultiLineUserError : public UserError {
+public:
+    using UserError::UserError;
+};
+
 // A problem in an input file, reported as "file:line:col: error: message".
 class SceneError : public UserError {
 public:
@@ -30,7 +37,8 @@ private:
     SourceLocation where_;
 };
 
-// The one rendering of an error for humans: "file:line:col: error: what" (or "lancer: error: what").
+// The one rendering of an error for humans: "file:line:col: error: what" (or "lancer: error: what"),
+// with control characters in names (the file's, or those in the message) escaped.
 std::string format_error(const std::exception& e);
 
 }  // namespace lancer

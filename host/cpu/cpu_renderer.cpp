@@ -1,5 +1,7 @@
 #include "cpu/cpu_renderer.hpp"
 
+#include "cpu/lapack.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -18,7 +20,9 @@
 namespace lancer {
 
 CpuRenderer::CpuRenderer(unsigned threads, Acceleration acceleration)
-    : threads_(threads ? threads : std::max(1u, std::thread::hardware_concurrency())), acceleration_(acceleration) {}
+    : threads_(threads ? threads : std::max(1u, std::thread::hardware_concurrency())), acceleration_(acceleration) {
+    cpu::lapack_dggev_work();  // loaded here, before this renderer starts threads (cpu/lapack.hpp)
+}
 
 std::string CpuRenderer::description() const {
     return "cpu: reference renderer, double precision, " + std::to_string(threads_) + " threads";

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "core/cancel.hpp"
+#include "gpu/driver_memory.hpp"
 #include "gpu/embedded_shaders.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/scene_packing.hpp"
@@ -21,9 +23,20 @@ constexpr std::size_t kBandPixels = 128 * 1024;
 
 }  // namespace
 
+namespace {
+
+// Runs before the context is made: under a memory limit too small for the driver, a clear error
+// rather than a crash inside it.
+std::shared_ptr<gpu::Context> make_context(const gpu::ContextOptions& options) {
+    gpu::check_driver_startup_memory();
+    return std::make_shared<gpu::Context>(options);
+}
+
+}  // namespace
+
 GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration acceleration)
-    : context_(std::make_unique<gpu::Context>(options)),
-      layout_(std::make_unique<gpu::TraceLayout>(*context_)),
+    : context_(make_context(options)),
+      layout_(std::make_shared<gpu::TraceLayout>(*context_)),
       base_tree_(gpu::embedded_tree()),
       spirv_(gpu::embedded_trace_spirv()),
       resources_(*context_, layout_->set_layout()),
@@ -50,24 +63,12 @@ GpuRenderer::~GpuRenderer() {
     pipelines_.clear();
 }
 
-namespace {
-
-// `tree` with surface_functions.glsl replaced by generated code (when there is any).
-gpu::ShaderTree with_surface_code(gpu::ShaderTree tree, const std::string& surface_code) {
-    if (surface_code.empty()) return tree;
-    return [tree = std::move(tree), surface_code](const std::string& name) -> std::optional<std::string> {
-        if (name == "surface_functions.glsl") return surface_code;
-        return tree(name);
-    };
-}
-
-}  // namespace
-
 void GpuRenderer::use_shaders(const gpu::ShaderTree& tree, const std::string& display_root) {
     std::vector<std::uint32_t> spirv =
-        gpu::compile_compute(with_surface_code(tree, surface_code_), gpu::kTraceShader, {}, display_root);
+        gpu::compile_compute(gpu::with_files(tree, generated_), gpu::kTraceShader, {}, display_root);
     // Prove the new code builds before dropping the old pipelines (the plain variant is cheap).
-    auto probe = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv, gpu::ShaderFeatures{});
+    auto probe = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv, gpu::ShaderFeatures{});
+    if (!probe->wait([] { return !cancellation_requested(); })) throw Cancelled();
     VK_CHECK(vkDeviceWaitIdle(context_->device()));  // old pipelines may still be in use
     pipelines_.clear();
     pipelines_[gpu::ShaderFeatures{}] = std::move(probe);
@@ -89,28 +90,29 @@ std::vector<std::string> GpuRenderer::notes() const {
                         bands_rerendered_)};
 }
 
-void GpuRenderer::ensure_program(const std::string& surface_code, bool photons) {
+void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated, bool photons) {
     auto build = [&](const char* entry) {
-        return surface_code.empty() && base_is_embedded_
+        return generated.empty() && base_is_embedded_
                    ? gpu::embedded_spirv(entry)
-                   : gpu::compile_compute(with_surface_code(base_tree_, surface_code), entry, {}, display_root_);
+                   : gpu::compile_compute(gpu::with_files(base_tree_, generated), entry, {}, display_root_);
     };
-    if (surface_code != surface_code_) {
+    if (generated != generated_) {
         std::vector<std::uint32_t> spirv = build(gpu::kTraceShader);
         VK_CHECK(vkDeviceWaitIdle(context_->device()));
         pipelines_.clear();
         spirv_ = std::move(spirv);
         photon_spirv_.clear();
-        surface_code_ = surface_code;
+        generated_ = generated;
     }
     // The photon pass traces the same surfaces, with the same generated code.
     if (photons && photon_spirv_.empty()) photon_spirv_ = build(gpu::kPhotonShader);
 }
 
-void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features) {
+void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress) {
     auto& slot = pipelines_[features];
-    if (!slot) slot = std::make_unique<gpu::ComputePipeline>(*context_, *layout_, spirv_, features);
-    pipeline_ = slot.get();
+    if (!slot) slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv_, features);
+    pipeline_ = slot->wait([&] { return !progress || progress(0.0); });
+    if (!pipeline_) throw RenderCancelled();
 }
 
 std::string GpuRenderer::description() const {
@@ -118,12 +120,17 @@ std::string GpuRenderer::description() const {
     return "gpu: " + info.name + " (" + info.type + ", " + info.driver + ")";
 }
 
-gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes) {
+gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated) {
     const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
     gpu::PackedScene packed = gpu::pack_scene(scene, {acceleration_, &bvh_cache_, &limits});
-    gpu::check_memory_budget(gpu::buffer_needs(packed, output_bytes), limits);
+    const std::vector<gpu::BufferNeed> needs = gpu::buffer_needs(packed, output_bytes);
+    gpu::check_memory_budget(needs, limits);
+    std::uint64_t buffer_bytes = 0;
+    for (const gpu::BufferNeed& need : needs) buffer_bytes += need.bytes;
+    gpu::check_render_memory(scene, buffer_bytes);
     emitters_ = packed.emitters;
     resources_.upload(packed, gpu::pack_frame(scene, packed));
+    if (std::string code = gpu::surface_functions_glsl(scene); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;
     features.check_loop_limit = context_->info().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
     return features;
@@ -200,7 +207,7 @@ void GpuRenderer::render_passes(const Scene& scene, int first, int last, FloatIm
     }
 }
 
-void GpuRenderer::prepare(const Scene& scene) {
+void GpuRenderer::prepare(const Scene& scene, const ProgressFn& progress) {
     // A 1x1 render of the scene: the same pipeline variant (it depends on the scene's contents,
     // not its size), compiled by the driver at this first dispatch, and the scene's buffers.
     Scene tiny = scene;
@@ -210,7 +217,7 @@ void GpuRenderer::prepare(const Scene& scene) {
         tiny.photons->first_pass = 0;
         tiny.photons->pass_count = 1;
     }
-    render(tiny, {});
+    render(tiny, progress ? [&](double) { return progress(0.0); } : ProgressFn{});
 }
 
 FloatImage GpuRenderer::render_hits(const Scene& scene) {
@@ -246,10 +253,11 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
     std::size_t rows = std::clamp<std::size_t>(band_pixels / width, gpu::WORKGROUP_Y, height);
     rows = std::min(rows, max_rows);
 
-    gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes);
+    gpu::ShaderFiles generated;
+    gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, generated);
     features.output_hits = output_hits;
-    ensure_program(gpu::surface_functions_glsl(scene), photon_pass >= 0);
-    select_pipeline(features);
+    ensure_program(generated, photon_pass >= 0);
+    select_pipeline(features, progress);
     if (photon_pass >= 0) {
         // The pass's photons and their grid first; the tracer gathers from them.
         photons_->use_programs(photon_spirv_, gpu::embedded_spirv(gpu::kGridShader));

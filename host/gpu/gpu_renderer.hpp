@@ -25,7 +25,7 @@ public:
     std::string description() const override;
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
     FloatImage render_hits(const Scene& scene) override;
-    void prepare(const Scene& scene) override;
+    void prepare(const Scene& scene, const ProgressFn& progress) override;
     std::vector<std::string> notes() const override;
     bool runs_shaders() const override { return true; }
     void use_shader_directory(const std::string& directory) override;
@@ -59,13 +59,15 @@ public:
 
 private:
     // Packs the scene within the device's limits and uploads it; returns the shader features
-    // it needs.
-    gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes);
-    // Makes spirv_ the tracer built from base_tree_ with `surface_code` as surface_functions.glsl
-    // ("" = the file as it is in the tree), compiling only when that changed; with `photons`,
-    // photon_spirv_ the photon pass built the same way.
-    void ensure_program(const std::string& surface_code, bool photons = false);
-    void select_pipeline(const gpu::ShaderFeatures& features);
+    // it needs, and adds the generated shader files it needs to `generated`.
+    gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated);
+    // Makes spirv_ the tracer built from base_tree_ with `generated` in place of the files of
+    // the same names, compiling only when that changed; with `photons`, photon_spirv_ the
+    // photon pass built the same way.
+    void ensure_program(const gpu::ShaderFiles& generated, bool photons = false);
+    // Makes pipeline_ the one for `features`, building it first if needed (on a thread of its
+    // own: `progress` can cancel the wait, RenderCancelled, and the build goes on for later).
+    void select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress);
     struct SampleRange {
         std::uint32_t first, count;
     };
@@ -83,17 +85,18 @@ private:
     void dispatch_band(const gpu::BandParams& band, std::uint32_t per_pass, std::uint32_t width, double done,
                        const ProgressFn& progress);
 
-    std::unique_ptr<gpu::Context> context_;
-    std::unique_ptr<gpu::TraceLayout> layout_;
+    // Shared with pipeline builds still running (gpu::PipelineBuild).
+    std::shared_ptr<gpu::Context> context_;
+    std::shared_ptr<gpu::TraceLayout> layout_;
     // Where the tracer's sources come from, the generated surface code compiled in, its SPIR-V,
     // and the pipelines built from that so far, one per variant used.
     gpu::ShaderTree base_tree_;
     bool base_is_embedded_ = true;
     std::string display_root_;
-    std::string surface_code_;
+    gpu::ShaderFiles generated_;  // code generated for the current scene, by file name
     std::vector<std::uint32_t> spirv_;
     std::vector<std::uint32_t> photon_spirv_;  // the photon pass, when a scene has needed it
-    std::map<gpu::ShaderFeatures, std::unique_ptr<gpu::ComputePipeline>> pipelines_;
+    std::map<gpu::ShaderFeatures, std::unique_ptr<gpu::PipelineBuild>> pipelines_;
     gpu::ComputePipeline* pipeline_ = nullptr;  // the one for the current render
     gpu::TraceResources resources_;
     std::unique_ptr<gpu::PhotonPass> photons_;

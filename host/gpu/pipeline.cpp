@@ -1,12 +1,19 @@
 #include "gpu/pipeline.hpp"
 
 #include <array>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
 #include <iterator>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <utility>
 
 #include "gpu/layout.hpp"
 #include "gpu/resource_kinds.hpp"
+#include "gpu/spirv_specialize.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace lancer::gpu {
@@ -68,9 +75,10 @@ ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layo
     specialization.dataSize = sizeof(values);
     specialization.pData = values.data();
 
+    const std::vector<std::uint32_t> specialized = specialize_spirv(spirv, features);
     VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    module_info.codeSize = spirv.size() * sizeof(std::uint32_t);
-    module_info.pCode = spirv.data();
+    module_info.codeSize = specialized.size() * sizeof(std::uint32_t);
+    module_info.pCode = specialized.data();
     VkShaderModule module = VK_NULL_HANDLE;
     VK_CHECK(vkCreateShaderModule(device_, &module_info, nullptr, &module));
 
@@ -90,5 +98,79 @@ ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layo
 ComputePipeline::~ComputePipeline() {
     if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
 }
+
+namespace {
+
+std::atomic<int> g_abandoned{0};
+
+}  // namespace
+
+struct PipelineBuild::State {
+    std::shared_ptr<const Context> context;  // the device and layout stay alive while the build runs
+    std::shared_ptr<const TraceLayout> layout;
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false;
+    bool abandoned = false;
+    std::unique_ptr<ComputePipeline> pipeline;  // destroyed before the layout and the context
+    std::exception_ptr error;
+};
+
+PipelineBuild::PipelineBuild(std::shared_ptr<const Context> context, std::shared_ptr<const TraceLayout> layout,
+                             std::vector<std::uint32_t> spirv, const ShaderFeatures& features)
+    : state_(std::make_shared<State>()) {
+    state_->context = std::move(context);
+    state_->layout = std::move(layout);
+    std::thread([state = state_, spirv = std::move(spirv), features]() mutable {
+        std::unique_ptr<ComputePipeline> pipeline;
+        std::exception_ptr error;
+        try {
+            pipeline = std::make_unique<ComputePipeline>(*state->context, *state->layout, spirv, features);
+        } catch (...) {
+            error = std::current_exception();
+        }
+        bool abandoned = false;
+        {
+            std::lock_guard lock(state->mutex);
+            state->pipeline = std::move(pipeline);
+            state->error = error;
+            state->done = true;
+            abandoned = state->abandoned;
+            state->finished.notify_all();
+        }
+        // An abandoned build is the last owner: this destroys the pipeline, and maybe the layout
+        // and the device. Only then does it stop counting as running.
+        state.reset();
+        if (abandoned) --g_abandoned;
+    }).detach();
+}
+
+PipelineBuild::~PipelineBuild() {
+    {
+        std::lock_guard lock(state_->mutex);
+        if (!state_->done) {
+            state_->abandoned = true;
+            ++g_abandoned;
+            return;
+        }
+    }
+    // Finished: the worker is about to drop its reference, if it has not yet. Wait for that, so
+    // that the pipeline is destroyed here, by its owner, not by a thread nobody waits for.
+    while (state_.use_count() > 1) std::this_thread::yield();
+}
+
+ComputePipeline* PipelineBuild::wait(const std::function<bool()>& keep_waiting) {
+    std::unique_lock lock(state_->mutex);
+    while (!state_->finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return state_->done; })) {
+        lock.unlock();
+        bool go_on = !keep_waiting || keep_waiting();
+        lock.lock();
+        if (!go_on && !state_->done) return nullptr;
+    }
+    if (state_->error) std::rethrow_exception(state_->error);
+    return state_->pipeline.get();
+}
+
+int abandoned_pipeline_builds() { return g_abandoned.load(); }
 
 }  // namespace lancer::gpu

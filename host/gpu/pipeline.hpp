@@ -4,6 +4,8 @@
 // constants of LANCER_FEATURES, which can be replaced (hot reload, expression surfaces) without
 // touching descriptor sets.
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "gpu/context.hpp"
@@ -43,5 +45,32 @@ private:
     VkDevice device_;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
+
+// A ComputePipeline being built by the driver on a thread of its own. lavapipe compiles a big
+// tracer (many expression surfaces) for minutes, inside one vkCreateComputePipelines call that
+// nothing can interrupt; the thread that waits for it can stop waiting instead, and leave the
+// build to finish (and be destroyed) in the background. The build holds the context and the
+// layout it uses, so they outlive it whatever the renderer does meanwhile.
+class PipelineBuild {
+public:
+    PipelineBuild(std::shared_ptr<const Context> context, std::shared_ptr<const TraceLayout> layout,
+                  std::vector<std::uint32_t> spirv, const ShaderFeatures& features);
+    ~PipelineBuild();  // abandons a build still running
+    PipelineBuild(const PipelineBuild&) = delete;
+    PipelineBuild& operator=(const PipelineBuild&) = delete;
+
+    // The pipeline once built, asking `keep_waiting` about every 100 ms meanwhile: nullptr
+    // when it says stop (the build goes on; a later wait() picks it up). Rethrows the build's
+    // error (VulkanError).
+    ComputePipeline* wait(const std::function<bool()>& keep_waiting);
+
+private:
+    struct State;
+    std::shared_ptr<State> state_;
+};
+
+// Pipeline builds abandoned and still running in this process. main() must not run the exit
+// handlers (the driver's and LLVM's static destructors) under them: it leaves with _Exit().
+int abandoned_pipeline_builds();
 
 }  // namespace lancer::gpu

@@ -108,8 +108,14 @@ struct PrimitivePacker {
                     surface::BezierPatch leaf = surface::sub_patch(s.patches[i], u0, u1, v0, v1);
                     surface::PatchBounds pb = surface::bounds(leaf);
                     dvec3 origin = 0.5 * (pb.min + pb.max);
+                    // A rational patch is the same for weights scaled by any positive factor, but
+                    // float is not: weights of 1e-50 would all be 0. Scaled (by a power of two,
+                    // exactly) so that the largest is in [1, 2): weights whose largest is 1 stay.
+                    int exponent = 0;
+                    std::frexp(*std::max_element(leaf.weights.begin(), leaf.weights.end()), &exponent);
                     PatchLeaf g{};
-                    for (int k = 0; k < 16; ++k) g.points[k] = v4(leaf.points[k] - origin, leaf.weights[k]);
+                    for (int k = 0; k < 16; ++k)
+                        g.points[k] = v4(leaf.points[k] - origin, std::ldexp(leaf.weights[k], 1 - exponent));
                     g.origin = v4(origin, double(i));
                     g.domain = vec4(float(u0), float(u1), float(v0), float(v1));
                     auto index = static_cast<uint>(out.patches.size());
@@ -340,6 +346,12 @@ PackedScene pack_scene(const Scene& scene, const PackOptions& options) {
     }
     ShaderFeatures& f = packed.features;
     f.has_photons = scene.photons.has_value();
+    for (const Primitive& p : packed.primitives) {
+        f.has_sphere |= p.type == SHAPE_SPHERE;
+        f.has_plane |= p.type == SHAPE_PLANE;
+        f.has_rectangle |= p.type == SHAPE_RECTANGLE;
+        f.has_box |= p.type == SHAPE_BOX;
+    }
     f.has_bezier = !packed.patches.empty();
     f.has_bvh = !packed.nodes.empty();
     f.has_textures = !packed.textures.empty();

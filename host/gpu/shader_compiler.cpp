@@ -1,5 +1,6 @@
 #include "gpu/shader_compiler.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include <fstream>
@@ -7,6 +8,7 @@
 #include <mutex>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
@@ -22,19 +24,27 @@ void initialize_glslang() {
     });
 }
 
-// Resolves "#include "x"" relative to the including file's directory within the tree.
+// Resolves "#include "x"" relative to the including file's directory within the tree. Includes
+// may nest kMaxIncludeDepth deep, and no file may include itself, directly or through others:
+// glslang would expand such a cycle until memory runs out. The refusal names the chain.
 class TreeIncluder final : public glslang::TShader::Includer {
 public:
+    static constexpr std::size_t kMaxIncludeDepth = 32;
+
     explicit TreeIncluder(const ShaderTree& tree) : tree_(tree) {}
 
-    IncludeResult* includeLocal(const char* header, const char* includer, size_t) override {
+    IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
         std::string base(includer);
         auto slash = base.rfind('/');
         std::string dir = slash == std::string::npos ? "" : base.substr(0, slash + 1);
+        note_includer(includer, depth);
         if (auto found = resolve(dir + header)) return found;
         return resolve(header);
     }
-    IncludeResult* includeSystem(const char* header, const char*, size_t) override { return resolve(header); }
+    IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override {
+        note_includer(includer, depth);
+        return resolve(header);
+    }
     void releaseInclude(IncludeResult* result) override {
         if (result) {
             delete static_cast<std::string*>(result->userData);
@@ -42,14 +52,39 @@ public:
         }
     }
 
+    // Why an include was refused ("" if none was): glslang then reports only that it could not
+    // be processed.
+    const std::string& refusal() const { return refusal_; }
+
 private:
+    // chain_[k] is the file at inclusion depth k (0: the entry point).
+    void note_includer(const char* includer, std::size_t depth) {
+        chain_.resize(std::max<std::size_t>(depth, 1));
+        chain_[chain_.size() - 1] = includer;
+    }
+    std::string chain_text(const std::string& last) const {
+        std::string text;
+        for (const std::string& name : chain_) text += name + " -> ";
+        return text + last;
+    }
     IncludeResult* resolve(const std::string& name) {
+        if (!refusal_.empty()) return nullptr;
         auto text = tree_(name);
         if (!text) return nullptr;
+        if (std::find(chain_.begin(), chain_.end(), name) != chain_.end()) {
+            refusal_ = "#include cycle: " + chain_text(name);
+            return nullptr;
+        }
+        if (chain_.size() >= kMaxIncludeDepth) {
+            refusal_ = fmt::format("#include nested more than {} deep: {}", kMaxIncludeDepth, chain_text(name));
+            return nullptr;
+        }
         auto* owned = new std::string(std::move(*text));
         return new IncludeResult(name, owned->data(), owned->size(), owned);
     }
     const ShaderTree& tree_;
+    std::vector<std::string> chain_;
+    std::string refusal_;
 };
 
 std::string preamble(const std::vector<ShaderDefine>& defines) {
@@ -111,8 +146,12 @@ Compiled compile(const ShaderTree& tree, const std::string& entry, const std::ve
     c.shader->setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
     TreeIncluder includer(tree);
     auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
-    if (!c.shader->parse(GetDefaultResources(), 450, false, messages, includer))
-        throw ShaderCompileError(format_log(c.shader->getInfoLog(), display_root));
+    if (!c.shader->parse(GetDefaultResources(), 450, false, messages, includer)) {
+        std::string log = format_log(c.shader->getInfoLog(), display_root);
+        if (!includer.refusal().empty()) log += "\n" + std::string(display_root.empty() ? "" : display_root + "/") +
+                                                entry + ": error: " + includer.refusal();
+        throw ShaderCompileError(log);
+    }
     c.program = std::make_unique<glslang::TProgram>();
     c.program->addShader(c.shader.get());
     if (!c.program->link(messages)) throw ShaderCompileError(format_log(c.program->getInfoLog(), display_root));
@@ -128,6 +167,14 @@ ShaderTree directory_tree(const std::string& root) {
         std::ostringstream text;
         text << in.rdbuf();
         return text.str();
+    };
+}
+
+ShaderTree with_files(ShaderTree tree, ShaderFiles files) {
+    if (files.empty()) return tree;
+    return [tree = std::move(tree), files = std::move(files)](const std::string& name) -> std::optional<std::string> {
+        if (auto file = files.find(name); file != files.end()) return file->second;
+        return tree(name);
     };
 }
 

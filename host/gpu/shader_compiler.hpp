@@ -5,6 +5,7 @@
 // line they occur in, included files too.
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -19,14 +20,19 @@ using ShaderTree = std::function<std::optional<std::string>(const std::string& n
 
 ShaderTree directory_tree(const std::string& root);
 
+// Files that stand in for files of a tree, by name (code generated for a scene).
+using ShaderFiles = std::map<std::string, std::string>;
+// `tree` with `files` in place of the files of the same names.
+ShaderTree with_files(ShaderTree tree, ShaderFiles files);
+
 struct ShaderDefine {
     std::string name;
     std::string value;
 };
 
-class ShaderCompileError : public UserError {
+class ShaderCompileError : public MultiLineUserError {
 public:
-    using UserError::UserError;
+    using MultiLineUserError::MultiLineUserError;
 };
 
 // Compiles `entry` (e.g. "trace.comp") as a Vulkan 1.2 compute shader. Throws ShaderCompileError

@@ -43,6 +43,14 @@ Rgb8Image to_srgb8(const FloatImage& image, const ToneMapping& mapping = {});
 // Writes a PNG atomically: to a temporary file in the same directory, then rename(), so the
 // destination is either the old file or the complete new one. Throws UserError on I/O failure.
 void write_png(const std::string& path, const Rgb8Image& image);
+
+// The largest image read_png() accepts: the largest lancer writes (scene/limits.hpp checks that
+// they agree). Larger files, and files whose data is more than their header's size needs, are
+// refused before they are decoded (image/image_file.hpp).
+constexpr int kMaxReadSide = 16384;
+constexpr long long kMaxReadPixels = 64LL * 1024 * 1024;
+
+// A PNG (or JPEG, BMP) as 8-bit RGB. Throws UserError "cannot read PNG 'path': why".
 Rgb8Image read_png(const std::string& path);
 
 // What an OpenEXR file of lancer's says besides its pixels (as attributes): which photon passes

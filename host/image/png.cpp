@@ -9,10 +9,11 @@
 #include <unistd.h>
 
 #include "core/error.hpp"
+#include "core/temporary_name.hpp"
 #include "image/image.hpp"
+#include "image/image_file.hpp"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb/stb_image.h>  // implemented in stb_image.cpp
 #include <stb/stb_image_write.h>
 
 namespace lancer {
@@ -50,9 +51,7 @@ void write_file_atomically(const std::string& path, const void* data, std::size_
     namespace fs = std::filesystem;
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw UserError("cannot write '" + path + "': it is a directory");
-    fs::path target(path);
-    fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    std::string temp = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
+    std::string temp = temporary_template(path);
     int fd = ::mkstemp(temp.data());
     if (fd < 0) throw UserError(os_error("cannot write", path));
     bool ok = write_all(fd, static_cast<const unsigned char*>(data), size) && ::fsync(fd) == 0;
@@ -67,13 +66,12 @@ void write_file_atomically(const std::string& path, const void* data, std::size_
 }
 
 Rgb8Image read_png(const std::string& path) {
-    int w = 0, h = 0, channels = 0;
-    std::unique_ptr<unsigned char, decltype(&stbi_image_free)> data(stbi_load(path.c_str(), &w, &h, &channels, 3),
-                                                                     &stbi_image_free);
-    if (!data) throw UserError("cannot read PNG '" + path + "': " + stbi_failure_reason());
-    Rgb8Image image{w, h, {}};
-    image.bytes.assign(data.get(), data.get() + static_cast<std::size_t>(w) * h * 3);
-    return image;
+    try {
+        ImageFile file = read_image_file(path, {kMaxReadSide, kMaxReadPixels});
+        return Rgb8Image{file.size.width, file.size.height, decode_image(file, 3)};
+    } catch (const UserError& e) {
+        throw UserError("cannot read PNG '" + path + "': " + e.what());
+    }
 }
 
 }  // namespace lancer

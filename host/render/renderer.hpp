@@ -37,7 +37,8 @@ public:
     // The one-time work for scenes like this one (on the GPU: buffers, shader, pipeline and the
     // driver's compile at the first dispatch), so that a following render() costs what every
     // later one does. Animations call it to report start-up apart from the time per frame.
-    virtual void prepare(const Scene& /*scene*/) {}
+    // `progress` can cancel it (RenderCancelled), as it can a render.
+    virtual void prepare(const Scene& /*scene*/, const ProgressFn& /*progress*/) {}
 
     // For tests of exactness: per pixel, the first hit of the ray through the pixel's centre as
     // (t, u, v, part): t < 0 for a miss, (u, v) the surface's own parameters where it has them,

@@ -14,6 +14,7 @@
 namespace lancer {
 
 constexpr int kMaxFrames = 1'000'000;
+constexpr double kMinFps = 0.01, kMaxFps = 1000.0;  // what ffmpeg encodes faithfully in every format
 
 enum class Interpolation {
     Linear,  // straight from key to key

@@ -2,11 +2,13 @@
 // lancer's documented input limits (README: "Limits"). They are checked while loading, before
 // anything is allocated for the values they bound.
 #include "core/magnitude.hpp"
+#include "image/image.hpp"
 
 namespace lancer::limits {
 
 constexpr int kMaxImageSide = 16384;
 constexpr long long kMaxImagePixels = 64LL * 1024 * 1024;  // 64 Mpx: 1 GiB of float RGBA on the host
+static_assert(kMaxImageSide == kMaxReadSide && kMaxImagePixels == kMaxReadPixels, "read_png reads what lancer writes");
 constexpr int kMaxSamples = 16;                             // 16 x 16 = 256 rays per pixel
 constexpr int kMaxDepth = 64;
 constexpr int kMaxLights = 256;
@@ -19,6 +21,12 @@ constexpr int kMaxObjects = 1 << 20;
 // the GPU's shader, compiled when the scene is loaded.
 constexpr long long kMaxPatches = 1 << 16;
 constexpr int kMaxParametricSurfaces = 32;
+// Operations of a parametric surface's equations after simplification, and of all surfaces of a
+// scene together (each is compiled into the tracer): the driver's compile time grows with them
+// (docs/robustness.md, "Expression cost").
+constexpr int kMaxSurfaceOperations = 256;
+constexpr int kMaxSceneSurfaceOperations = 512;
+constexpr double kMaxWeightRatio = 1e18;  // largest / smallest weight of a rational patch (float on the GPU)
 constexpr long long kMaxSceneFileBytes = 128LL << 20;
 
 // Textures: the GPU keeps every texel of every texture in one storage buffer, and Vulkan

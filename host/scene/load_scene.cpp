@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
+#include "core/file_reading.hpp"
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
 #include "scene/parse_animation.hpp"
@@ -19,6 +20,7 @@
 #include "scene/parse_shapes.hpp"
 #include "scene/string_position.hpp"
 #include "scene/toml_reader.hpp"
+#include "surface/expr/program.hpp"
 
 namespace lancer {
 namespace {
@@ -144,6 +146,7 @@ Object read_object(TableReader& t, const std::map<std::string, std::uint32_t, st
 // read (reading subdivides it, the expensive part), patches once an object's are known.
 struct SurfaceTotals {
     int parametric = 0;
+    int operations = 0;
     long long patches = 0;
 
     void before(TableReader& t, const std::optional<std::string>& type) {
@@ -152,6 +155,14 @@ struct SurfaceTotals {
                                        limits::kMaxParametricSurfaces));
     }
     void after(TableReader& t, const Object& o) {
+        if (const auto* p = std::get_if<ParametricObject>(&o.shape)) {
+            const surface::Expr* xyz[] = {&p->surface.x, &p->surface.y, &p->surface.z};
+            operations += surface::count_operations(surface::compile_program(xyz));
+            if (operations > limits::kMaxSceneSurfaceOperations)
+                t.fail("type", fmt::format("the parametric surfaces' equations take {} operations so far; the limit is {} "
+                                           "per scene (all of them are compiled into the GPU's tracer)",
+                                           operations, limits::kMaxSceneSurfaceOperations));
+        }
         const auto* b = std::get_if<BezierSurface>(&o.shape);
         if (b && (patches += static_cast<long long>(b->patches.size())) > limits::kMaxPatches)
             t.fail("type", fmt::format("too many Bezier patches: {} so far (the limit is {} per scene)", patches,
@@ -269,21 +280,17 @@ Scene parse_scene(std::string_view text, const std::string& path) {
 }
 
 Scene load_scene(const std::string& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw UserError("cannot read scene file '" + path + "': it is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw UserError("cannot read scene file '" + path + "': " + std::strerror(errno));
     // In pieces, stopping past the limit: /dev/zero or an endless pipe is an error, not a hang.
-    std::string text;
-    char piece[1 << 16];
-    while (in.read(piece, sizeof piece) || in.gcount() > 0) {
-        text.append(piece, static_cast<std::size_t>(in.gcount()));
-        if (text.size() > static_cast<std::size_t>(limits::kMaxSceneFileBytes))
-            throw UserError(fmt::format("cannot read scene file '{}': it is larger than the limit of {} MiB", path,
-                                        limits::kMaxSceneFileBytes >> 20));
+    FileText file;
+    try {
+        file = read_file(path, static_cast<std::size_t>(limits::kMaxSceneFileBytes));
+    } catch (const UserError& e) {
+        throw UserError("cannot read scene file '" + path + "': " + e.what());
     }
-    if (in.bad()) throw UserError("cannot read scene file '" + path + "'");
-    return parse_scene(text, path);
+    if (!file.complete)
+        throw UserError(fmt::format("cannot read scene file '{}': it is larger than the limit of {} MiB", path,
+                                    limits::kMaxSceneFileBytes >> 20));
+    return parse_scene(file.text, path);
 }
 
 }  // namespace lancer

@@ -33,7 +33,7 @@ NameIndex index_names(const toml::table& root, std::string_view array_key, std::
         const toml::table* table = array->get(i)->as_table();
         const toml::node* node = table ? table->get("name") : nullptr;
         if (!node || !node->is_string()) continue;  // the loader has already checked the type
-        std::string name = node->as_string()->get();
+        std::string name = node_string(*node, file, std::string(what) + " name");
         SourceLocation at = location_of(*node, file);
         if (name.empty()) throw SceneError(at, fmt::format("{} name must not be empty", what));
         if (auto seen = first_use.find(name); seen != first_use.end())
@@ -224,7 +224,11 @@ void read_animation(TableReader& top, const toml::table& root, Scene& scene) {
     if (a.frames < 1 || a.frames > kMaxFrames)
         t.fail("frames", fmt::format("frames must be between 1 and {}, not {}", kMaxFrames, a.frames));
     a.fps = t.number("fps", a.fps);
-    if (!(a.fps > 0.0 && a.fps <= 1000.0)) t.fail("fps", fmt::format("fps must be above 0 and at most 1000, not {:g}", a.fps));
+    // ffmpeg takes the rate as a fraction with a denominator of about 10^6 at most: below 0.01
+    // fps (a frame every 100 s) an .mp4 loses frames, and 1e-12 is no rate at all. Refused
+    // here, before any frame is rendered, not by ffmpeg after all of them.
+    if (!(a.fps >= kMinFps && a.fps <= kMaxFps))
+        t.fail("fps", fmt::format("fps must be between {:g} and {:g}, not {:g}", kMinFps, kMaxFps, a.fps));
     a.cyclic = t.boolean("cyclic", a.cyclic);
 
     if (const toml::table* orbit = t.table("camera_orbit")) {

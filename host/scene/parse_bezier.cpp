@@ -4,12 +4,15 @@
 //   patches = [[[x,y,z], ... 16], ...]         several
 // with optional weights (rational patches) shaped like the points, a transform, and the GPU's
 // subdivision level.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 
 #include <fmt/format.h>
 #include <glm/common.hpp>
 
+#include "scene/limits.hpp"
 #include "scene/parse_surfaces.hpp"
 #include "scene/transform.hpp"
 #include "surface/patch_file.hpp"
@@ -95,6 +98,24 @@ Shape read_bezier(TableReader& t) {
         surface.source_file = path.string();
     } else {
         surface.patches = read_inline(t, control_points ? *control_points : *patch_list, weights, control_points != nullptr);
+    }
+    // Weights may be scaled by any positive factor (the GPU's packing normalises them), but their
+    // spread within a patch is what float has to hold: the shader's homogeneous arithmetic
+    // multiplies them by Bernstein terms, and past this ratio the small ones vanish in float.
+    for (std::size_t i = 0; i < surface.patches.size(); ++i) {
+        auto& w = surface.patches[i].weights;
+        const auto [lightest, heaviest] = std::minmax_element(w.begin(), w.end());
+        if (*heaviest > limits::kMaxWeightRatio * *lightest)
+            t.fail(file ? "file" : weights ? "weights" : control_points ? "control_points" : "patches",
+                   fmt::format("patch {}: its weights range from {:g} to {:g}; the GPU computes in float, and the "
+                               "largest weight of a patch may be at most {:g} times its smallest",
+                               i, *lightest, *heaviest, limits::kMaxWeightRatio));
+        // The same surface for any common factor; both renderers work with the largest weight
+        // in [1, 2) (scaled by a power of two: exact; a largest weight of 1 stays). Weights of
+        // 1e-50 were nothing in float on the GPU, and below the CPU reference's tolerances.
+        int exponent = 0;
+        std::frexp(*heaviest, &exponent);
+        for (double& x : w) x = std::ldexp(x, 1 - exponent);
     }
     surface.subdivision = t.integer("subdivision", surface.subdivision);
     if (surface.subdivision < 0 || surface.subdivision > 4)

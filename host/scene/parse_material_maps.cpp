@@ -64,9 +64,10 @@ ImageTexture read_texture(TableReader& material, TextureLibrary& textures) {
     const std::string& file = material.file();
     std::string dir = std::filesystem::path(file).parent_path().string();
     auto resolve = [&](const std::string& name) { return (std::filesystem::path(dir) / name).lexically_normal().string(); };
-    if (auto name = node->value<std::string>()) {
-        tex.path = resolve(*name);
-        tex.image = textures.load(material, "texture", *name, tex.path);
+    if (node->is_string()) {
+        std::string name = node_string(*node, file, "texture");
+        tex.path = resolve(name);
+        tex.image = textures.load(material, "texture", name, tex.path);
         return tex;
     }
     const toml::table* table = node->as_table();
@@ -184,15 +185,13 @@ std::shared_ptr<const TextureImage> TextureLibrary::load(const TableReader& t, s
     if (images_.size() >= static_cast<std::size_t>(limits::kMaxTextures))
         fail(fmt::format("too many textures (the limit is {} files)", limits::kMaxTextures));
     try {
-        ImageSize size = probe_texture_image(path);
-        if (size.width > limits::kMaxTextureSide || size.height > limits::kMaxTextureSide)
-            fail(fmt::format("it is {}x{} pixels; the limit is {} on each side", size.width, size.height,
-                             limits::kMaxTextureSide));
-        long long texels = static_cast<long long>(size.width) * size.height;
+        ImageFile file = read_image_file(
+            path, {limits::kMaxTextureSide, static_cast<long long>(limits::kMaxTextureSide) * limits::kMaxTextureSide});
+        long long texels = static_cast<long long>(file.size.width) * file.size.height;
         if (texels_ + texels > limits::kMaxTextureTexels)
             fail(fmt::format("the scene's textures would hold {} texels; the limit is {} (128 MiB) in all",
                              texels_ + texels, limits::kMaxTextureTexels));
-        auto image = std::make_shared<const TextureImage>(read_texture_image(path));
+        auto image = std::make_shared<const TextureImage>(decode_texture_image(file));
         texels_ += texels;
         images_.emplace(path, image);
         dependencies_.push_back(path);

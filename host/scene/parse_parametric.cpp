@@ -9,12 +9,14 @@
 #include <glm/common.hpp>
 
 #include "core/magnitude.hpp"
+#include "scene/limits.hpp"
 #include "scene/parse_surfaces.hpp"
 #include "scene/string_position.hpp"
 #include "scene/transform.hpp"
 #include "surface/expr/domain_check.hpp"
 #include "surface/expr/evaluate.hpp"
 #include "surface/expr/parser.hpp"
+#include "surface/float_check.hpp"
 
 namespace lancer {
 namespace {
@@ -48,6 +50,9 @@ double read_bound(const toml::node& node, const std::string& file, const std::st
             throw SceneError(column_in_string(node, file, n.column), what + " must not depend on u or v");
     double value = surface::evaluate(e, 0.0, 0.0);
     if (!std::isfinite(value)) throw SceneError(location_of(node, file), what + " is not a finite number");
+    if (std::abs(value) > kMaxMagnitude)
+        throw SceneError(location_of(node, file), fmt::format("{} is {:g}, beyond lancer's limit of {:g} for any number",
+                                                              what, value, kMaxMagnitude));
     return value;
 }
 
@@ -84,11 +89,32 @@ Shape read_parametric(TableReader& t) {
         if (!node) throw SceneError(t.location(), fmt::format("missing required key '{}' (an expression in u and v)", axes[i]));
         *exprs[i] = parse_string(*node, t.file(), axes[i], constants);
     }
+    // Cost in operations, not characters: "u*v*u*v*..." is 2,047 multiplications in 4,096
+    // characters, and sin(u)+sin(u) one sine.
+    {
+        const surface::Expr* xyz[] = {&s.x, &s.y, &s.z};
+        const int operations = surface::count_operations(surface::compile_program(xyz));
+        if (operations > limits::kMaxSurfaceOperations) {
+            int largest = 0, most = 0;
+            for (int i = 0; i < 3; ++i) {
+                const surface::Expr* one[] = {exprs[i]};
+                int n = surface::count_operations(surface::compile_program(one));
+                if (n > most) most = n, largest = i;
+            }
+            t.fail(axes[largest], fmt::format("the surface's equations take {} operations (x, y and z together, after "
+                                              "simplification); the limit is {}: each becomes code that the GPU's driver "
+                                              "compiles and runs at every step of every ray",
+                                              operations, limits::kMaxSurfaceOperations));
+        }
+    }
     std::tie(s.u0, s.u1) = read_range(t, "u", constants);
     std::tie(s.v0, s.v1) = read_range(t, "v", constants);
     for (int i = 0; i < 3; ++i) {
         try {
             surface::check_expression_domain(*exprs[i], {s.u0, s.u1}, {s.v0, s.v1});
+            // Infinite in double already (1e308*1e308): that error, at the operation, comes first.
+            if (auto origin = surface::where_non_finite_starts(*exprs[i], {s.u0, s.u1}, {s.v0, s.v1})) throw *origin;
+            surface::check_float_constants(*exprs[i]);
         } catch (const surface::ExprError& e) {
             throw SceneError(column_in_string(*t.node(axes[i]), t.file(), e.column), e.what());
         }
@@ -96,6 +122,8 @@ Shape read_parametric(TableReader& t) {
     s.to_world = read_transform(t);
     try {
         object.cells = surface::subdivide_surface(s);
+    } catch (const surface::FloatEvaluationError& e) {
+        throw SceneError(column_in_string(*t.node(axes[e.expression]), t.file(), e.column), e.what());
     } catch (const UserError& e) {
         // Nowhere finite: point at the operation where that starts, if one expression shows it.
         for (int i = 0; i < 3; ++i)

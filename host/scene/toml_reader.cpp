@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/magnitude.hpp"
+#include "scene/string_position.hpp"
 
 namespace lancer {
 
@@ -101,12 +102,22 @@ dvec3 TableReader::required_vec3(std::string_view key) {
     return node_vec3(*get(key, true), file_, std::string(key));
 }
 
+std::string node_string(const toml::node& node, const std::string& file, const std::string& what) {
+    auto s = node.as_string();
+    if (!s) throw SceneError(location_of(node, file), what + " must be a string, not " + type_name(node));
+    // TOML allows \u0000; a C string (a file name given to the system) would end there, and
+    // silently mean only the part before it.
+    const std::string& text = s->get();
+    if (std::size_t nul = text.find('\0'); nul != std::string::npos)
+        throw SceneError(position_in_string(source_text(file), location_of(node, file), nul),
+                         what + " contains a NUL character (\\u0000), which no name or file name can hold");
+    return text;
+}
+
 std::string TableReader::string(std::string_view key, std::string fallback) {
     const toml::node* node = get(key, false);
     if (!node) return fallback;
-    auto s = node->as_string();
-    if (!s) throw SceneError(location_of(*node, file_), std::string(key) + " must be a string, not " + type_name(*node));
-    return s->get();
+    return node_string(*node, file_, std::string(key));
 }
 
 std::string TableReader::required_string(std::string_view key) {

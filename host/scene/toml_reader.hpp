@@ -74,5 +74,7 @@ SourceLocation location_of(const toml::source_region& region, const std::string&
 // Reads a node as a finite number (integer or float) or a 3-vector of them.
 double node_number(const toml::node& node, const std::string& file, const std::string& what);
 dvec3 node_vec3(const toml::node& node, const std::string& file, const std::string& what);
+// A string without NUL characters (an error at the NUL's position otherwise).
+std::string node_string(const toml::node& node, const std::string& file, const std::string& what);
 
 }  // namespace lancer

@@ -5,9 +5,12 @@
 #include <fmt/format.h>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 
+#include "core/cancel.hpp"
 #include "core/finite.hpp"
 #include "surface/expr/program.hpp"
+#include "surface/float_check.hpp"
 #include "surface/surface_bounds.hpp"
 
 namespace lancer::surface {
@@ -80,6 +83,13 @@ std::vector<SurfaceCell> subdivide_surface(const ParametricSurface& s, const Cel
     const Expr* xyz[] = {&s.x, &s.y, &s.z};
     const Program program = compile_program(xyz);
     const double reference = surface_diagonal(program, s);
+    // The GPU evaluates the surface in float: where that strays from double by more than
+    // rounding, the surface is refused; what rounding leaves is added to every box, so that the
+    // boxes hold the surface the GPU draws as well as the exact one.
+    const double float_error = check_float_evaluation(program, s);
+    const glm::dmat3 linear(s.to_world);
+    const double float_pad = 4.0 * float_error *
+                             std::sqrt(glm::dot(linear[0], linear[0]) + glm::dot(linear[1], linear[1]) + glm::dot(linear[2], linear[2]));
     // A surface that is a single point still gets finite targets (its boxes are ulps wide).
     const double floor = 1e-12 * (1.0 + reference);
     const double target = std::max(options.max_size_fraction * reference, floor);
@@ -97,6 +107,7 @@ std::vector<SurfaceCell> subdivide_surface(const ParametricSurface& s, const Cel
 
     std::vector<SurfaceCell> cells;
     while (!stack.empty()) {
+        throw_if_cancelled();  // a surface at the limits takes seconds: Ctrl-C must not wait for it
         if (cells.size() + stack.size() > options.max_cells)
             throw UserError(fmt::format(
                 "the surface needs more than {} cells to be bounded tightly; simplify it or narrow its domain",
@@ -136,9 +147,11 @@ std::vector<SurfaceCell> subdivide_surface(const ParametricSurface& s, const Cel
                 "cannot bound the surface near (u, v) = ({:.6g}, {:.6g}): it may be unbounded there; narrow its domain",
                 p.u.mid(), p.v.mid()));
         SurfaceCell cell{p.u.lo, p.u.hi, p.v.lo, p.v.hi,
-                         {down(box.x.lo, kPaddingUlps), down(box.y.lo, kPaddingUlps), down(box.z.lo, kPaddingUlps)},
-                         {up(box.x.hi, kPaddingUlps), up(box.y.hi, kPaddingUlps), up(box.z.hi, kPaddingUlps)},
-                         regular};
+                         {down(box.x.lo - float_pad, kPaddingUlps), down(box.y.lo - float_pad, kPaddingUlps),
+                          down(box.z.lo - float_pad, kPaddingUlps)},
+                         {up(box.x.hi + float_pad, kPaddingUlps), up(box.y.hi + float_pad, kPaddingUlps),
+                          up(box.z.hi + float_pad, kPaddingUlps)},
+                         regular, float_pad};
         cells.push_back(cell);
     }
     return cells;

@@ -24,6 +24,7 @@ struct SurfaceCell {
     double u0, u1, v0, v1;
     dvec3 lo, hi;  // world space; padded outward by a few ulps (round outward again for float)
     bool regular;  // proved on the whole cell: |Su x Sv| >= 1e-3 |Su| |Sv| (so nonzero, well conditioned)
+    double float_pad = 0.0;  // added to the box on every side: how far the GPU's float evaluation may stray
 };
 
 // Splits a cell (along the side that is longer in world space) while its box is larger than

@@ -8,6 +8,7 @@
 
 #include "cli/frame_pattern.hpp"
 #include "cli/video.hpp"
+#include "core/cancel.hpp"
 #include "gpu/shader_compiler.hpp"
 #include "scene/animation.hpp"
 #include "view/camera_text.hpp"
@@ -281,6 +282,8 @@ bool RenderWorker::run_reload(const std::string& shader_dir) {
     } catch (const gpu::ShaderCompileError& e) {
         std::fprintf(stderr, "%s\nreload: compile failed, keeping the last good shaders\n", e.what());
         return false;
+    } catch (const Cancelled&) {
+        return false;  // SIGINT or SIGTERM: the viewer is quitting
     }
 }
 

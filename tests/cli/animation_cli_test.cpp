@@ -224,6 +224,36 @@ TEST(AnimationCli, VideoWaitsForEveryFrame) {
     EXPECT_EQ(probe(dir + "/v.mp4").frames, 6);
 }
 
+// A frame cut short after its header (an interrupted copy in the farm workflow) still says its
+// size; it must be rendered again, and the video must hold every frame it claims.
+TEST(AnimationCli, ATruncatedFrameIsRenderedAgain) {
+    std::string dir = fresh_dir("truncated");
+    ASSERT_EQ(test::run_lancer("render " + kScene + " -o " + dir + "/f_%d.png").exit_code, 0);
+    std::string whole = slurp(dir + "/f_3.png");
+    fs::resize_file(dir + "/f_3.png", 60);
+    auto r = test::run_lancer("render " + kScene + " -o " + dir + "/f_%d.png --video " + dir + "/v.mp4");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto rendered = rendered_frame_lines(r.err);
+    ASSERT_EQ(rendered.size(), 1u) << r.err;
+    EXPECT_EQ(rendered[0].rfind(dir + "/f_3.png: frame 3 (1/1)", 0), 0u) << rendered[0];
+    EXPECT_NE(r.err.find("rendering frame(s) 3 again: their files do not decode completely at 48x27"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(slurp(dir + "/f_3.png"), whole);
+    EXPECT_EQ(probe(dir + "/v.mp4").frames, 6);
+}
+
+// The same cut-short frame is not a frame for --video: it is named as missing rather than
+// encoded as whatever ffmpeg makes of it.
+TEST(AnimationCli, VideoCountsDecodedFramesNotFiles) {
+    std::string dir = fresh_dir("truncated-video");
+    ASSERT_EQ(test::run_lancer("render " + kScene + " -o " + dir + "/f_%d.png").exit_code, 0);
+    fs::resize_file(dir + "/f_2.png", 60);
+    auto r = test::run_lancer("render " + kScene + " --frames 0-1 -o " + dir + "/f_%d.png --video " + dir + "/v.mp4");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(lines_of(r.err).back().find("frame(s) 2 of " + dir + "/f_%d.png are missing"), std::string::npos) << r.err;
+    EXPECT_FALSE(test::file_exists(dir + "/v.mp4"));
+}
+
 struct BadCase {
     std::string name;
     std::string args;  // DIR is replaced by the case's empty directory
@@ -276,7 +306,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"still_scene_pattern", "render " + kSeed + " --width 8 --height 8 -o DIR/f_%d.png", "",
                 "lancer: error: -o DIR/f_%d.png: a frame number pattern, but " + kSeed + " has no [animation] table"},
         BadCase{"bad_animation", "render " + test::source_path("tests/data/bad/anim_fps_zero.toml") + " -o DIR/f_%d.png", "",
-                test::source_path("tests/data/bad/anim_fps_zero.toml") + ":4:7: error: fps must be above 0"}),
+                test::source_path("tests/data/bad/anim_fps_zero.toml") + ":4:7: error: fps must be between 0.01 and 1000"}),
     [](const auto& info) { return info.param.name; });
 
 }  // namespace

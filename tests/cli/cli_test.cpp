@@ -32,6 +32,23 @@ TEST(Cli, RendersTheSeedSceneWithAFinalTimingLine) {
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
 }
 
+// Any name the file system accepts works: the temporary file beside it (".NAME.XXXXXX") is
+// shortened to fit. A name it does not accept is refused before anything is rendered.
+TEST(Cli, OutputNamesUpToTheFileSystemsLimit) {
+    std::string dir = test::fresh_dir("cli-long-names");
+    std::string name = std::string(250, 'n') + ".png";  // 254 bytes
+    auto r = test::run_lancer("render " + test::source_path("scenes/seed.toml") + kSmall + "-o " + dir + "/" + name);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(read_png(dir + "/" + name).width, 32);
+    std::string too_long = std::string(252, 'n') + ".png";  // 256 bytes
+    auto refused = test::run_lancer("render " + test::source_path("scenes/seed.toml") + kSmall + "-o " + dir + "/" + too_long);
+    EXPECT_EQ(refused.exit_code, 2);
+    EXPECT_NE(refused.err.find("its name is 256 bytes long, and the file system allows 255"), std::string::npos)
+        << refused.err;
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1)
+        << "the one image, and no temporary file";
+}
+
 TEST(Cli, CpuBackendAndOverridesWork) {
     std::string out = out_path("cpu");
     auto r = test::run_lancer("render " + test::source_path("scenes/phong.toml") +

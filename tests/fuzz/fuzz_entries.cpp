@@ -17,7 +17,10 @@
 #include "surface/expr/domain_check.hpp"
 #include "surface/expr/evaluate.hpp"
 #include "surface/expr/glsl_emitter.hpp"
+#include "surface/expr/gpu_float.hpp"
 #include "surface/expr/parser.hpp"
+#include "surface/expr/program.hpp"
+#include "surface/float_check.hpp"
 #include "surface/patch_file.hpp"
 
 namespace lancer::fuzz {
@@ -179,6 +182,60 @@ void scene_entry(const std::uint8_t* data, std::size_t size) {
     }
 }
 
+namespace {
+
+// The GPU evaluates in float. An expression the loader's float check accepts
+// (surface/float_check.hpp, which samples a 65 x 65 grid) must evaluate to finite floats, value
+// and derivatives, wherever double gives finite values within float's range (here: up to 1e30),
+// at points between the grid's too. (A coarse grid first, for speed; the loader's only where the
+// points between find something: v^v^-32 slipped through the coarse one, and the loader's
+// refuses it.)
+void check_gpu_float(const surface::Expr& e, int size) {
+    try {
+        surface::check_float_constants(e);
+    } catch (const surface::ExprError& error) {
+        require(error.column >= 0 && error.column <= size, "a float constant error's column is outside the text");
+        return;
+    }
+    surface::ParametricSurface s;
+    s.x = e;
+    s.y = e;
+    s.z = e;
+    const surface::Expr* xyz[] = {&s.x, &s.y, &s.z};
+    const surface::Program program = surface::compile_program(xyz);
+    try {
+        surface::check_float_evaluation(program, s, 4);  // a coarse grid: the points below lie between its points
+    } catch (const surface::FloatEvaluationError& error) {
+        require(error.column >= 0 && error.column <= size, "a float evaluation error's column is outside the text");
+        require(error.expression >= 0 && error.expression < 3, "a float evaluation error names no expression");
+        return;
+    }
+    auto representable = [](double x) { return std::isfinite(x) && std::abs(x) <= 1e30; };
+    for (int i = 0; i < 8; ++i) {
+        for (int j = 0; j < 8; ++j) {
+            const double u = static_cast<float>((i + 0.37) / 8), v = static_cast<float>((j + 0.61) / 8);
+            surface::Dual<double> d[3];
+            surface::evaluate_program(program, surface::Dual<double>::variable_u(u), surface::Dual<double>::variable_v(v), d);
+            surface::Dual<surface::GpuFloat> f[3];
+            surface::evaluate_program(program, surface::Dual<surface::GpuFloat>::variable_u(surface::GpuFloat(u)),
+                                      surface::Dual<surface::GpuFloat>::variable_v(surface::GpuFloat(v)), f);
+            if (!representable(d[0].v) || !representable(d[0].du) || !representable(d[0].dv)) continue;
+            if (std::isfinite(f[0].v.x) && std::isfinite(f[0].du.x) && std::isfinite(f[0].dv.x)) continue;
+            // The coarse grid missed it; the loader's grid (65 x 65) must not.
+            try {
+                surface::check_float_evaluation(program, s);
+            } catch (const surface::FloatEvaluationError&) {
+                return;
+            }
+            require(false, fmt::format("accepted by the loader's float check, but not finite in float at ({}, {}) where "
+                                       "double gives {}, {}, {}",
+                                       u, v, d[0].v, d[0].du, d[0].dv));
+        }
+    }
+}
+
+}  // namespace
+
 void expression_entry(const std::uint8_t* data, std::size_t size) {
     static const surface::Constants constants{{"a", 2.0}, {"R", 1.0}, {"r", 0.35}, {"k", -3.0}};
     surface::Expr e;
@@ -206,6 +263,7 @@ void expression_entry(const std::uint8_t* data, std::size_t size) {
         return;
     }
     surface::emit_glsl_surface(e, e, e, "fuzz_surface");
+    check_gpu_float(e, static_cast<int>(size));
 }
 
 void patch_entry(const std::uint8_t* data, std::size_t size) {

@@ -28,6 +28,7 @@ public:
     // by one), or -1 on timeout.
     int wait_exit(std::chrono::seconds timeout = std::chrono::seconds(120));
     const std::string& output() const { return output_; }
+    pid_t pid() const { return pid_; }
 
 private:
     bool read_some(int timeout_ms);  // false at end of output

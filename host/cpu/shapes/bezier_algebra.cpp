@@ -1,6 +1,6 @@
 #include "cpu/shapes/bezier_algebra.hpp"
 
-#include <lapacke.h>
+#include "cpu/lapack.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +24,7 @@ std::vector<double>& workspace() {
     thread_local std::vector<double> work;
     if (work.empty()) {
         double a[kK * kK] = {}, b[kK * kK] = {}, ar[kK], ai[kK], be[kK], query = 0.0;
-        lapack_int info = LAPACKE_dggev_work(LAPACK_COL_MAJOR, 'N', 'N', kK, a, kK, b, kK, ar, ai, be, nullptr, 1,
+        lapack_int info = lapack_dggev_work()(LAPACK_COL_MAJOR, 'N', 'N', kK, a, kK, b, kK, ar, ai, be, nullptr, 1,
                                              nullptr, 1, &query, -1);
         work.resize(info == 0 ? std::max<std::size_t>(8 * kK, static_cast<std::size_t>(query)) : 64 * kK);
     }
@@ -126,7 +126,7 @@ bool resultant_roots(const Bicubic& f, const Bicubic& g, double lo, double hi, s
 
     double ar[kK], ai[kK], be[kK];
     std::vector<double>& work = workspace();
-    lapack_int info = LAPACKE_dggev_work(LAPACK_COL_MAJOR, 'N', 'N', size, a, size, b, size, ar, ai, be, nullptr, 1,
+    lapack_int info = lapack_dggev_work()(LAPACK_COL_MAJOR, 'N', 'N', size, a, size, b, size, ar, ai, be, nullptr, 1,
                                          nullptr, 1, work.data(), static_cast<lapack_int>(work.size()));
     if (info != 0) return false;
     for (int e = 0; e < size; ++e) {

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "surface/expr/evaluate_nodes.hpp"
+#include "surface/expr/gpu_float.hpp"
 #include "surface/expr/scratch.hpp"
 
 namespace lancer::surface {
@@ -16,7 +17,8 @@ using NodeKey = std::tuple<Op, int, int, std::uint64_t>;
 
 class ProgramBuilder {
 public:
-    int add(const Expr& expr) {
+    int add(const Expr& expr, int origin) {
+        origin_ = origin;
         std::vector<int> map(expr.nodes.size());
         for (std::size_t i = 0; i < expr.nodes.size(); ++i) map[i] = add_node(expr.nodes[i], map);
         return expr.nodes.empty() ? add_constant(0.0, 0) : map.back();
@@ -40,6 +42,7 @@ public:
             if (n.b >= 0) n.b = renumber[n.b];
             renumber[i] = static_cast<int>(program.nodes.size());
             program.nodes.push_back(n);
+            program.origins.push_back(origins_[i]);
         }
         for (int o : outputs) program.outputs.push_back(renumber[o]);
         return program;
@@ -69,11 +72,16 @@ private:
     int intern(const Node& n) {
         NodeKey key{n.op, n.a, n.b, std::bit_cast<std::uint64_t>(n.value)};
         auto [it, inserted] = index_.try_emplace(key, static_cast<int>(nodes_.size()));
-        if (inserted) nodes_.push_back(n);
+        if (inserted) {
+            nodes_.push_back(n);
+            origins_.push_back(origin_);
+        }
         return it->second;
     }
 
     std::vector<Node> nodes_;
+    std::vector<int> origins_;
+    int origin_ = 0;
     std::map<NodeKey, int> index_;
 };
 
@@ -82,8 +90,21 @@ private:
 Program compile_program(std::span<const Expr* const> expressions) {
     ProgramBuilder builder;
     std::vector<int> outputs;
-    for (const Expr* e : expressions) outputs.push_back(builder.add(*e));
+    for (const Expr* e : expressions) outputs.push_back(builder.add(*e, static_cast<int>(outputs.size())));
     return builder.finish(std::move(outputs));
+}
+
+int count_operations(const Program& program) {
+    int count = 0;
+    for (const Node& n : program.nodes) count += n.op != Op::Constant && n.op != Op::U && n.op != Op::V;
+    return count;
+}
+
+template <class T>
+const T* evaluate_all_nodes(const Program& program, const T& u, const T& v) {
+    T* values = scratch_values<T>(program.nodes.size());
+    evaluate_nodes(program.nodes.data(), static_cast<int>(program.nodes.size()), u, v, values);
+    return values;
 }
 
 template <class T>
@@ -139,5 +160,10 @@ template void evaluate_program(const Program&, const double&, const double&, dou
 template void evaluate_program(const Program&, const Interval&, const Interval&, Interval*);
 template void evaluate_program(const Program&, const Dual<double>&, const Dual<double>&, Dual<double>*);
 template void evaluate_program(const Program&, const Dual<Interval>&, const Dual<Interval>&, Dual<Interval>*);
+template void evaluate_program(const Program&, const Dual<GpuFloat>&, const Dual<GpuFloat>&, Dual<GpuFloat>*);
+template const double* evaluate_all_nodes(const Program&, const double&, const double&);
+template const Interval* evaluate_all_nodes(const Program&, const Interval&, const Interval&);
+template const Dual<double>* evaluate_all_nodes(const Program&, const Dual<double>&, const Dual<double>&);
+template const Dual<GpuFloat>* evaluate_all_nodes(const Program&, const Dual<GpuFloat>&, const Dual<GpuFloat>&);
 
 }  // namespace lancer::surface

@@ -15,10 +15,16 @@ namespace lancer::surface {
 
 struct Program {
     std::vector<Node> nodes;  // post-order; columns are those of the first occurrence
+    std::vector<int> origins;  // per node: the expression (index into outputs) of that first occurrence
     std::vector<int> outputs;  // the node of each compiled expression, in order
 };
 
 Program compile_program(std::span<const Expr* const> expressions);
+
+// The operations a program performs per evaluation (its nodes less constants, u and v): the
+// measure of its cost on the GPU, where each becomes a few lines of the tracer that the driver
+// compiles, and that run at every Newton step of every ray.
+int count_operations(const Program& program);
 
 // Evaluates every output: out[i] is the value of expressions[i].
 template <class T>
@@ -28,6 +34,13 @@ extern template void evaluate_program(const Program&, const double&, const doubl
 extern template void evaluate_program(const Program&, const Interval&, const Interval&, Interval*);
 extern template void evaluate_program(const Program&, const Dual<double>&, const Dual<double>&, Dual<double>*);
 extern template void evaluate_program(const Program&, const Dual<Interval>&, const Dual<Interval>&, Dual<Interval>*);
+struct GpuFloat;
+extern template void evaluate_program(const Program&, const Dual<GpuFloat>&, const Dual<GpuFloat>&, Dual<GpuFloat>*);
+
+// Every node's value, not only the outputs': values[i] for node i (a scratch buffer of this
+// thread, valid until the next evaluation of this type).
+template <class T>
+const T* evaluate_all_nodes(const Program& program, const T& u, const T& v);
 
 // Dual<Interval> evaluation over a box that also reports whether every operation is proved
 // defined, continuous and differentiable on the whole box: the condition under which the

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Prints the machine a benchmark ran on, for the first lines of its output: the CPU model, its
+# cores and the vector extensions lavapipe's code generator can use (AVX, AVX2, AVX-512, FMA),
+# and the Vulkan device with its driver. lavapipe's speed depends on the CPU far more than
+# C++'s does (docs/performance.md), so no figure means anything without these.
+#   source bench/machine.sh; machine_description
+machine_description() {
+  local model cores flags vec=()
+  model=$(lscpu | sed -nE 's/^Model name: *//p' | head -n 1)
+  cores=$(nproc)
+  flags=" $(lscpu | sed -nE 's/^Flags: *//p') "
+  for f in avx avx2 fma avx512f avx512vl avx512bw; do [[ $flags == *" $f "* ]] && vec+=("$f"); done
+  echo "CPU: ${model:-unknown}, ${cores} cores, vector extensions: ${vec[*]:-none beyond SSE}"
+  [ -n "${GALLIUM_OVERRIDE_CPU_CAPS:-}" ] && echo "GALLIUM_OVERRIDE_CPU_CAPS=$GALLIUM_OVERRIDE_CPU_CAPS (lavapipe's code generator told to use only these)"
+  if [ -x build/lancer ]; then
+    build/lancer render --list-devices 2>/dev/null | sed 's/^/Vulkan: /' | head -n 3
+  fi
+}

@@ -1,0 +1,97 @@
+// Where lancer's start-up goes on the GPU path, phase by phase, for one scene (a benchmark, not
+// a test): Vulkan instance and device, packing and upload, pipeline creation (lavapipe turns the
+// SPIR-V into NIR here), and the first dispatch of one pixel (llvmpipe compiles the NIR with
+// LLVM here, or finds it in Mesa's shader cache).
+//
+//   build/bench/lancer_startup_phases SCENE [SPIRV_FILE]
+//
+// With SPIRV_FILE, the pipeline is built from that module instead of the embedded tracer (to
+// measure what a smaller or pre-optimised module costs the driver).
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+#include "gpu/embedded_shaders.hpp"
+#include "gpu/pipeline.hpp"
+#include "gpu/scene_packing.hpp"
+#include "gpu/spirv_specialize.hpp"
+#include "gpu/trace_resources.hpp"
+#include "gpu/vk_check.hpp"
+#include "scene/load_scene.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace lancer;
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: %s SCENE [SPIRV_FILE]\n", argv[0]);
+        return 2;
+    }
+    auto t = Clock::now();
+    Scene scene = load_scene(argv[1]);
+    scene.render.width = scene.render.height = scene.render.samples = 1;
+    std::printf("load scene        %8.1f ms\n", ms_since(t));
+
+    t = Clock::now();
+    gpu::Context context(gpu::ContextOptions{});
+    gpu::TraceLayout layout(context);
+    gpu::TraceResources resources(context, layout.set_layout());
+    std::printf("instance, device  %8.1f ms  (%s)\n", ms_since(t), context.info().name.c_str());
+
+    t = Clock::now();
+    gpu::PackedScene packed = gpu::pack_scene(scene);
+    resources.upload(packed, gpu::pack_frame(scene, packed));
+    const gpu::Buffer& output = resources.output(sizeof(gpu::vec4));
+    std::printf("pack, upload      %8.1f ms\n", ms_since(t));
+
+    std::vector<std::uint32_t> spirv = gpu::embedded_trace_spirv();
+    if (argc > 2) {
+        std::ifstream in(argv[2], std::ios::binary);
+        std::vector<char> bytes((std::istreambuf_iterator<char>(in)), {});
+        spirv.assign(bytes.size() / 4, 0);
+        std::memcpy(spirv.data(), bytes.data(), spirv.size() * 4);
+    }
+    std::printf("SPIR-V            %8zu words\n", spirv.size());
+    gpu::ShaderFeatures features = packed.features;
+    t = Clock::now();
+    std::size_t specialized = gpu::specialize_spirv(spirv, features).size();
+    std::printf("specialise        %8.1f ms  (%zu words; done again inside pipeline creation)\n", ms_since(t), specialized);
+    t = Clock::now();
+    gpu::ComputePipeline pipeline(context, layout, spirv, features);
+    std::printf("create pipeline   %8.1f ms\n", ms_since(t));
+
+    t = Clock::now();
+    VkDevice device = context.device();
+    VkCommandBuffer commands;
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = context.command_pool();
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    VK_CHECK(vkAllocateCommandBuffers(device, &alloc, &commands));
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    VK_CHECK(vkBeginCommandBuffer(commands, &begin));
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.handle());
+    VkDescriptorSet set = resources.descriptor_set();
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout.pipeline_layout(), 0, 1, &set, 0, nullptr);
+    gpu::BandParams band{0, 1, 0, 1};
+    vkCmdPushConstants(commands, layout.pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(band), &band);
+    vkCmdDispatch(commands, 1, 1, 1);
+    VK_CHECK(vkEndCommandBuffer(commands));
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &commands;
+    VK_CHECK(vkQueueSubmit(context.queue(), 1, &submit, VK_NULL_HANDLE));
+    VK_CHECK(vkQueueWaitIdle(context.queue()));
+    std::printf("first dispatch    %8.1f ms  (pixel %.3f %.3f %.3f)\n", ms_since(t),
+                static_cast<const gpu::vec4*>(output.data())->r, static_cast<const gpu::vec4*>(output.data())->g,
+                static_cast<const gpu::vec4*>(output.data())->b);
+    vkFreeCommandBuffers(device, context.command_pool(), 1, &commands);
+    return 0;
+}

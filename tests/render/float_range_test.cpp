@@ -1,0 +1,86 @@
+// The GPU computes in float, the reference in double. Where float cannot follow (issue 18: a
+// constant beyond float's range, weights below it), the GPU must either draw what the reference
+// draws or the scene must be refused at load; never a different picture without a word.
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "scene/load_scene.hpp"
+#include "support/test_support.hpp"
+
+namespace lancer {
+namespace {
+
+const char* kStage = R"(
+    [render]
+    width = 96
+    height = 72
+    samples = 2
+    [camera]
+    eye = [0.3, 0.6, -3]
+    look_at = [0, 0, 0]
+    fov = 50
+    [[light]]
+    position = [-3, 4, -5]
+    [material.m]
+    checker = { colors = [[0.8, 0.5, 0.2], [0.2, 0.3, 0.8]], size = 0.25 }
+    [[object]]
+    material = "m"
+)";
+
+// A bicubic patch over [-1, 1]^2 bulging towards the camera, with every weight `w`.
+std::string bulging_patch(const std::string& w) {
+    std::string points, weights;
+    for (int j = 0; j < 4; ++j) {
+        for (int i = 0; i < 4; ++i) {
+            double x = -1.0 + 2.0 * i / 3.0, y = -1.0 + 2.0 * j / 3.0;
+            double z = (i == 1 || i == 2) && (j == 1 || j == 2) ? -0.8 : 0.0;
+            points += fmt::format("{}[{}, {}, {}]", points.empty() ? "" : ", ", x, y, z);
+            weights += (weights.empty() ? "" : ", ") + w;
+        }
+    }
+    return fmt::format("type = \"bezier\"\ncontrol_points = [{}]\nweights = [{}]\n", points, weights);
+}
+
+// Weights of 1e-50 are a valid rational patch, the same surface as weights 1; in float they
+// were all 0 until the packing normalised them.
+TEST(FloatRange, TinyRationalWeightsRenderOnTheGpuAsTheReferenceDoes) {
+    Scene tiny = test::scene_from_text(std::string(kStage) + bulging_patch("1e-50"));
+    Scene unit = test::scene_from_text(std::string(kStage) + bulging_patch("1"));
+    Rgb8Image gpu = to_srgb8(test::render_on(test::Backend::Gpu, tiny));
+    test::expect_same_picture("tiny-weights-gpu-vs-cpu", gpu, to_srgb8(test::render_on(test::Backend::Cpu, tiny)));
+    test::expect_same_picture("tiny-weights-vs-unit-weights", gpu, to_srgb8(test::render_on(test::Backend::Gpu, unit)));
+}
+
+// "u*1e40/1e40" is u in double and NaN in float: refused, at the constant.
+TEST(FloatRange, AConstantBeyondFloatIsRefusedAtItsColumn) {
+    const std::string text = std::string(kStage) +
+                             "type = \"parametric\"\nx = \"u*1e40/1e40\"\ny = \"v\"\nz = \"0\"\nu = [0, 1]\nv = [0, 1]\n";
+    try {
+        test::scene_from_text(text);
+        FAIL() << "the surface was accepted";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.where().column, 8);
+        EXPECT_NE(std::string(e.what()).find("beyond float's range"), std::string::npos) << e.what();
+    }
+}
+
+// What float can evaluate is rendered alike by both: a surface with large intermediate
+// values (1e30, well within float) and a constant folded in double from out-of-range parts.
+TEST(FloatRange, SurfacesWithinFloatRenderAlike) {
+    Scene scene = test::scene_from_text(std::string(kStage) + R"toml(
+        type = "parametric"
+        x = "u*1e30/1e30 + (1e40/1e40 - 1)"
+        y = "v"
+        z = "0.3*sin(3*u)*cos(2*v)"
+        u = [-1, 1]
+        v = [-1, 1]
+    )toml");
+    test::expect_same_picture("float-range-gpu-vs-cpu", to_srgb8(test::render_on(test::Backend::Gpu, scene)),
+                              to_srgb8(test::render_on(test::Backend::Cpu, scene)));
+}
+
+}  // namespace
+}  // namespace lancer

@@ -1,0 +1,83 @@
+// lancer under an address-space limit (`ulimit -v`, `prlimit --as`, as batch schedulers set):
+// at every limit a run ends with a picture or with one clear message (exit code 2), never with
+// a crash inside the driver or a hang (issue 18). Each run is bounded by `timeout`, so a hang
+// fails the test instead of stalling it.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "image/image.hpp"
+#include "support/test_support.hpp"
+
+namespace lancer {
+namespace {
+
+struct LimitedRun {
+    int exit_code;
+    std::string err;
+};
+
+// `lancer ARGS` under an address-space limit of `mib` MiB, killed after 120 s.
+LimitedRun run_limited(int mib, const std::string& args) {
+    std::string err = test::output_dir() + "/limited-" + std::to_string(::getpid()) + ".err";
+    std::string command = "timeout -s KILL 120 prlimit --as=" + std::to_string(std::uint64_t(mib) << 20) + " " +
+                          LANCER_EXE + " " + args + " >/dev/null 2>" + err + " </dev/null";
+    int status = std::system(command.c_str());
+    LimitedRun r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), test::read_file(err)};
+    std::remove(err.c_str());
+    return r;
+}
+
+bool sanitized() {
+#if defined(__SANITIZE_ADDRESS__)
+    return true;  // ASan reserves terabytes of address space for its shadow memory
+#else
+    return false;
+#endif
+}
+
+// OpenBLAS's thread pool, started in its library constructor, looped in its allocation under
+// such a limit, and exit() waited for it: even --version never ended.
+TEST(MemoryLimits, VersionEndsUnderASmallLimit) {
+    if (sanitized()) GTEST_SKIP() << "address-space limits do not apply under ASan";
+    LimitedRun r = run_limited(200, "--version");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+class MemoryLimit : public testing::TestWithParam<int> {};
+
+TEST_P(MemoryLimit, EndsWithAPictureOrOneClearMessage) {
+    if (sanitized()) GTEST_SKIP() << "address-space limits do not apply under ASan";
+    const int mib = GetParam();
+    std::string out = test::fresh_dir("memory-limit-" + std::to_string(mib)) + "/out.png";
+    LimitedRun r = run_limited(mib, "render " + test::source_path("scenes/seed.toml") +
+                                 " --width 32 --height 18 --samples 1 -o " + out);
+    if (r.exit_code == 0) {
+        EXPECT_EQ(read_png(out).width, 32);
+        return;
+    }
+    EXPECT_EQ(r.exit_code, 2) << "a crash or a hang (124/137) under " << mib << " MiB: " << r.err;
+    EXPECT_EQ(test::count_occurrences(r.err, "\n"), 1) << r.err;
+    EXPECT_NE(r.err.find("the address-space limit (ulimit -v) is " + std::to_string(mib) + " MiB"), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(test::file_exists(out));
+}
+
+INSTANTIATE_TEST_SUITE_P(MiB, MemoryLimit, testing::Values(64, 200, 300, 450, 600, 900, 1500),
+                         [](const auto& info) { return std::to_string(info.param); });
+
+// The CPU reference needs no driver: it renders under a limit the GPU backend refuses.
+TEST(MemoryLimits, CpuBackendRendersUnderASmallLimit) {
+    if (sanitized()) GTEST_SKIP() << "address-space limits do not apply under ASan";
+    std::string out = test::fresh_dir("memory-limit-cpu") + "/out.png";
+    LimitedRun r = run_limited(200, "render " + test::source_path("scenes/seed.toml") +
+                                 " --backend cpu --width 32 --height 18 --samples 1 -o " + out);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(read_png(out).width, 32);
+}
+
+}  // namespace
+}  // namespace lancer
