@@ -91,7 +91,8 @@ const uint MAX_SHADOW_CROSSINGS = 16u;
 // along a straight shadow ray that starts at `origin` (just off the surface) inside `media`: 0
 // if an opaque surface is in the way; each transparent surface that changes the innermost
 // medium (and each thin sheet) multiplies it by (1 - k_r) * T of its material, and media absorb
-// along the way. No refraction and no Fresnel (no caustics). More than MAX_SHADOW_CROSSINGS
+// along the way. No refraction and no Fresnel (no caustics; with photon mapping, transparent
+// surfaces block shadow rays and the caustic photons bring that light). More than MAX_SHADOW_CROSSINGS
 // surfaces block the light. Distances are measured between surface points, not from the offset
 // origins, so absorption sees the true thickness.
 vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media) {
@@ -102,13 +103,15 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media) {
         Ray ray = Ray(origin, to_light / dist);
         Nearest best;
         uint medium = innermost(media);
-        // Without transparent materials any hit blocks the light, so the first one found will do.
+        // Without transparent materials any hit blocks the light, so the first one found will do;
+        // so it does with photon mapping, where the light through glass arrives as photons.
         // (One call of trace_scene for both cases: each call site inlines the whole intersection
         // code, which lavapipe then compiles, even where it is dead.)
-        if (!trace_scene(ray, 0.0, dist, !SCENE_HAS_TRANSPARENCY, best)) {
-            return SCENE_HAS_TRANSPARENCY ? through * absorption_over(medium, length(q - from)) : through;
+        const bool any_hit_blocks = !SCENE_HAS_TRANSPARENCY || SCENE_HAS_PHOTONS;
+        if (!trace_scene(ray, 0.0, dist, any_hit_blocks, best)) {
+            return any_hit_blocks ? through : through * absorption_over(medium, length(q - from));
         }
-        if (!SCENE_HAS_TRANSPARENCY || k == MAX_SHADOW_CROSSINGS) break;
+        if (any_hit_blocks || k == MAX_SHADOW_CROSSINGS) break;
         uint mat = primitive_at(best.prim).material;
         Material m = material_at(mat);
         if (!is_transparent(m)) break;

@@ -70,6 +70,22 @@ LANCER_CONST LIGHT_POINT = 0;
 LANCER_CONST LIGHT_SPOT = 1;
 LANCER_CONST LIGHT_AREA = 2;
 
+// Material::model values (docs/scene-format.md, "Microfacet materials").
+LANCER_CONST MODEL_PHONG = 0;
+LANCER_CONST MODEL_MICROFACET_METAL = 1;
+LANCER_CONST MODEL_MICROFACET_GLASS = 2;
+LANCER_CONST ENERGY_TABLE_SIZE = 32;  // E(mu) at mu = i / 31 (host/optics/energy.hpp: EnergyTable::kSize)
+
+// Photon mapping (docs/scene-format.md, "[photons]"): workgroup size of the photon pass and of
+// the grid build (shaders/photons.comp, photon_grid.comp), and the grid build's steps.
+LANCER_CONST PHOTON_WORKGROUP = 64;
+LANCER_CONST GRID_CLEAR = 0;
+LANCER_CONST GRID_COUNT = 1;
+LANCER_CONST GRID_SCAN = 2;
+LANCER_CONST GRID_BLOCKS = 3;
+LANCER_CONST GRID_OFFSET = 4;
+LANCER_CONST GRID_SCATTER = 5;
+
 // ---------------------------------------------------------------------------------------------
 // Structs, as lists of rows. LANCER_ROWS_Name(VEC4, VEC4S, SCALARS) lists the rows of struct
 // Name in order: VEC4(name) a vec4; VEC4S(name, n) an array of n vec4s; SCALARS(T0, n0, T1, n1,
@@ -124,21 +140,25 @@ LANCER_CONST LIGHT_AREA = 2;
     VEC4(hi) /* xyz */                            \
     SCALARS(uint, first, uint, count, uint, reserved0, uint, reserved1)
 
+// A microfacet material (model != MODEL_PHONG) keeps its constants in the rows Phong's would
+// use (shaders/microfacet_material.glsl): color.rgb = its tint, color2 = (eta, alpha = roughness^2),
+// phong = (k, E_avg); a metal's energy table and multiple-scattering colour below.
 #define LANCER_ROWS_Material(VEC4, VEC4S, SCALARS)                                                  \
     VEC4(color)  /* rgb = pigment (checker: first colour), linear */                                \
     VEC4(color2) /* rgb = second checker colour */                                                  \
     VEC4(phong)  /* x = ambient, y = diffuse, z = specular, w = shininess (n_s) */                   \
-    SCALARS(float, reflection, uint, pattern, float, checker_size, uint, reserved)                  \
+    SCALARS(float, reflection, uint, pattern, float, checker_size,                                   \
+            uint, model) /* MODEL_PHONG, MODEL_MICROFACET_METAL or MODEL_MICROFACET_GLASS */          \
     /* textures and patterns (shaders/appearance.glsl): indices, or NO_MAP */                        \
     SCALARS(uint, texture_map,   /* into textures: the pigment is multiplied by the image's colour */ \
             uint, color_pattern, /* into patterns: the pigment is multiplied by the pattern's colour */ \
             uint, bump_pattern,  /* into patterns: the shading normal is tilted by its gradient */   \
-            uint, maps_reserved)                                                                    \
+            uint, energy_table)  /* microfacet metals: their table in energy_tables */              \
     /* optics: refraction and the highlight model */                                                \
     VEC4(transmission) /* rgb = T, the fraction passed per channel (all 0: opaque); w = ior */      \
     VEC4(absorption)   /* rgb = Beer-Lambert coefficient per unit distance inside; w unused */      \
     SCALARS(uint, highlight, /* HIGHLIGHT_PHONG or HIGHLIGHT_BLINN */                               \
-            uint, optics_reserved0, uint, optics_reserved1, uint, optics_reserved2)
+            float, ms_tint_r, float, ms_tint_g, float, ms_tint_b) /* microfacet metals: the multiple-scattering colour */
 
 // An image as a material places it (shaders/texture.glsl). Image coordinates (s, t) run from
 // (0, 0) at the image's bottom-left corner to (1, 1) at its top-right one.
@@ -188,6 +208,29 @@ LANCER_CONST LIGHT_AREA = 2;
     SCALARS(uint, loop_probe, /* always 2: the trip count of trace.comp's loop_limit_reached() probe */ \
             uint, reserved0, uint, reserved1, uint, reserved2)
 
+// A light as photon mapping sees it (one per Light, in the same order).
+#define LANCER_ROWS_Emitter(VEC4, VEC4S, SCALARS)                                                   \
+    VEC4(power) /* rgb = the power (W) of each photon it sends; w = P(this light or one before it) */ \
+    VEC4(cone)  /* spot lights: x = the outer cone's solid angle over the spot's weighted one */
+
+// A photon where it landed on a diffuse surface (shaders/photons.comp).
+#define LANCER_ROWS_Photon(VEC4, VEC4S, SCALARS)                  \
+    VEC4(position)  /* xyz; w = its map: 0 caustic, 1 global */    \
+    VEC4(direction) /* xyz = the way it travelled */               \
+    VEC4(power)     /* rgb, watts */
+
+// The photon pass's constants (a uniform block, written before each pass).
+#define LANCER_ROWS_PhotonParams(VEC4, VEC4S, SCALARS)                                                      \
+    VEC4(radii) /* x, y = the caustic and global maps' gather radii this pass; z = the power quantum the gather sums in */ \
+    SCALARS(uint, pass, uint, count, /* photons shot this pass */ uint, seed, uint, max_bounces)             \
+    SCALARS(uint, capacity,   /* photons the photons array holds */                                          \
+            uint, table_size, /* buckets per map of the hashed grid, a power of 2 */                         \
+            uint, first_pass, uint, last_pass) /* the render's passes: [first_pass, last_pass) */
+
+// Push constants of the grid build (shaders/photon_grid.comp): which step.
+#define LANCER_ROWS_GridStep(VEC4, VEC4S, SCALARS) \
+    SCALARS(uint, kind, /* GRID_COUNT, ... */ uint, reserved0, uint, reserved1, uint, reserved2)
+
 // Push constants: which band of rows this dispatch renders, and which of each pixel's N x N
 // grid samples it traces, in the order a whole render traces them (k = j * N + i, row by row).
 // A pass that does not start at sample 0 continues the sums the output buffer holds, and only
@@ -221,6 +264,10 @@ LANCER_STRUCT(PatternInfo)
 LANCER_STRUCT(Light)
 LANCER_STRUCT(FrameParams)
 LANCER_STRUCT(BandParams)
+LANCER_STRUCT(Emitter)
+LANCER_STRUCT(Photon)
+LANCER_STRUCT(PhotonParams)
+LANCER_STRUCT(GridStep)
 
 // ---------------------------------------------------------------------------------------------
 // Resources: every descriptor of set 0, as X(NAME, slot, kind, Element, member, reader, what).
@@ -258,12 +305,29 @@ LANCER_CONST RESOURCE_INT = 4;
     X(TEXELS, 9, RESOURCE_UINT, uint, texels, texel_at, "texture texels") /* RGBA8, R in the low byte */ \
     X(PATTERNS, 10, RESOURCE_ROWS, PatternInfo, patterns, pattern_at, "patterns")                       \
     X(PERMUTATION, 11, RESOURCE_INT, int, permutation, permutation_at, "noise permutation") /* Perlin's */ \
-    X(IMPLICITS, 12, RESOURCE_ROWS, ImplicitInfo, implicits, implicit_at, "implicit surfaces")
+    X(IMPLICITS, 12, RESOURCE_ROWS, ImplicitInfo, implicits, implicit_at, "implicit surfaces")          \
+    X(ENERGY, 13, RESOURCE_UINT, uint, energy_tables, energy_table_at, "microfacet energy tables") /* float bits */ \
+    X(EMITTERS, 14, RESOURCE_ROWS, Emitter, emitters, emitter_at, "photon emitters")
 
 #define LANCER_RESOURCES(X)                                                          \
     X(FRAME, 0, RESOURCE_UNIFORM, FrameParams, frame, frame, "frame parameters")     \
     LANCER_SCENE_ARRAYS(X)                                                           \
-    X(OUTPUT, 13, RESOURCE_OUTPUT, vec4, pixels, pixels, "output rows") /* one band of the image */
+    X(OUTPUT, 15, RESOURCE_OUTPUT, vec4, pixels, pixels, "output rows") /* one band of the image */  \
+    LANCER_PHOTON_BUFFERS(X)
+
+// Photon mapping's working buffers, written by its compute passes (sizes: gpu/photon_pass.cpp).
+#define LANCER_PHOTON_BUFFERS(X)                                                                     \
+    X(PHOTON_PARAMS, 16, RESOURCE_UNIFORM, PhotonParams, photon_params, photon_params, "photon pass parameters") \
+    X(PHOTONS, 17, RESOURCE_OUTPUT, Photon, photons, photons, "photons")                             \
+    X(PHOTONS_SORTED, 18, RESOURCE_OUTPUT, Photon, photons_sorted, photons_sorted, "photons by grid bucket") \
+    X(PHOTON_COUNTER, 19, RESOURCE_OUTPUT, uint, photon_counter, photon_counter, "photon counter")   \
+    X(CELL_COUNT, 20, RESOURCE_OUTPUT, uint, cell_count, cell_count, "photons per grid bucket")     \
+    X(CELL_START, 21, RESOURCE_OUTPUT, uint, cell_start, cell_start, "grid bucket starts")          \
+    X(BLOCK_SUMS, 22, RESOURCE_OUTPUT, uint, block_sums, block_sums, "grid scan block sums")         \
+    /* the sorted photons and bucket starts again, as texel buffers for the tracer's gather (llvmpipe */ \
+    /* reads storage buffers lane by lane): copied from the two above once a pass is sorted */            \
+    X(GATHER_PHOTONS, 23, RESOURCE_ROWS, Photon, gather_photons, gather_photon_at, "photons to gather")   \
+    X(GATHER_STARTS, 24, RESOURCE_UINT, uint, gather_starts, gather_start_at, "grid bucket starts to gather")
 
 #define LANCER_BINDING_CONSTANT(NAME, slot, kind, Element, member, reader, what) LANCER_CONST BINDING_##NAME = slot;
 LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
@@ -289,7 +353,9 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(SCENE_HAS_SPHERE, 11, has_sphere, true)       /* shape families: lavapipe runs every case of a */ \
     X(SCENE_HAS_PLANE, 12, has_plane, true)         /* switch on the shape type, whatever the type */  \
     X(SCENE_HAS_RECTANGLE, 13, has_rectangle, true)                                                  \
-    X(SCENE_HAS_BOX, 14, has_box, true)
+    X(SCENE_HAS_BOX, 14, has_box, true)                                                              \
+    X(SCENE_HAS_MICROFACET, 15, has_microfacet, true) /* a material with model = "microfacet" */      \
+    X(SCENE_HAS_PHOTONS, 16, has_photons, true)     /* photon mapping: gather at diffuse hits */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");
@@ -305,6 +371,10 @@ LANCER_ASSERT_SIZE(PatternInfo)
 LANCER_ASSERT_SIZE(Light)
 LANCER_ASSERT_SIZE(FrameParams)
 LANCER_ASSERT_SIZE(BandParams)
+LANCER_ASSERT_SIZE(Emitter)
+LANCER_ASSERT_SIZE(Photon)
+LANCER_ASSERT_SIZE(PhotonParams)
+LANCER_ASSERT_SIZE(GridStep)
 #undef LANCER_ASSERT_SIZE
 }  // namespace lancer::gpu
 #endif

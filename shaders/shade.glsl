@@ -5,6 +5,7 @@
 #define LANCER_SHADE_GLSL
 
 #include "lights.glsl"
+#include "microfacet_material.glsl"
 
 vec3 material_pigment(Material m, vec3 p) {
     if (m.pattern == PATTERN_CHECKER) {
@@ -30,16 +31,25 @@ const float MIN_LIGHT = 1.0 / 65536.0;
 // front), shading_n the one that lights the surface (n, or tilted by a bump). Shadow rays start
 // at `origin`, just off the surface, inside `media` (transparent objects in the way tint rather
 // than block). `scale` is what the local colour will be multiplied by on its way to the pixel.
+// A microfacet material's light is pi f (N.L) times the light's (its colour is irradiance over
+// pi): in `diffuse`, with `pigment` holding the indices (n1, n2) of a glass's interface.
 void add_light(inout vec3 color, Material m, vec3 pigment, vec3 p, vec3 n, vec3 shading_n, vec3 view_dir, vec3 mirrored,
                vec3 origin, Light light, vec3 q, uint count, Media media, vec3 scale, inout float rays) {
     vec3 l = normalize(q - p);
     if (dot(n, l) <= 0.0) return;  // light behind the surface: no shadow ray needed
-    float n_dot_l = max(0.0, dot(shading_n, l));
-    vec3 diffuse = m.phong.y * n_dot_l * pigment;
-    float highlight = SCENE_HAS_BLINN && m.highlight == HIGHLIGHT_BLINN ? dot(shading_n, normalize(l - view_dir)) : dot(mirrored, l);
-    float shine = highlight > 0.0 && m.phong.z > 0.0 ? m.phong.z * pow(highlight, m.phong.w) : 0.0;
+    bool micro = SCENE_HAS_MICROFACET && m.model != MODEL_PHONG;
+    vec3 diffuse;
+    float shine = 0.0;
+    if (micro) {
+        diffuse = MICROFACET_PI * dot(n, l) * microfacet_brdf(m, n, -view_dir, l, pigment.x, pigment.y);
+    } else {
+        float n_dot_l = max(0.0, dot(shading_n, l));
+        diffuse = m.phong.y * n_dot_l * pigment;
+        float highlight = SCENE_HAS_BLINN && m.highlight == HIGHLIGHT_BLINN ? dot(shading_n, normalize(l - view_dir)) : dot(mirrored, l);
+        shine = highlight > 0.0 && m.phong.z > 0.0 ? m.phong.z * pow(highlight, m.phong.w) : 0.0;
+    }
     vec3 intensity = light_intensity(light, q, p, count);
-    if (SCENE_HAS_TRANSPARENCY && is_transparent(m) && max3(scale * (diffuse + shine) * intensity) < MIN_LIGHT) return;
+    if ((micro || (SCENE_HAS_TRANSPARENCY && is_transparent(m))) && max3(scale * (diffuse + shine) * intensity) < MIN_LIGHT) return;
     rays += 1.0;
     vec3 through = transmittance(p, origin, q, media);
     if (max3(through) <= 0.0) return;  // in the shadow of an opaque surface
@@ -48,14 +58,16 @@ void add_light(inout vec3 color, Material m, vec3 pigment, vec3 p, vec3 n, vec3 
     if (shine > 0.0) color += shine * intensity;
 }
 
-// pigment: the surface's colour there (appearance.glsl). n: the geometric normal, facing the
+// pigment: the surface's colour there (appearance.glsl); for a microfacet material, (n1, n2). n: the geometric normal, facing the
 // viewer; shading_n: the normal that lights the surface. view_dir is the incoming ray direction;
 // `media` holds the transparent materials the incoming ray is inside; `seed` places area light
 // samples (lights.glsl); `scale` is what the result will be multiplied by on its way to the pixel.
 vec3 shade_local(Material m, vec3 pigment, vec3 p, vec3 n, vec3 shading_n, vec3 view_dir, Media media, uint seed,
                  vec3 scale, inout float rays) {
-    if (SCENE_HAS_TRANSPARENCY) pigment *= vec3(1.0) - m.transmission.rgb;  // the part that is not transmitted
-    vec3 color = m.phong.x * pigment * frame.ambient.rgb;
+    bool micro = SCENE_HAS_MICROFACET && m.model != MODEL_PHONG;
+    if (micro && material_alpha(m) == 0.0) return vec3(0.0);  // a perfect mirror shows no point of light
+    if (SCENE_HAS_TRANSPARENCY && !micro) pigment *= vec3(1.0) - m.transmission.rgb;  // the part that is not transmitted
+    vec3 color = micro ? vec3(0.0) : m.phong.x * pigment * frame.ambient.rgb;
     vec3 mirrored = reflect(view_dir, shading_n);
     vec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
     // One loop over every sample of every light (a point or spot light is one sample at its

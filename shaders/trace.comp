@@ -20,6 +20,8 @@ layout(push_constant) uniform BandBlock { BandParams band; };
 #include "dielectric.glsl"
 #include "shade.glsl"
 #include "appearance.glsl"
+#include "microfacet_material.glsl"
+#include "photon_gather.glsl"
 
 // The ray tree. At a transparent surface a ray splits into a reflected and a refracted ray: the
 // heavier goes on at once, the lighter waits in a small stack (when the stack is full, it is
@@ -73,29 +75,57 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
                 from = p;
                 goes_on = ++passes <= MAX_PASS_THROUGH;
             } else {
-                Appearance look = appearance_at(m, hit, p, n);
-                vec3 scale = weight * (1.0 - m.reflection);
-                color += scale * shade_local(m, look.pigment, p, n, look.normal, ray.dir, media, hash_u32(seed + depth), scale, rays);
-                vec3 reflected_weight = weight * m.reflection;
+                vec3 reflected_weight, reflected_dir;
                 vec3 refracted_weight = vec3(0.0);
                 vec3 refracted_dir = ray.dir;
-                if (clear) {
+                if (SCENE_HAS_MICROFACET && m.model != MODEL_PHONG) {
+                    // A metal or a glass of microfacets (microfacet_material.glsl): its direct
+                    // light by the BRDF, and the rays it sends on, drawn from its lobes.
                     float n1 = medium_ior(innermost(media));
                     float n2 = sheet ? m.transmission.w : medium_ior(innermost(beyond));
-                    float cos_i = -dot(ray.dir, n);
-                    float cos_t;
-                    float f = fresnel(cos_i, n1, n2, cos_t);
-                    vec3 passing = weight * (1.0 - m.reflection) * m.transmission.rgb;
-                    reflected_weight += passing * f;
-                    refracted_weight = passing * (1.0 - f);
-                    if (!sheet) refracted_dir = refraction(ray.dir, n, n1 / n2, cos_i, cos_t);
+                    uint seed_d = hash_u32(seed + depth);
+                    color += weight * shade_local(m, vec3(n1, n2, 0.0), p, n, n, ray.dir, media, seed_d, weight, rays);
+                    vec3 u = surface_sample_numbers(seed_d);
+                    if (is_metal(m)) {
+                        Scattered s = sample_metal(m, n, -ray.dir, u);
+                        reflected_dir = s.dir;
+                        reflected_weight = weight * s.weight;
+                    } else {
+                        Scattered mirrored, refracted;
+                        sample_glass(m, sheet ? 0.0 : material_alpha(m), n, -ray.dir, n1, n2, u, mirrored, refracted);
+                        reflected_dir = mirrored.dir;
+                        reflected_weight = weight * mirrored.weight;
+                        refracted_weight = weight * refracted.weight;
+                        if (!sheet) refracted_dir = refracted.dir;
+                    }
+                } else {
+                    Appearance look = appearance_at(m, hit, p, n);
+                    vec3 scale = weight * (1.0 - m.reflection);
+                    color += scale * shade_local(m, look.pigment, p, n, look.normal, ray.dir, media, hash_u32(seed + depth), scale, rays);
+                    // Photon mapping: caustics and indirect light, the diffuse BRDF k_d C' / pi
+                    // times the irradiance the photons estimate.
+                    if (SCENE_HAS_PHOTONS && m.phong.y > 0.0)
+                        color += scale * (m.phong.y / MICROFACET_PI) * look.pigment * (vec3(1.0) - m.transmission.rgb) *
+                                 photon_irradiance(p, n);
+                    reflected_weight = weight * m.reflection;
+                    if (clear) {
+                        float n1 = medium_ior(innermost(media));
+                        float n2 = sheet ? m.transmission.w : medium_ior(innermost(beyond));
+                        float cos_i = -dot(ray.dir, n);
+                        float cos_t;
+                        float f = fresnel(cos_i, n1, n2, cos_t);
+                        vec3 passing = weight * (1.0 - m.reflection) * m.transmission.rgb;
+                        reflected_weight += passing * f;
+                        refracted_weight = passing * (1.0 - f);
+                        if (!sheet) refracted_dir = refraction(ray.dir, n, n1 / n2, cos_i, cos_t);
+                    }
+                    // A bump tilts the mirror direction; refraction follows the geometric surface.
+                    reflected_dir = bounce_direction(ray.dir, look.normal, n);
                 }
                 // Past max_depth the children contribute black (POV-Ray's max_trace_level rule).
                 bool reflects = depth < frame.max_depth && max3(reflected_weight) >= MIN_WEIGHT;
                 bool refracts = depth < frame.max_depth && max3(refracted_weight) >= MIN_WEIGHT;
-                // A bump tilts the mirror direction; refraction follows the geometric surface.
-                Branch reflected = Branch(Ray(p + ray_offset(p) * n, bounce_direction(ray.dir, look.normal, n)), p,
-                                          reflected_weight, depth + 1u, media);
+                Branch reflected = Branch(Ray(p + ray_offset(p) * n, reflected_dir), p, reflected_weight, depth + 1u, media);
                 if (refracts) {
                     Branch refracted = Branch(Ray(past_surface(p, n, refracted_dir), refracted_dir), p, refracted_weight, depth + 1u, beyond);
                     Branch next = refracted;
@@ -156,6 +186,40 @@ vec4 first_hit(vec2 s) {
 // short. Its trip count comes from a uniform, so it cannot be unrolled away. A marked pixel
 // makes the host render its band again with one sample per invocation (gpu_renderer.cpp).
 
+bool loop_limit_reached();
+
+// Photon mapping renders one camera sample per pixel and pass (docs/scene-format.md): pass k
+// takes grid sample j = k mod N^2, at the cell's centre with the seed of a plain render during
+// the first N^2 passes, and from round r = k / N^2 on at a hashed place with the seed
+// h(seed_j ^ h(r)). The passes of a render [first_pass, last_pass) add up in the output; the
+// last divides by their number.
+void photon_pass_pixel(uvec2 pixel, uint out_index) {
+    uint pass = photon_params.pass;
+    uint n = frame.samples;
+    uint j = pass % (n * n), round = pass / (n * n);
+    uint seed = hash_u32(hash_u32(hash_u32(pixel.x) ^ pixel.y) ^ j);
+    vec2 offset = vec2(0.5);
+    if (round > 0u) {
+        seed = hash_u32(seed ^ hash_u32(round));
+        uint g = hash_u32(seed);
+        offset = vec2(unit_interval(g), unit_interval(hash_u32(g)));
+    }
+    vec3 sum = vec3(0.0);
+    float rays = 0.0;
+    if (pass > photon_params.first_pass) {
+        sum = pixels[out_index].rgb;
+        rays = pixels[out_index].a;
+    }
+    bool marked = rays < 0.0;
+    sum += trace(camera_ray(vec2(pixel) + (vec2(uvec2(j % n, j / n)) + offset) / float(n)), seed, rays);
+    if (marked || (CHECK_LOOP_LIMIT && loop_limit_reached())) {
+        pixels[out_index] = vec4(0.0, 0.0, 0.0, -1.0);
+        return;
+    }
+    bool last = pass + 1u == photon_params.last_pass;
+    pixels[out_index] = last ? vec4(sum / float(photon_params.last_pass - photon_params.first_pass), rays) : vec4(sum, rays);
+}
+
 bool loop_limit_reached() {
     uint runs = 0u;
     for (uint i = 0u; i < frame.loop_probe; ++i) ++runs;
@@ -169,6 +233,11 @@ void main() {
     if (OUTPUT_HITS) {
         vec4 hit = first_hit(vec2(pixel) + 0.5);
         pixels[out_index] = CHECK_LOOP_LIMIT && loop_limit_reached() ? vec4(-1.0, 0.0, 0.0, -2.0) : hit;
+        return;
+    }
+
+    if (SCENE_HAS_PHOTONS) {
+        photon_pass_pixel(pixel, out_index);
         return;
     }
 

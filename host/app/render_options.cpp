@@ -1,7 +1,10 @@
 #include "app/render_options.hpp"
 
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -18,13 +21,22 @@ namespace lancer {
 
 namespace {
 
-// lancer writes PNG files only: a name without .png (or an empty one) would be a surprise later.
-std::string check_png_name(std::string& name) {
+// lancer writes PNG, OpenEXR and PFM files: any other name (or an empty one) would be a surprise later.
+std::string check_image_name(std::string& name) {
     if (name.empty()) return "the output file name is empty";
-    std::string ext = std::filesystem::path(name).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".png") return "'" + name + "': lancer writes PNG images, so the name must end in .png";
+    if (!image_format_of(name))
+        return "'" + name + "': lancer writes PNG, OpenEXR and PFM images, so the name must end in .png, .exr or .pfm";
     return {};
+}
+
+// "A-B" (0-based, inclusive) or "N" -> first, count; nullopt when malformed.
+std::optional<std::pair<int, int>> parse_range(const std::string& text) {
+    int a = 0, b = 0;
+    char dash = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &a, &dash, &b, &extra) == 3 && dash == '-' && a >= 0 && b >= a)
+        return std::pair{a, b - a + 1};
+    if (std::sscanf(text.c_str(), "%d%c", &a, &extra) == 1 && a >= 0) return std::pair{a, 1};
+    return std::nullopt;
 }
 
 }  // namespace
@@ -34,7 +46,7 @@ void add_render_options(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("-o,--output", o.output,
                    "Output PNG, or for an animation a frame pattern such as NAME_%03d.png "
                    "(default: the scene's name, here)")
-        ->check(CLI::Validator(check_png_name, "FILE.png"));
+        ->check(CLI::Validator(check_image_name, "FILE.png|.exr|.pfm"));
     cmd.add_option("--width", o.width, "Image width in pixels (overrides [render] width)")
         ->check(CLI::Range(1, limits::kMaxImageSide));
     cmd.add_option("--height", o.height, "Image height in pixels (overrides [render] height)")
@@ -42,6 +54,17 @@ void add_render_options(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--samples", o.samples, "N: an N x N grid of rays per pixel (default 3 = 9 rays)")
         ->check(CLI::Range(1, limits::kMaxSamples));
     cmd.add_option("--max-depth", o.max_depth, "Levels of reflection and refraction (default 5)")->check(CLI::Range(0, limits::kMaxDepth));
+    cmd.add_option("--exposure", o.exposure, "Stops: the PNG shows the image times 2^EV (overrides [render] exposure)")
+        ->check(CLI::Range(-64.0, 64.0));
+    cmd.add_option("--tone", o.tone, "Tone curve for the PNG: clamp, reinhard or aces (overrides [render] tone)")
+        ->check(CLI::IsMember({"clamp", "reinhard", "aces"}));
+    cmd.add_option("--photons", o.photons, "Photon mapping: photons shot per pass (switches it on; overrides [photons] count)")
+        ->check(CLI::Range(1, limits::kMaxPhotonsPerPass));
+    cmd.add_option("--passes", o.passes, "Photon mapping: passes whose estimates are averaged (overrides [photons] passes)")
+        ->check(CLI::Range(1, limits::kMaxPhotonPasses));
+    cmd.add_option("--pass-range", o.pass_range,
+                   "Photon mapping: render only passes A-B (0-based) of the whole, for one machine of a farm; "
+                   "combine the parts with lancer combine");
     cmd.add_option("--backend", o.backend, "gpu (Vulkan compute, default) or cpu (reference renderer)")
         ->check(CLI::IsMember({"gpu", "cpu"}));
     cmd.add_option("--device", o.device, "Vulkan device: index or part of its name (see --list-devices)");
@@ -57,9 +80,41 @@ Scene load_scene_with_overrides(const RenderOptions& o) {
     if (o.height) r.height = *o.height;
     if (o.samples) r.samples = *o.samples;
     if (o.max_depth) r.max_depth = *o.max_depth;
+    if (o.exposure) r.tone.exposure = *o.exposure;
+    if (o.tone == "clamp") r.tone.tone = Tone::Clamp;
+    if (o.tone == "reinhard") r.tone.tone = Tone::Reinhard;
+    if (o.tone == "aces") r.tone.tone = Tone::Aces;
+    if (o.photons) {
+        if (!scene.photons) scene.photons = photon_defaults(scene.camera);
+        scene.photons->count = *o.photons;
+    }
+    if ((o.passes || !o.pass_range.empty()) && !scene.photons)
+        throw UserError(std::string(o.passes ? "--passes" : "--pass-range") +
+                        ": the scene does not use photon mapping (add a [photons] table, or --photons N)");
+    if (o.passes) scene.photons->passes = *o.passes;
+    if (!o.pass_range.empty()) {
+        auto range = parse_range(o.pass_range);
+        if (!range) throw UserError("--pass-range " + o.pass_range + ": expected A-B or N (0-based pass numbers)");
+        if (range->first + range->second > scene.photons->passes)
+            throw UserError(fmt::format("--pass-range {}: the render has passes 0-{}", o.pass_range, scene.photons->passes - 1));
+        scene.photons->first_pass = range->first;
+        scene.photons->pass_count = range->second;
+    }
+    if (scene.photons) check_photon_lights(scene);  // --photons on a scene whose lights have no power
     if (static_cast<long long>(r.width) * r.height > limits::kMaxImagePixels)
         throw UserError(fmt::format("{}x{} exceeds the limit of {} pixels", r.width, r.height, limits::kMaxImagePixels));
     return scene;
+}
+
+ExrInfo image_info(const Scene& scene) {
+    ExrInfo info;
+    info.tone = scene.render.tone;
+    if (scene.photons) {
+        info.first_pass = scene.photons->first_pass;
+        info.passes = scene.photons->last_pass() - scene.photons->first_pass;
+        info.total_passes = scene.photons->passes;
+    }
+    return info;
 }
 
 std::string output_path(const RenderOptions& o) {

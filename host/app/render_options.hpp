@@ -16,6 +16,11 @@ struct RenderOptions {
     std::string scene;
     std::string output;
     std::optional<int> width, height, samples, max_depth;
+    std::optional<double> exposure;
+    std::string tone;
+    // Photon mapping: photons per pass (switches it on), passes, and a range of them (a farm's part).
+    std::optional<int> photons, passes;
+    std::string pass_range;
     std::string backend = "gpu";
     std::string device;
     std::string shader_dir;  // compile the tracer from these sources at run time (development)
@@ -26,6 +31,10 @@ void add_render_options(CLI::App& cmd, RenderOptions& o);
 
 // Loads the scene and applies the command line's overrides of its [render] table.
 Scene load_scene_with_overrides(const RenderOptions& o);
+
+// What an image file of this scene's render records: its tone mapping and which photon passes
+// its pixels average (a part of a farm render).
+ExrInfo image_info(const Scene& scene);
 
 // The output path: -o, or the scene's name with .png in the current directory.
 std::string output_path(const RenderOptions& o);

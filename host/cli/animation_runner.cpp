@@ -82,6 +82,8 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
                                     "(or --frames N for a single frame)",
                                     options.output, suggest_pattern(options.output, animation.frames)));
     }
+    if (image_format_of(pattern->path(0)) != ImageFormat::Png)
+        throw UserError(fmt::format("-o {}: animation frames are PNG images (a still may be .exr or .pfm)", pattern_text));
     if (!opts.video.empty()) {
         check_video_possible(opts.video);
         check_output_writable(opts.video);
@@ -156,7 +158,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
             } catch (const RenderCancelled&) {
                 stop(k, path);
             }
-            write_png(path, to_srgb8(image));
+            write_png(path, to_srgb8(image, frame.render.tone));
             written.push_back(k);
             times.push_back(seconds_since(frame_start));
             rays += image.total_rays();

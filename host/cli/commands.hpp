@@ -7,6 +7,7 @@ namespace lancer {
 Subcommand add_render_command(CLI::App& parent);
 Subcommand add_watch_command(CLI::App& parent);
 Subcommand add_diff_command(CLI::App& parent);
+Subcommand add_combine_command(CLI::App& parent);
 
 int list_devices();
 

@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
         lancer::add_render_command(app),
         lancer::add_watch_command(app),
         lancer::add_diff_command(app),
+        lancer::add_combine_command(app),
         lancer::add_view_command(app),
     };
     for (const auto& command : commands) command.app->set_version_flag("--version", app.version());

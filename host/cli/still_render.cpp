@@ -30,13 +30,17 @@ int render_still(const RenderOptions& options, const Scene& scene, const std::st
         throw Interrupted(interrupts.signal_number(), "'" + output + "' was not written");
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    write_png(output, to_srgb8(image));
+    const ExrInfo info = image_info(scene);
+    write_image(output, image, info);
 
     const RenderSettings& r = scene.render;
     double rays = image.total_rays();
-    progress.finish(fmt::format("{}: {}x{}, {} rays/pixel, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB",
-                                output, r.width, r.height, r.samples * r.samples, renderer->description(), seconds,
-                                rays / seconds / 1e6, rays / 1e6, peak_rss_mib()));
+    std::string per_pixel = fmt::format("{} rays/pixel", r.samples * r.samples);
+    if (scene.photons)
+        per_pixel = fmt::format("{} passes of {} photons and 1 camera ray/pixel", info.passes, scene.photons->count);
+    progress.finish(fmt::format("{}: {}x{}, {}, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB", output,
+                                r.width, r.height, per_pixel, renderer->description(), seconds, rays / seconds / 1e6,
+                                rays / 1e6, peak_rss_mib()));
     if (!options.quiet)
         for (const std::string& note : renderer->notes()) std::fprintf(stderr, "note: %s\n", note.c_str());
     renderer.reset();  // tear Vulkan down before counting validation messages

@@ -80,7 +80,7 @@ struct WatchCommand {
             auto start = Clock::now();
             try {
                 FloatImage image = renderer->render(*scene, [&](double) { return !watcher.signal_pending(); });
-                write_png(output, to_srgb8(image));
+                write_image(output, image, image_info(*scene));
                 ms = ms_since(start);
                 return true;
             } catch (const RenderCancelled&) {

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "cpu/lights.hpp"
+#include "cpu/photon_tracer.hpp"
 #include "cpu/tracer.hpp"
 #include "scene/camera.hpp"
 
@@ -28,6 +29,7 @@ std::string CpuRenderer::description() const {
 }
 
 FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
+    if (scene.photons) return render_photons(scene, progress);
     const RenderSettings& rs = scene.render;
     const cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
     const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
@@ -68,6 +70,49 @@ FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     worker();
     for (auto& t : pool) t.join();
     if (cancelled) throw RenderCancelled();
+    return image;
+}
+
+FloatImage CpuRenderer::render_photons(const Scene& scene, const ProgressFn& progress) {
+    check_photon_lights(scene);
+    const RenderSettings& rs = scene.render;
+    const PhotonSettings& ps = *scene.photons;
+    cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
+    const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
+    const int first = ps.first_pass, last = ps.last_pass();
+    const auto n = static_cast<std::uint32_t>(rs.samples);
+    std::vector<dvec3> sum(std::size_t(rs.width) * rs.height, dvec3(0.0));
+    FloatImage image(rs.width, rs.height);
+    for (int pass = first; pass < last; ++pass) {
+        cpu::PhotonPass shot = cpu::shoot_photons(tracer, pass, threads_);
+        const cpu::PhotonMaps maps(std::move(shot.caustic), std::move(shot.global),
+                                   photon_radius(ps.caustic_radius, ps.alpha, pass),
+                                   photon_radius(ps.global_radius, ps.alpha, pass));
+        tracer.use_photons(&maps);
+        std::atomic<int> next_row{0};
+        auto worker = [&] {
+            for (int y; (y = next_row.fetch_add(1)) < rs.height;) {
+                for (int x = 0; x < rs.width; ++x) {
+                    cpu::PassSample s = cpu::photon_pass_sample(x, y, n, static_cast<std::uint32_t>(pass));
+                    dvec3 dir = glm::normalize(camera_ray_direction(cam, x + s.dx, y + s.dy, rs.width, rs.height));
+                    double rays = 0.0;
+                    sum[std::size_t(y) * rs.width + x] += tracer.trace({cam.eye, dir}, s.seed, rays);
+                    image.at(x, y).a += float(rays);
+                }
+            }
+        };
+        std::vector<std::thread> pool;
+        for (unsigned t = 1; t < threads_; ++t) pool.emplace_back(worker);
+        worker();
+        for (auto& t : pool) t.join();
+        tracer.use_photons(nullptr);
+        if (progress && !progress(double(pass + 1 - first) / (last - first))) throw RenderCancelled();
+    }
+    for (int y = 0; y < rs.height; ++y)
+        for (int x = 0; x < rs.width; ++x) {
+            dvec3 c = sum[std::size_t(y) * rs.width + x] / double(last - first);
+            image.at(x, y) = glm::vec4(float(c.r), float(c.g), float(c.b), image.at(x, y).a);
+        }
     return image;
 }
 

@@ -16,6 +16,10 @@ public:
     std::size_t bvh_builds() const { return bvh_cache_.builds(); }  // trees built so far (for tests)
 
 private:
+    // Photon mapping: per pass, a photon map and one camera sample per pixel; the image is the
+    // mean of the passes (docs/scene-format.md, "Photon mapping").
+    FloatImage render_photons(const Scene& scene, const ProgressFn& progress);
+
     unsigned threads_;
     Acceleration acceleration_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree

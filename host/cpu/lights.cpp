@@ -5,9 +5,7 @@
 #include <glm/geometric.hpp>
 
 namespace lancer::cpu {
-namespace {
 
-// The top 24 bits of a hash as a number in [0, 1), exactly the float the shader computes.
 double unit_interval(std::uint32_t h) { return double(h >> 8) / 16777216.0; }
 
 // POV-Ray's spotlight: cos^tightness of the angle between the axis and the direction from the
@@ -24,8 +22,6 @@ double spot_factor(const Light& light, const dvec3& from_light) {
     return f * t * t * (3.0 - 2.0 * t);
 }
 
-}  // namespace
-
 std::uint32_t hash_u32(std::uint32_t v) {
     std::uint32_t state = v * 747796405u + 2891336453u;
     std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
@@ -34,6 +30,19 @@ std::uint32_t hash_u32(std::uint32_t v) {
 
 std::uint32_t camera_sample_seed(std::uint32_t x, std::uint32_t y, std::uint32_t k) {
     return hash_u32(hash_u32(hash_u32(x) ^ y) ^ k);
+}
+
+PassSample photon_pass_sample(std::uint32_t x, std::uint32_t y, std::uint32_t n, std::uint32_t pass) {
+    std::uint32_t j = pass % (n * n), round = pass / (n * n);
+    std::uint32_t seed = camera_sample_seed(x, y, j);
+    double xi = 0.5, eta = 0.5;
+    if (round > 0) {
+        seed = hash_u32(seed ^ hash_u32(round));
+        std::uint32_t g = hash_u32(seed);
+        xi = unit_interval(g);
+        eta = unit_interval(hash_u32(g));
+    }
+    return {(j % n + xi) / n, (j / n + eta) / n, seed};
 }
 
 int light_sample_count(const Light& light) { return light.type == LightType::Area ? light.samples * light.samples : 1; }
@@ -53,7 +62,7 @@ dvec3 light_sample_position(const Light& light, std::uint32_t index, int s, std:
 }
 
 dvec3 light_intensity(const Light& light, const dvec3& q, const dvec3& p, int count) {
-    dvec3 c = light.color / double(count);
+    dvec3 c = light.emitted() / double(count);
     if (light.type == LightType::Spot) c *= spot_factor(light, glm::normalize(p - q));
     if (light.falloff == Falloff::InverseSquare) {
         double d = glm::length(p - q);

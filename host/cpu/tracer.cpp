@@ -10,6 +10,7 @@
 #include "accel/shape_bounds.hpp"
 #include "cpu/appearance.hpp"
 #include "cpu/lights.hpp"
+#include "cpu/photon_map.hpp"
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
@@ -27,6 +28,8 @@ constexpr double kMinLight = 1.0 / 65536.0;
 // A shadow ray passes through at most this many transparent surfaces; more block the light.
 constexpr int kMaxShadowCrossings = 16;
 
+constexpr double kPi = 3.14159265358979323846;
+
 dvec3 mirror(const dvec3& d, const dvec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
 
 }  // namespace
@@ -42,7 +45,8 @@ dvec3 pigment_at(const Material& m, const dvec3& p) {
     return odd ? m.checker->color_b : m.checker->color_a;
 }
 
-Tracer::Tracer(const Scene& scene, Acceleration acceleration, BvhCache* cache) : scene_(scene) {
+Tracer::Tracer(const Scene& scene, Acceleration acceleration, BvhCache* cache)
+    : scene_(scene), terms_(microfacet_terms(scene)) {
     for (const Material& m : scene.materials) has_transparency_ |= m.transparent();
     std::vector<Aabb> boxes;
     for (const Object& object : scene.objects) {
@@ -198,13 +202,11 @@ dvec3 Tracer::shade_local(const Material& m, const dvec3& surface_pigment, const
             dvec3 unshadowed = scale * (diffuse + shine) * intensity;
             if (m.transparent() && std::max({unshadowed.r, unshadowed.g, unshadowed.b}) < kMinLight) continue;
             rays += 1.0;
-            if (has_transparency_) {
+            if (has_transparency_ && !photons_) {
                 intensity *= transmittance(p, origin, q, media);
                 if (intensity == dvec3(0.0)) continue;
-            } else {
-                dvec3 to_light = q - origin;
-                double dist = glm::length(to_light);
-                if (occluded({origin, to_light / dist}, 0.0, dist)) continue;
+            } else if (shadowed(origin, q)) {
+                continue;
             }
             color += diffuse * intensity;
             if (shine > 0.0) color += shine * intensity;
@@ -213,20 +215,105 @@ dvec3 Tracer::shade_local(const Material& m, const dvec3& surface_pigment, const
     return color;
 }
 
-namespace {
+bool Tracer::shadowed(const dvec3& origin, const dvec3& q) const {
+    dvec3 to_light = q - origin;
+    double dist = glm::length(to_light);
+    return occluded({origin, to_light / dist}, 0.0, dist);
+}
 
-// A ray of the tree waiting to be traced.
-struct Branch {
-    Ray ray;
-    dvec3 from;  // the surface point the ray leaves; its origin is just off it
-    dvec3 weight;
-    int depth;
-    Media media;
-};
+dvec3 Tracer::shade_microfacet(const Material& m, const MicrofacetTerms& terms, const dvec3& p, const dvec3& n,
+                               const dvec3& wo, double n1, double n2, const Media& media, std::uint32_t seed,
+                               const dvec3& scale, double& rays) const {
+    dvec3 color(0.0);
+    if (terms.alpha == 0.0) return color;  // a perfect mirror shows no point of light
+    dvec3 origin = p + ray_offset(p) * n;
+    for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
+        const Light& light = scene_.lights[i];
+        const int count = light_sample_count(light);
+        for (int s = 0; s < count; ++s) {
+            dvec3 q = light_sample_position(light, static_cast<std::uint32_t>(i), s, seed);
+            dvec3 l = glm::normalize(q - p);
+            double cos_l = glm::dot(n, l);
+            if (cos_l <= 0.0) continue;
+            // A light's colour is its irradiance at normal incidence over pi (scene-format.md):
+            // the radiance toward the viewer is f pi cos(theta_l) times it.
+            dvec3 value = kPi * cos_l * microfacet_brdf(m, terms, n, wo, l, n1, n2) * light_intensity(light, q, p, count);
+            if (std::max({value.r * scale.r, value.g * scale.g, value.b * scale.b}) < kMinLight) continue;
+            rays += 1.0;
+            if (has_transparency_ && !photons_) {
+                value *= transmittance(p, origin, q, media);
+            } else if (shadowed(origin, q)) {
+                continue;
+            }
+            color += value;
+        }
+    }
+    return color;
+}
+
+namespace {
 
 double max_of(const dvec3& v) { return std::max({v.r, v.g, v.b}); }
 
 }  // namespace
+
+dvec3 Tracer::phong_hit(const Material& m, const Hit& hit, const dvec3& p, const dvec3& n, const Branch& b,
+                        const Media& beyond, bool sheet, std::uint32_t seed_d, Branch& reflected, Branch& refracted,
+                        double& rays) const {
+    const bool clear = m.transparent();
+    Appearance look = appearance_at(m, hit, p, n);
+    dvec3 scale = b.weight * (1.0 - m.reflection);
+    dvec3 color = scale * shade_local(m, look.pigment, p, n, look.normal, b.ray.dir, b.media, seed_d, scale, rays);
+    if (photons_ && m.diffuse > 0.0) {
+        // Caustics and indirect light: the diffuse BRDF k_d C' / pi times the photons' irradiance.
+        dvec3 irradiance = photons_->irradiance(p, n);
+        color += scale * (m.diffuse / kPi) * look.pigment * (1.0 - m.transmission) * irradiance;
+    }
+    // A bump tilts the mirror direction; refraction follows the geometric surface.
+    reflected = {{p + ray_offset(p) * n, bounce_direction(b.ray.dir, look.normal, n)}, p, b.weight * m.reflection,
+                 b.depth + 1, b.media};
+    refracted = {{p, b.ray.dir}, p, dvec3(0.0), b.depth + 1, beyond};
+    if (clear) {
+        // Fresnel splits what the surface transmits between the mirror and the refracted ray.
+        double n1 = ior_of(b.media);
+        double n2 = sheet ? m.ior : ior_of(beyond);
+        double cos_i = -glm::dot(b.ray.dir, n);
+        Fresnel f = fresnel(cos_i, n1, n2);
+        dvec3 passing = b.weight * (1.0 - m.reflection) * m.transmission;
+        reflected.weight += passing * f.reflectance;
+        refracted.weight = passing * (1.0 - f.reflectance);
+        if (!sheet) refracted.ray.dir = refract(b.ray.dir, n, n1 / n2, cos_i, f.cos_t);
+        refracted.ray.origin = past_surface(p, n, refracted.ray.dir);
+    }
+    return color;
+}
+
+dvec3 Tracer::microfacet_hit(const Material& m, const Hit& hit, const dvec3& p, const dvec3& n, const Branch& b,
+                             const Media& beyond, bool sheet, std::uint32_t seed_d, Branch& reflected,
+                             Branch& refracted, double& rays) const {
+    const MicrofacetTerms& terms = terms_[hit.object->material];
+    const dvec3 wo = -b.ray.dir;
+    const double n1 = ior_of(b.media);
+    const double n2 = sheet ? m.ior : ior_of(beyond);
+    dvec3 color = b.weight * shade_microfacet(m, terms, p, n, wo, n1, n2, b.media, seed_d, b.weight, rays);
+    const std::array<double, 3> u = surface_sample_numbers(seed_d);
+    reflected = {{p + ray_offset(p) * n, dvec3(0.0)}, p, dvec3(0.0), b.depth + 1, b.media};
+    refracted = {{p, b.ray.dir}, p, dvec3(0.0), b.depth + 1, beyond};
+    if (m.conductor) {
+        Scattered s = sample_metal(m, terms, n, wo, u);
+        reflected.ray.dir = s.dir;
+        reflected.weight = b.weight * s.weight;
+        return color;
+    }
+    // A thin sheet has no inside to bend into: it reflects and transmits as a smooth one.
+    GlassSplit split = sample_glass(m, sheet ? 0.0 : terms.alpha, n, wo, n1, n2, u);
+    reflected.ray.dir = split.reflected.dir;
+    reflected.weight = b.weight * split.reflected.weight;
+    refracted.weight = b.weight * split.refracted.weight;
+    if (!sheet) refracted.ray.dir = split.refracted.dir;
+    refracted.ray.origin = past_surface(p, n, refracted.ray.dir);
+    return color;
+}
 
 dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
     const double inf = std::numeric_limits<double>::infinity();
@@ -258,26 +345,10 @@ dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
                 b.from = p;
                 goes_on = ++passes <= kMaxPassThrough;
             } else {
-                Appearance look = appearance_at(m, hit, p, n);
-                dvec3 scale = b.weight * (1.0 - m.reflection);
-                color += scale * shade_local(m, look.pigment, p, n, look.normal, b.ray.dir, b.media,
-                                             hash_u32(seed + std::uint32_t(b.depth)), scale, rays);
-                // A bump tilts the mirror direction; refraction follows the geometric surface.
-                Branch reflected{{p + ray_offset(p) * n, bounce_direction(b.ray.dir, look.normal, n)}, p,
-                                 b.weight * m.reflection, b.depth + 1, b.media};
-                Branch refracted{{p, b.ray.dir}, p, dvec3(0.0), b.depth + 1, beyond};
-                if (clear) {
-                    // Fresnel splits what the surface transmits between the mirror and the refracted ray.
-                    double n1 = ior_of(b.media);
-                    double n2 = sheet ? m.ior : ior_of(beyond);
-                    double cos_i = -glm::dot(b.ray.dir, n);
-                    Fresnel f = fresnel(cos_i, n1, n2);
-                    dvec3 passing = b.weight * (1.0 - m.reflection) * m.transmission;
-                    reflected.weight += passing * f.reflectance;
-                    refracted.weight = passing * (1.0 - f.reflectance);
-                    if (!sheet) refracted.ray.dir = refract(b.ray.dir, n, n1 / n2, cos_i, f.cos_t);
-                    refracted.ray.origin = past_surface(p, n, refracted.ray.dir);
-                }
+                Branch reflected, refracted;
+                std::uint32_t seed_d = hash_u32(seed + std::uint32_t(b.depth));
+                color += m.microfacet() ? microfacet_hit(m, hit, p, n, b, beyond, sheet, seed_d, reflected, refracted, rays)
+                                        : phong_hit(m, hit, p, n, b, beyond, sheet, seed_d, reflected, refracted, rays);
                 // Past max_depth the children contribute black (POV-Ray's max_trace_level rule).
                 bool reflects = b.depth < scene_.render.max_depth && max_of(reflected.weight) >= kMinWeight;
                 bool refracts = b.depth < scene_.render.max_depth && max_of(refracted.weight) >= kMinWeight;

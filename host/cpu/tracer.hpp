@@ -8,10 +8,13 @@
 
 #include "accel/bvh.hpp"
 #include "cpu/dielectric.hpp"
+#include "cpu/microfacet.hpp"
 #include "cpu/ray.hpp"
 #include "render/renderer.hpp"
 
 namespace lancer::cpu {
+
+class PhotonMaps;  // cpu/photon_map.hpp
 
 struct Hit {
     double t;
@@ -31,6 +34,11 @@ public:
     // cpu/lights.hpp), for the places of area light samples.
     dvec3 trace(Ray ray, std::uint32_t seed, double& rays) const;
 
+    // Photon mapping: diffuse hits add the irradiance these maps estimate (caustics and indirect
+    // light), and shadow rays stop at transparent surfaces, since the light through them arrives
+    // as photons. nullptr: the plain ray tracer.
+    void use_photons(const PhotonMaps* photons) { photons_ = photons; }
+
     bool closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) const;
     bool occluded(const Ray& ray, double t_min, double t_max) const;
 
@@ -48,17 +56,47 @@ public:
     // 0 behind an opaque surface; tinted by transparent ones and absorbed by media on the way.
     dvec3 transmittance(dvec3 from, dvec3 origin, const dvec3& q, Media media) const;
 
+    // A microfacet material's direct light: per light sample the BRDF toward the viewer (wo) times
+    // the light's irradiance, for an interface from index n1 to n2 (glass).
+    dvec3 shade_microfacet(const Material& m, const MicrofacetTerms& terms, const dvec3& p, const dvec3& n,
+                           const dvec3& wo, double n1, double n2, const Media& media, std::uint32_t seed,
+                           const dvec3& scale, double& rays) const;
+
+    const std::vector<MicrofacetTerms>& terms() const { return terms_; }
+    const Scene& scene() const { return scene_; }
+
+    dvec3 absorption_along(const Media& media, double distance) const;  // by the innermost medium
+    double ior_of(const Media& media) const;                             // of the innermost medium, 1 for air
+
 private:
+    // A ray of the tree waiting to be traced.
+    struct Branch {
+        Ray ray;
+        dvec3 from;  // the surface point the ray leaves; its origin is just off it
+        dvec3 weight;
+        int depth;
+        Media media;
+    };
+    // What a visible hit adds to the pixel, and the children it spawns (with their weights) for
+    // each model: `beyond` is the media past the surface, `seed_d` the seed of this depth.
+    dvec3 phong_hit(const Material& m, const Hit& hit, const dvec3& p, const dvec3& n, const Branch& b,
+                    const Media& beyond, bool sheet, std::uint32_t seed_d, Branch& reflected, Branch& refracted,
+                    double& rays) const;
+    dvec3 microfacet_hit(const Material& m, const Hit& hit, const dvec3& p, const dvec3& n, const Branch& b,
+                         const Media& beyond, bool sheet, std::uint32_t seed_d, Branch& reflected, Branch& refracted,
+                         double& rays) const;
+    // Whether a shadow ray from `origin` to q is blocked (any surface, transparent or not).
+    bool shadowed(const dvec3& origin, const dvec3& q) const;
+
     // Calls visit(object) for every object whose box the ray enters within [0, t_max()], nearest
     // boxes first; visit returns false to stop. t_max is re-read as hits shrink the interval.
     template <typename Visit, typename TMax>
     void for_each_candidate(const Ray& ray, TMax t_max, Visit visit) const;
 
-    dvec3 absorption_along(const Media& media, double distance) const;  // by the innermost medium
-    double ior_of(const Media& media) const;                             // of the innermost medium, 1 for air
-
     const Scene& scene_;
     bool has_transparency_ = false;  // without, shadow rays only ask whether anything is in the way
+    std::vector<MicrofacetTerms> terms_;  // per material
+    const PhotonMaps* photons_ = nullptr;
     std::vector<const Object*> unbounded_;  // tested by every ray (planes; everything without a BVH)
     std::vector<const Object*> bounded_;    // in BVH leaf order
     std::vector<BvhNode> nodes_;

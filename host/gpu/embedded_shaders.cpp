@@ -1,13 +1,22 @@
 #include "gpu/embedded_shaders.hpp"
 
 #include <iterator>
+#include <stdexcept>
 
-#include "trace.spv.h"  // generated: const uint32_t lancer_trace_spv[] (see host/CMakeLists.txt)
+// generated: const uint32_t lancer_ENTRY_spv[] (see host/CMakeLists.txt)
+#include "photon_grid.spv.h"
+#include "photons.spv.h"
+#include "trace.spv.h"
 
 namespace lancer::gpu {
 
-std::vector<std::uint32_t> embedded_trace_spirv() {
-    return {std::begin(lancer_trace_spv), std::end(lancer_trace_spv)};
+std::vector<std::uint32_t> embedded_trace_spirv() { return embedded_spirv(kTraceShader); }
+
+std::vector<std::uint32_t> embedded_spirv(const std::string& entry) {
+    if (entry == kTraceShader) return {std::begin(lancer_trace_spv), std::end(lancer_trace_spv)};
+    if (entry == kPhotonShader) return {std::begin(lancer_photons_spv), std::end(lancer_photons_spv)};
+    if (entry == kGridShader) return {std::begin(lancer_photon_grid_spv), std::end(lancer_photon_grid_spv)};
+    throw std::logic_error("embedded_spirv: no shader " + entry);
 }
 
 ShaderTree embedded_tree() {

@@ -11,10 +11,15 @@
 
 namespace lancer::gpu {
 
-// The entry point compiled at build time.
+// The entry points compiled at build time: the tracer, and photon mapping's photon pass and
+// grid build.
 inline constexpr const char* kTraceShader = "trace.comp";
+inline constexpr const char* kPhotonShader = "photons.comp";
+inline constexpr const char* kGridShader = "photon_grid.comp";
 
 std::vector<std::uint32_t> embedded_trace_spirv();
+// The SPIR-V of one of the entry points above.
+std::vector<std::uint32_t> embedded_spirv(const std::string& entry);
 
 // Every file of shaders/ by its name relative to that directory.
 const std::map<std::string, std::string>& embedded_shader_files();

@@ -40,6 +40,7 @@ GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration accele
       base_tree_(gpu::embedded_tree()),
       spirv_(gpu::embedded_trace_spirv()),
       resources_(*context_, layout_->set_layout()),
+      photons_(std::make_unique<gpu::PhotonPass>(*context_, *layout_)),
       acceleration_(acceleration) {
     VkDevice device = context_->device();
     VkCommandBufferAllocateInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
@@ -58,6 +59,7 @@ GpuRenderer::~GpuRenderer() {
     vkDeviceWaitIdle(device);
     if (fence_) vkDestroyFence(device, fence_, nullptr);
     if (command_buffer_) vkFreeCommandBuffers(device, context_->command_pool(), 1, &command_buffer_);
+    photons_.reset();
     pipelines_.clear();
 }
 
@@ -71,6 +73,7 @@ void GpuRenderer::use_shaders(const gpu::ShaderTree& tree, const std::string& di
     pipelines_.clear();
     pipelines_[gpu::ShaderFeatures{}] = std::move(probe);
     spirv_ = std::move(spirv);
+    photon_spirv_.clear();  // built again from the new sources when a scene needs it
     base_tree_ = tree;
     base_is_embedded_ = false;
     display_root_ = display_root;
@@ -87,16 +90,22 @@ std::vector<std::string> GpuRenderer::notes() const {
                         bands_rerendered_)};
 }
 
-void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated) {
-    if (generated == generated_) return;
-    std::vector<std::uint32_t> spirv =
-        generated.empty() && base_is_embedded_
-            ? gpu::embedded_trace_spirv()
-            : gpu::compile_compute(gpu::with_files(base_tree_, generated), gpu::kTraceShader, {}, display_root_);
-    VK_CHECK(vkDeviceWaitIdle(context_->device()));
-    pipelines_.clear();
-    spirv_ = std::move(spirv);
-    generated_ = generated;
+void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated, bool photons) {
+    auto build = [&](const char* entry) {
+        return generated.empty() && base_is_embedded_
+                   ? gpu::embedded_spirv(entry)
+                   : gpu::compile_compute(gpu::with_files(base_tree_, generated), entry, {}, display_root_);
+    };
+    if (generated != generated_) {
+        std::vector<std::uint32_t> spirv = build(gpu::kTraceShader);
+        VK_CHECK(vkDeviceWaitIdle(context_->device()));
+        pipelines_.clear();
+        spirv_ = std::move(spirv);
+        photon_spirv_.clear();
+        generated_ = generated;
+    }
+    // The photon pass traces the same surfaces, with the same generated code.
+    if (photons && photon_spirv_.empty()) photon_spirv_ = build(gpu::kPhotonShader);
 }
 
 void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress) {
@@ -119,6 +128,7 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
     std::uint64_t buffer_bytes = 0;
     for (const gpu::BufferNeed& need : needs) buffer_bytes += need.bytes;
     gpu::check_render_memory(scene, buffer_bytes);
+    emitters_ = packed.emitters;
     resources_.upload(packed, gpu::pack_frame(scene, packed));
     if (std::string code = gpu::surface_functions_glsl(scene); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;
@@ -179,9 +189,22 @@ void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_p
 
 FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     FloatImage image;
+    if (scene.photons) {
+        render_passes(scene, scene.photons->first_pass, scene.photons->last_pass(), image, progress);
+        return image;
+    }
     auto all = static_cast<std::uint32_t>(scene.render.samples * scene.render.samples);
     render_with(scene, false, {0, all}, image, progress);
     return image;
+}
+
+void GpuRenderer::render_passes(const Scene& scene, int first, int last, FloatImage& sums, const ProgressFn& progress) {
+    check_photon_lights(scene);
+    const PhotonSettings& ps = *scene.photons;
+    for (int pass = first; pass < last; ++pass) {
+        auto in_pass = [&](double f) { return !progress || progress((pass - ps.first_pass + f) / (ps.last_pass() - ps.first_pass)); };
+        render_with(scene, false, {static_cast<std::uint32_t>(pass - ps.first_pass), 1}, sums, in_pass, pass);
+    }
 }
 
 void GpuRenderer::prepare(const Scene& scene, const ProgressFn& progress) {
@@ -189,6 +212,11 @@ void GpuRenderer::prepare(const Scene& scene, const ProgressFn& progress) {
     // not its size), compiled by the driver at this first dispatch, and the scene's buffers.
     Scene tiny = scene;
     tiny.render.width = tiny.render.height = tiny.render.samples = 1;
+    if (tiny.photons) {  // one pass of a few photons compiles the photon pipelines too
+        tiny.photons->count = std::min(tiny.photons->count, 64);
+        tiny.photons->first_pass = 0;
+        tiny.photons->pass_count = 1;
+    }
     render(tiny, progress ? [&](double) { return progress(0.0); } : ProgressFn{});
 }
 
@@ -200,11 +228,16 @@ FloatImage GpuRenderer::render_hits(const Scene& scene) {
 
 void GpuRenderer::render_samples(const Scene& scene, std::uint32_t first, std::uint32_t count, FloatImage& sums,
                                  const ProgressFn& progress) {
+    if (scene.photons) {  // the passes of photon mapping play the part of the samples
+        const int base = scene.photons->first_pass;
+        render_passes(scene, base + int(first), base + int(first + count), sums, progress);
+        return;
+    }
     render_with(scene, false, {first, count}, sums, progress);
 }
 
 void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange samples, FloatImage& image,
-                              const ProgressFn& progress) {
+                              const ProgressFn& progress, int photon_pass) {
     const RenderSettings& rs = scene.render;
     const auto width = static_cast<std::uint32_t>(rs.width);
     const auto height = static_cast<std::uint32_t>(rs.height);
@@ -223,8 +256,13 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
     gpu::ShaderFiles generated;
     gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, generated);
     features.output_hits = output_hits;
-    ensure_program(generated);
+    ensure_program(generated, photon_pass >= 0);
     select_pipeline(features, progress);
+    if (photon_pass >= 0) {
+        // The pass's photons and their grid first; the tracer gathers from them.
+        photons_->use_programs(photon_spirv_, gpu::embedded_spirv(gpu::kGridShader));
+        photons_->run(scene, photon_pass, features, emitters_, resources_, progress, 0.0);
+    }
     const gpu::Buffer& output = resources_.output(rows * row_bytes);
 
     if (!continues) image = FloatImage(rs.width, rs.height);

@@ -9,6 +9,7 @@
 #include "accel/bvh.hpp"
 #include "gpu/context.hpp"
 #include "gpu/layout.hpp"
+#include "gpu/photon_pass.hpp"
 #include "gpu/pipeline.hpp"
 #include "gpu/shader_compiler.hpp"
 #include "gpu/trace_resources.hpp"
@@ -33,7 +34,8 @@ public:
     // N x N grid, continuing `sums`, which holds what the passes before left (ignored, and
     // resized, when first == 0). Between passes its pixels are unnormalised sums (rgb) and ray
     // counts (a); the pass that reaches sample N * N leaves exactly the image render() returns.
-    // A cancelled pass (RenderCancelled) leaves `sums` half advanced: start again from 0.
+    // A cancelled pass (RenderCancelled) leaves `sums` half advanced: start again from 0. With
+    // photon mapping, `first` and `count` count passes instead ([photons] passes in all).
     void render_samples(const Scene& scene, std::uint32_t first, std::uint32_t count, FloatImage& sums,
                         const ProgressFn& progress);
     // Caps the camera samples of one dispatch (0: no cap, bands of about 128 K pixels). A cancel
@@ -60,8 +62,9 @@ private:
     // it needs, and adds the generated shader files it needs to `generated`.
     gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated);
     // Makes spirv_ the tracer built from base_tree_ with `generated` in place of the files of
-    // the same names, compiling only when that changed.
-    void ensure_program(const gpu::ShaderFiles& generated);
+    // the same names, compiling only when that changed; with `photons`, photon_spirv_ the
+    // photon pass built the same way.
+    void ensure_program(const gpu::ShaderFiles& generated, bool photons = false);
     // Makes pipeline_ the one for `features`, building it first if needed (on a thread of its
     // own: `progress` can cancel the wait, RenderCancelled, and the build goes on for later).
     void select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress);
@@ -69,8 +72,14 @@ private:
         std::uint32_t first, count;
     };
     // Renders `samples` of every pixel into `image`, which holds the sums so far when first > 0.
+    // With photon mapping, `photon_pass` is the pass: its photons are shot and sorted first,
+    // and the tracer takes that pass's one camera sample per pixel (samples.first is the pass's
+    // place in the render, for continuing the sums).
     void render_with(const Scene& scene, bool output_hits, SampleRange samples, FloatImage& image,
-                     const ProgressFn& progress);
+                     const ProgressFn& progress, int photon_pass = -1);
+    // Photon mapping: passes [first, last) of the scene's render into `sums` (which holds the
+    // passes before `first`); the render's last pass leaves the mean of all of them.
+    void render_passes(const Scene& scene, int first, int last, FloatImage& sums, const ProgressFn& progress);
     // Renders band.sample_count samples from band.sample_first into output_, `per_pass` of them
     // per invocation (one dispatch per pass).
     void dispatch_band(const gpu::BandParams& band, std::uint32_t per_pass, std::uint32_t width, double done,
@@ -86,9 +95,12 @@ private:
     std::string display_root_;
     gpu::ShaderFiles generated_;  // code generated for the current scene, by file name
     std::vector<std::uint32_t> spirv_;
+    std::vector<std::uint32_t> photon_spirv_;  // the photon pass, when a scene has needed it
     std::map<gpu::ShaderFeatures, std::unique_ptr<gpu::PipelineBuild>> pipelines_;
     gpu::ComputePipeline* pipeline_ = nullptr;  // the one for the current render
     gpu::TraceResources resources_;
+    std::unique_ptr<gpu::PhotonPass> photons_;
+    std::vector<gpu::Emitter> emitters_;  // the last uploaded scene's, for the photon pass
     VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
     Acceleration acceleration_;

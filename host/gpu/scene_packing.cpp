@@ -1,6 +1,7 @@
 #include "gpu/scene_packing.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -11,6 +12,8 @@
 #include "accel/shape_bounds.hpp"
 #include "core/finite.hpp"
 #include "core/perlin_permutation.hpp"
+#include "optics/energy.hpp"
+#include "optics/ggx.hpp"
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
 
@@ -147,6 +150,7 @@ static_assert(PATTERN_MAX_COLORS == limits::kMaxPatternColors);
 struct MapPacker {
     PackedScene& out;
     std::map<const TextureImage*, uint> image_offsets;
+    std::map<double, std::pair<uint, double>> tables;  // alpha -> (energy table, E_avg)
 
     uint texture(const ImageTexture& t) {
         auto [at, added] = image_offsets.emplace(t.image.get(), static_cast<uint>(out.texels.size()));
@@ -204,19 +208,77 @@ struct MapPacker {
         g.texture_map = m.texture ? texture(*m.texture) : NO_MAP;
         g.color_pattern = m.pattern ? pattern(*m.pattern, 0.0) : NO_MAP;
         g.bump_pattern = m.bump ? pattern(m.bump->pattern, m.bump->amount) : NO_MAP;
-        g.maps_reserved = 0;
+        g.model = MODEL_PHONG;
+        g.energy_table = 0;
         g.transmission = v4(m.transmission, m.ior);
         g.absorption = v4(m.absorption);
         g.highlight = m.highlight == Highlight::Blinn ? HIGHLIGHT_BLINN : HIGHLIGHT_PHONG;
+        if (m.microfacet()) microfacet(m, g);
         return g;
     }
+
+    // A microfacet material's constants in the rows Phong's would use (layout.h, Material).
+    void microfacet(const lancer::Material& m, Material& g) {
+        const double alpha = m.alpha();
+        g.model = m.conductor ? MODEL_MICROFACET_METAL : MODEL_MICROFACET_GLASS;
+        g.color = v4(m.color);
+        g.color2 = v4(m.conductor ? m.conductor->eta : dvec3(0.0), alpha);
+        g.phong = v4(m.conductor ? m.conductor->k : dvec3(0.0), 1.0);
+        g.reflection = 0.0f;
+        g.pattern = PATTERN_SOLID;
+        g.texture_map = g.color_pattern = g.bump_pattern = NO_MAP;
+        if (!m.conductor || alpha == 0.0) return;
+        // Rough metals: their table of E(mu) (one per roughness), E_avg and the multiple-
+        // scattering colour, all from host/optics (the CPU reference reads the same table).
+        auto found = tables.find(alpha);
+        if (found == tables.end()) {
+            optics::EnergyTable t = optics::ggx_energy(alpha);
+            for (double e : t.e) out.energy_tables.push_back(std::bit_cast<uint>(float(e)));
+            found = tables.emplace(alpha, std::pair{uint(tables.size()), t.e_avg}).first;
+        }
+        g.energy_table = found->second.first;
+        const double e_avg = found->second.second;
+        g.phong.w = float(e_avg);
+        dvec3 tint = optics::multiple_scattering_tint(
+            optics::conductor_fresnel_average(m.conductor->eta, m.conductor->k) * m.color, e_avg);
+        g.ms_tint_r = float(tint.r);
+        g.ms_tint_g = float(tint.g);
+        g.ms_tint_b = float(tint.b);
+    }
 };
+
+// Photon mapping's view of the lights (layout.h, Emitter): each photon's power and the
+// cumulative probabilities by which photons choose a light (proportional to its power), as the
+// CPU reference's photon tracer (host/cpu/photon_tracer.cpp).
+void pack_emitters(const Scene& scene, PackedScene& out) {
+    double total = 0.0;
+    std::vector<dvec3> flux;
+    for (const lancer::Light& l : scene.lights) {
+        flux.push_back(radiant_flux(l).value_or(dvec3(0.0)));
+        total += flux.back().r + flux.back().g + flux.back().b;
+    }
+    double cumulative = 0.0;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const lancer::Light& l = scene.lights[i];
+        const double share = flux[i].r + flux[i].g + flux[i].b;
+        cumulative += share;
+        Emitter e{};
+        // flux / (N P(light)), P(light) = share / total
+        dvec3 power = share > 0.0 ? flux[i] * (total / share) / double(scene.photons->count) : dvec3(0.0);
+        e.power = v4(power, total > 0.0 ? cumulative / total : 1.0);
+        double cone = 1.0;
+        if (l.type == LightType::Spot)
+            cone = 2.0 * M_PI * (1.0 - std::cos(l.outer_angle_deg * M_PI / 180.0)) / spot_solid_angle(l);
+        e.cone = vec4(float(cone), 0.0f, 0.0f, 0.0f);
+        out.emitters.push_back(e);
+    }
+}
 
 Light pack_light(const lancer::Light& l) {
     constexpr double kDegree = M_PI / 180.0;
     Light g{};
     g.position = v4(l.position, l.falloff == Falloff::InverseSquare ? l.falloff_distance : 0.0);
-    g.color = v4(l.color);
+    g.color = v4(l.emitted());
     switch (l.type) {
         case LightType::Point: g.type = LIGHT_POINT; break;
         case LightType::Spot:
@@ -237,6 +299,14 @@ Light pack_light(const lancer::Light& l) {
 }
 
 }  // namespace
+
+std::uint32_t photon_capacity(std::uint32_t count) {
+    return static_cast<std::uint32_t>(std::min<std::uint64_t>(2ull * count + 1024, 1u << 26));
+}
+
+std::uint32_t photon_buckets(std::uint32_t capacity) {
+    return std::clamp(std::bit_ceil(capacity / 8), 1024u, 1u << 20);
+}
 
 float round_down(double x) {
     float f = static_cast<float>(x);
@@ -282,11 +352,16 @@ PackedScene pack_scene(const Scene& scene, const PackOptions& options) {
         g.count = n.count;
         packed.nodes.push_back(g);
     }
-    MapPacker maps{packed, {}};
+    MapPacker maps{packed, {}, {}};
     for (const lancer::Material& m : scene.materials) packed.materials.push_back(maps.material(m));
     if (!packed.patterns.empty()) packed.permutation.assign(kPerlinPermutation.begin(), kPerlinPermutation.end());
     for (const lancer::Light& l : scene.lights) packed.lights.push_back(pack_light(l));
+    if (scene.photons) {
+        pack_emitters(scene, packed);
+        packed.photon_count = static_cast<uint>(scene.photons->count);
+    }
     ShaderFeatures& f = packed.features;
+    f.has_photons = scene.photons.has_value();
     for (const Primitive& p : packed.primitives) {
         f.has_sphere |= p.type == SHAPE_SPHERE;
         f.has_plane |= p.type == SHAPE_PLANE;
@@ -300,6 +375,7 @@ PackedScene pack_scene(const Scene& scene, const PackOptions& options) {
     for (const lancer::Material& m : scene.materials) {
         f.has_transparency |= m.transparent();
         f.has_blinn |= m.highlight == Highlight::Blinn;
+        f.has_microfacet |= m.microfacet();
     }
     for (const lancer::Light& l : scene.lights) {
         f.has_area_lights |= l.type == LightType::Area;
@@ -334,6 +410,15 @@ std::vector<BufferNeed> buffer_needs(const PackedScene& packed, std::uint64_t ou
     for (std::size_t a = 0; a < kSceneArrayCount; ++a)
         needs.push_back(array_need(SceneArray(a), packed.count(SceneArray(a))));
     needs.push_back({"output rows", RESOURCE_OUTPUT, output_bytes / sizeof(vec4), output_bytes});
+    if (packed.features.has_photons) {
+        // Photon mapping's buffers at the size a pass starts with (gpu/photon_pass.cpp); a pass
+        // that stores more grows them and is checked again there.
+        const std::uint64_t photons = photon_capacity(packed.photon_count);
+        needs.push_back({"photons", RESOURCE_OUTPUT, photons, photons * sizeof(Photon)});
+        needs.push_back({"photons by grid bucket", RESOURCE_OUTPUT, photons, photons * sizeof(Photon)});
+        const std::uint64_t buckets = 2ull * photon_buckets(photons);
+        needs.push_back({"grid buckets", RESOURCE_OUTPUT, 2 * buckets + 1, (2 * buckets + 1) * sizeof(uint)});
+    }
     return needs;
 }
 

@@ -72,6 +72,11 @@ void TraceResources::upload(const PackedScene& packed, const FrameParams& frame)
     last_upload_.bytes_written += sizeof(frame);
 }
 
+const Buffer& TraceResources::working(uint binding, std::size_t bytes) {
+    reserve(binding, bytes);
+    return buffers_[binding];
+}
+
 const Buffer& TraceResources::output(std::size_t bytes) {
     reserve(BINDING_OUTPUT, bytes);
     return buffers_[BINDING_OUTPUT];

@@ -36,6 +36,10 @@ public:
     // The output band: at least `bytes`, mapped for reading back.
     const Buffer& output(std::size_t bytes);
 
+    // A buffer the passes themselves fill (photon mapping's, LANCER_PHOTON_BUFFERS): at least
+    // `bytes`, mapped. Growing it keeps nothing of what it held.
+    const Buffer& working(uint binding, std::size_t bytes);
+
     // The descriptor set, its writes brought up to date with the buffers.
     VkDescriptorSet descriptor_set();
 

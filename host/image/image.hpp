@@ -1,11 +1,15 @@
 #pragma once
 // Images as the renderers produce them (linear float RGB plus a per-pixel ray count) and as
 // they are written (8-bit sRGB).
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec4.hpp>
+
+#include "image/tone.hpp"
 
 namespace lancer {
 
@@ -33,7 +37,8 @@ struct Rgb8Image {
 std::uint8_t encode_srgb8(float linear);
 float decode_srgb8(std::uint8_t encoded);
 
-Rgb8Image to_srgb8(const FloatImage& image);
+// Each channel tone-mapped (image/tone.hpp), clamped to [0, 1] and sRGB-encoded.
+Rgb8Image to_srgb8(const FloatImage& image, const ToneMapping& mapping = {});
 
 // Writes a PNG atomically: to a temporary file in the same directory, then rename(), so the
 // destination is either the old file or the complete new one. Throws UserError on I/O failure.
@@ -47,5 +52,35 @@ constexpr long long kMaxReadPixels = 64LL * 1024 * 1024;
 
 // A PNG (or JPEG, BMP) as 8-bit RGB. Throws UserError "cannot read PNG 'path': why".
 Rgb8Image read_png(const std::string& path);
+
+// What an OpenEXR file of lancer's says besides its pixels (as attributes): which photon passes
+// its pixels average ("lancerFirstPass", "lancerPasses" of "lancerTotalPasses"; absent without
+// photon mapping), for combining the parts of a farm render, and the scene's tone mapping
+// ("lancerExposure", "lancerTone"), for the PNG made of them.
+struct ExrInfo {
+    int first_pass = 0;
+    int passes = 0;  // 0: not a photon render
+    int total_passes = 0;
+    ToneMapping tone;
+};
+
+// HDR output: the linear colours as they are (no exposure, no tone curve), 32-bit float:
+// OpenEXR (RGB, ZIP-compressed) and the Portable Float Map (little-endian, rows bottom to top).
+// Both atomic, as write_png.
+void write_exr(const std::string& path, const FloatImage& image, const ExrInfo& info = {});
+void write_pfm(const std::string& path, const FloatImage& image);
+// Reads them back (rgb; a = 0).
+FloatImage read_exr(const std::string& path, ExrInfo* info = nullptr);
+FloatImage read_pfm(const std::string& path);
+
+enum class ImageFormat { Png, Exr, Pfm };
+// By the file name's extension (case-insensitive); nullopt for any other.
+std::optional<ImageFormat> image_format_of(const std::string& path);
+// Writes `image` in the format its name says: PNG through info's tone mapping, EXR (with info)
+// and PFM linear.
+void write_image(const std::string& path, const FloatImage& image, const ExrInfo& info);
+
+// Writes `size` bytes atomically to `path` (a temporary file beside it, fsync, rename).
+void write_file_atomically(const std::string& path, const void* data, std::size_t size);
 
 }  // namespace lancer

@@ -40,19 +40,21 @@ bool write_all(int fd, const unsigned char* data, std::size_t size) {
 }  // namespace
 
 void write_png(const std::string& path, const Rgb8Image& image) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) throw UserError("cannot write '" + path + "': it is a directory");
-
     int length = 0;
     std::unique_ptr<unsigned char, decltype(&free)> png(
         stbi_write_png_to_mem(image.bytes.data(), image.width * 3, image.width, image.height, 3, &length), &free);
     if (!png) throw UserError("cannot encode PNG for '" + path + "'");
+    write_file_atomically(path, png.get(), static_cast<std::size_t>(length));
+}
 
+void write_file_atomically(const std::string& path, const void* data, std::size_t size) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw UserError("cannot write '" + path + "': it is a directory");
     std::string temp = temporary_template(path);
     int fd = ::mkstemp(temp.data());
     if (fd < 0) throw UserError(os_error("cannot write", path));
-    bool ok = write_all(fd, png.get(), static_cast<std::size_t>(length)) && ::fsync(fd) == 0;
+    bool ok = write_all(fd, static_cast<const unsigned char*>(data), size) && ::fsync(fd) == 0;
     int saved_errno = errno;
     ok = (::close(fd) == 0) && ok;
     if (!ok || ::chmod(temp.c_str(), 0644) != 0 || ::rename(temp.c_str(), path.c_str()) != 0) {

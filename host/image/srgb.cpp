@@ -18,11 +18,15 @@ float decode_srgb8(std::uint8_t encoded) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-Rgb8Image to_srgb8(const FloatImage& image) {
+Rgb8Image to_srgb8(const FloatImage& image, const ToneMapping& mapping) {
     Rgb8Image out{image.width, image.height, {}};
     out.bytes.resize(image.pixels.size() * 3);
+    const bool identity = mapping.exposure == 0.0 && mapping.tone == Tone::Clamp;
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) out.bytes[i * 3 + c] = encode_srgb8(image.pixels[i][c]);
+        for (int c = 0; c < 3; ++c) {
+            float v = image.pixels[i][c];
+            out.bytes[i * 3 + c] = encode_srgb8(identity ? v : tone_map(v, mapping));
+        }
     return out;
 }
 

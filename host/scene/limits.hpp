@@ -35,6 +35,8 @@ constexpr long long kMaxSceneFileBytes = 128LL << 20;
 constexpr int kMaxTextureSide = 8192;
 constexpr long long kMaxTextureTexels = 1LL << 25;  // all textures together: 128 MiB
 constexpr int kMaxTextures = 1024;                  // distinct image files
+constexpr int kMaxPhotonsPerPass = 1 << 22;          // photons shot per pass (each stored a few times)
+constexpr int kMaxPhotonPasses = 1 << 20;
 constexpr int kMaxPatternColors = 8;                // stops of a pattern's colour ramp
 constexpr int kMaxOctaves = 10;                     // terms of a turbulence sum
 

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 
 #include "core/file_reading.hpp"
 #include "scene/camera.hpp"
@@ -32,6 +33,24 @@ void read_render(TableReader& t, RenderSettings& r) {
     r.samples = check_int_range(t, "samples", t.integer("samples", r.samples), 1, limits::kMaxSamples);
     r.max_depth = check_int_range(t, "max_depth", t.integer("max_depth", r.max_depth), 0, limits::kMaxDepth);
     r.background = check_color(t, "background", t.vec3("background", r.background));
+    r.tone.exposure = check_range(t, "exposure", t.number("exposure", r.tone.exposure), -64.0, 64.0);
+    r.tone.tone = static_cast<Tone>(one_of(t, "tone", "tone curve", {"clamp", "reinhard", "aces"}, "clamp"));
+    t.finish();
+}
+
+void read_photons(TableReader& t, PhotonSettings& p) {
+    p.count = check_int_range(t, "count", t.integer("count", p.count), 1, limits::kMaxPhotonsPerPass);
+    p.passes = check_int_range(t, "passes", t.integer("passes", p.passes), 1, limits::kMaxPhotonPasses);
+    p.caustic_radius = t.number("caustic_radius", p.caustic_radius);
+    p.global_radius = t.number("global_radius", p.global_radius);
+    for (const char* key : {"caustic_radius", "global_radius"}) {
+        double r = std::string_view(key) == "caustic_radius" ? p.caustic_radius : p.global_radius;
+        if (!(r > 0.0)) t.fail(key, fmt::format("{} must be positive, not {:g}", key, r));
+    }
+    p.alpha = t.number("alpha", p.alpha);
+    if (!(p.alpha > 0.0 && p.alpha < 1.0)) t.fail("alpha", fmt::format("alpha must be in (0, 1), not {:g}", p.alpha));
+    p.seed = static_cast<std::uint32_t>(check_int_range(t, "seed", t.integer("seed", 0), 0, 2147483647));
+    p.max_bounces = check_int_range(t, "max_bounces", t.integer("max_bounces", p.max_bounces), 1, limits::kMaxDepth);
     t.finish();
 }
 
@@ -52,6 +71,12 @@ void read_camera(TableReader& t, CameraSpec& c) {
 Material read_material(TableReader& t, const std::string& name, TextureLibrary& textures) {
     Material m;
     m.name = name;
+    m.model = static_cast<Model>(one_of(t, "model", "material model", {"phong", "microfacet"}, "phong"));
+    if (m.microfacet()) {
+        read_microfacet(t, m);
+        t.finish();
+        return m;
+    }
     m.color = check_color(t, "color", t.vec3("color", m.color));
     if (const toml::table* checker = t.table("checker")) {
         TableReader c(*checker, t.file(), "checker of material '" + name + "'");
@@ -156,6 +181,16 @@ void for_each_table(const toml::array& array, const std::string& file, const std
 
 }  // namespace
 
+PhotonSettings photon_defaults(const CameraSpec& camera) {
+    // The radii are fractions of the distance the camera looks at, a scale of the picture: the
+    // caustic map is gathered finer than the smooth indirect light.
+    const double view = glm::length(camera.look_at - camera.eye);
+    PhotonSettings p;
+    p.caustic_radius = 0.005 * view;
+    p.global_radius = 0.02 * view;
+    return p;
+}
+
 Scene parse_scene(std::string_view text, const std::string& path) {
     SourceTextScope source(path, text);  // for messages pointing inside strings (expressions)
     toml::table root;
@@ -183,6 +218,11 @@ Scene parse_scene(std::string_view text, const std::string& path) {
         TableReader a(*t, path, "[ambient]");
         scene.ambient = check_color(a, "color", a.vec3("color", scene.ambient));
         a.finish();
+    }
+    if (const toml::table* t = top.table("photons")) {
+        TableReader p(*t, path, "[photons]");
+        scene.photons = photon_defaults(scene.camera);
+        read_photons(p, *scene.photons);
     }
     if (const toml::array* lights = top.array("light")) {
         if (lights->size() > static_cast<std::size_t>(limits::kMaxLights))
@@ -233,6 +273,7 @@ Scene parse_scene(std::string_view text, const std::string& path) {
     }
     read_animation(top, root, scene);
     top.finish();
+    if (scene.photons) check_photon_lights(scene);
     return scene;
 }
 

@@ -13,4 +13,8 @@ Scene load_scene(const std::string& path);
 // The same from text already in memory; `path` is used for messages only.
 Scene parse_scene(std::string_view text, const std::string& path);
 
+// Photon mapping's settings where a scene gives none ([photons] keys left out, or --photons on
+// a scene without the table): radii scaled to the distance from the camera to what it looks at.
+PhotonSettings photon_defaults(const CameraSpec& camera);
+
 }  // namespace lancer

@@ -34,7 +34,33 @@ void reject_other_types_keys(TableReader& t, LightType type) {
     }
 }
 
+constexpr double kPi = 3.14159265358979323846;
+
+// power (W) or intensity (W/sr): a light in physical units, which falls off with the square of
+// the distance. `color` stays a tint; the size goes into Light::scale, in the renderer's units
+// (radiant_flux in scene.hpp): the colour at distance 1 is intensity / pi.
+void read_radiometry(TableReader& t, Light& l) {
+    const bool power = t.has("power"), intensity = t.has("intensity");
+    if (!power && !intensity) return;
+    const char* key = power ? "power" : "intensity";
+    if (power && intensity) t.fail("intensity", "give power or intensity, not both");
+    for (const char* other : {"falloff", "falloff_distance"})
+        if (t.has(other))
+            t.fail(other, fmt::format("{} is not used with {}: a light in physical units falls off with the square "
+                                      "of the distance",
+                                      other, key));
+    double value = t.number(key, 0.0);
+    if (!(value > 0.0)) t.fail(key, fmt::format("{} must be positive, not {:g}", key, value));
+    // Watts spread over the solid angle the light covers (a spot's cone, weighted by its edge).
+    double solid_angle = l.type == LightType::Spot ? spot_solid_angle(l) : 4.0 * kPi;
+    double watts_per_sr = power ? value / solid_angle : value;
+    l.falloff = Falloff::InverseSquare;
+    l.falloff_distance = 1.0;
+    l.scale = watts_per_sr / kPi;
+}
+
 void read_falloff(TableReader& t, Light& l) {
+    if (t.has("power") || t.has("intensity")) return;  // read_radiometry
     l.falloff = static_cast<Falloff>(one_of(t, "falloff", "falloff", {"none", "inverse_square"}, "none"));
     if (l.falloff == Falloff::InverseSquare) {
         if (!t.has("falloff_distance"))
@@ -90,6 +116,7 @@ void read_area(TableReader& t, Light& l) {
 
 Light read_light(TableReader& t) {
     Light l;
+    l.where = t.location();
     l.type = static_cast<LightType>(one_of(t, "type", "light type", kTypeNames, "point"));
     l.color = check_color(t, "color", t.vec3("color", l.color));
     l.name = t.string("name", "");
@@ -100,6 +127,7 @@ Light read_light(TableReader& t) {
         case LightType::Spot: read_spot(t, l); break;
         case LightType::Area: read_area(t, l); break;
     }
+    read_radiometry(t, l);  // after the spot's cone, which its power spreads over
     t.finish();
     return l;
 }

@@ -12,6 +12,8 @@
 #include <glm/vec3.hpp>
 
 #include "core/error.hpp"
+#include "image/tone.hpp"
+#include "optics/metals.hpp"
 #include "scene/material_maps.hpp"
 #include "surface/bezier_patch.hpp"
 #include "surface/implicit_surface.hpp"
@@ -28,7 +30,30 @@ struct RenderSettings {
     int samples = 3;    // an N x N grid of rays per pixel
     int max_depth = 5;  // levels of reflection and refraction after the camera ray
     dvec3 background{0.0, 0.0, 0.0};
+    // How linear radiance becomes the PNG's 8 bits (image/tone.hpp): exposure in stops, tone curve.
+    ToneMapping tone;
 };
+
+// Photon mapping ([photons]; docs/scene-format.md): passes of `count` photons each, whose
+// estimates are averaged with radii shrinking pass by pass (Knaus and Zwicker's progressive
+// photon mapping), so the image converges as passes are added.
+struct PhotonSettings {
+    int count = 100000;           // photons shot from the lights per pass
+    int passes = 16;              // K
+    double caustic_radius = 0.0;  // the first pass's gather radius for the caustic map
+    double global_radius = 0.0;   // and for the global (indirect diffuse) map
+    double alpha = 0.7;           // r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1)
+    std::uint32_t seed = 0;
+    int max_bounces = 16;         // interactions of a photon path, Russian roulette aside
+    // Passes [first_pass, first_pass + pass_count) of the K (a farm renders parts of a still).
+    int first_pass = 0;
+    int pass_count = 0;  // 0: all K
+
+    int last_pass() const { return pass_count ? first_pass + pass_count : passes; }  // one past
+};
+
+// The gather radius of pass k (from 0): r_k^2 = r_0^2 prod_{i=1..k} (i - 1 + alpha) / i.
+double photon_radius(double first_radius, double alpha, int pass);
 
 struct CameraSpec {
     dvec3 eye{0.0, 0.0, -5.0};
@@ -53,10 +78,14 @@ enum class Falloff {
 struct Light {
     LightType type = LightType::Point;
     dvec3 position{0.0};  // point and spot: where it is; area: the centre of its rectangle
-    dvec3 color{1.0};     // with fall-off: the intensity at falloff_distance
+    dvec3 color{1.0};     // with fall-off: the intensity at falloff_distance (times `scale`)
+    // Lights given in watts (power or intensity) keep `color` as a tint and carry their size
+    // here, so that colour keyframes stay tints: what the renderers use is emitted().
+    double scale = 1.0;
     std::string name;     // optional, for [animation] to refer to it
     Falloff falloff = Falloff::None;
     double falloff_distance = 1.0;
+    SourceLocation where;  // the [[light]] table, for messages
 
     // Spot (POV-Ray's spotlight): full intensity within inner_angle of the axis, none beyond
     // outer_angle, a smooth cubic between; times cos(angle)^tightness.
@@ -72,11 +101,24 @@ struct Light {
     dvec3 edge_v{0.0};
     int samples = 4;
     bool jitter = true;  // each sample at a hashed place within its cell, else at the cell's centre
+
+    // The colour the shading model uses: the light seen at falloff_distance (scene-format.md).
+    dvec3 emitted() const { return color * scale; }
 };
 
 // Points a spot light with point_at at it again (after its position moved); other lights and
 // spots given a fixed direction are left as they are.
 void aim_spot(Light& light);
+
+// A light's radiant flux in watts per channel, where its colour is in the renderer's radiance
+// units (one unit of `color` at falloff_distance d0 is an intensity of pi d0^2 W/sr: the
+// irradiance pi at d0 that makes a white diffuse surface's radiance 1). Lights without fall-off
+// would have infinite power: nullopt.
+std::optional<dvec3> radiant_flux(const Light& light);
+
+// The solid angle a spot light's cone covers, weighted by its spot factor (steradians): its
+// intensity on the axis times this is its power.
+double spot_solid_angle(const Light& light);
 
 struct Checker {
     dvec3 color_a{1.0};  // where floor(x/s)+floor(y/s)+floor(z/s) is even
@@ -89,7 +131,13 @@ enum class Highlight {
     Blinn,  // k_s * (N.H)^n_s, H the unit half vector between L and the view direction
 };
 
-// Phong material. Defaults are POV-Ray's finish defaults, so ported scenes look the same.
+enum class Model {
+    Phong,       // ambient, diffuse, highlight and mirror terms (POV-Ray's finish)
+    Microfacet,  // GGX microfacets with exact Fresnel: a metal or a glass (docs/scene-format.md)
+};
+
+// A material: Phong (the default, with POV-Ray's finish defaults, so ported scenes look the same)
+// or microfacet.
 struct Material {
     std::string name;
     dvec3 color{1.0};
@@ -110,6 +158,13 @@ struct Material {
     dvec3 absorption{0.0};    // Beer-Lambert coefficient per unit distance inside
     Highlight highlight = Highlight::Phong;
 
+    // The microfacet model: a metal (conductor set) or a glass (transparent). `color` tints it.
+    Model model = Model::Phong;
+    double roughness = 0.0;  // 0: a perfect mirror or perfectly smooth glass; GGX alpha = roughness^2
+    std::optional<optics::ComplexIor> conductor;
+
+    bool microfacet() const { return model == Model::Microfacet; }
+    double alpha() const { return roughness * roughness; }
     bool transparent() const { return transmission.r > 0.0 || transmission.g > 0.0 || transmission.b > 0.0; }
 };
 
@@ -173,12 +228,18 @@ struct Object {
 };
 
 struct Animation;  // scene/animation.hpp
+struct Scene;
+
+// Photon mapping shoots photons by power: every light must have one (fall-off with distance).
+// A SceneError at the first light that has none.
+void check_photon_lights(const Scene& scene);
 
 struct Scene {
     std::string path;
     RenderSettings render;
     CameraSpec camera;
     dvec3 ambient{1.0};  // I_scene, scaled per material by Material::ambient
+    std::optional<PhotonSettings> photons;  // photon mapping, when the scene or the command line asks for it
     std::vector<Light> lights;
     std::vector<Material> materials;
     std::vector<Object> objects;

@@ -4,8 +4,9 @@
 
 namespace lancer::view {
 
-std::vector<SamplePass> refinement_passes(int samples_per_side) {
-    const auto total = static_cast<std::uint32_t>(samples_per_side * samples_per_side);
+namespace {
+
+std::vector<SamplePass> doubling_passes(std::uint32_t total) {
     std::vector<SamplePass> passes;
     std::uint32_t done = 0;
     while (done < total) {
@@ -18,11 +19,29 @@ std::vector<SamplePass> refinement_passes(int samples_per_side) {
     return passes;
 }
 
+}  // namespace
+
+std::vector<SamplePass> refinement_passes(int samples_per_side) {
+    return doubling_passes(static_cast<std::uint32_t>(samples_per_side * samples_per_side));
+}
+
+std::uint32_t refinement_total(const Scene& scene) {
+    if (scene.photons) return static_cast<std::uint32_t>(scene.photons->last_pass() - scene.photons->first_pass);
+    return static_cast<std::uint32_t>(scene.render.samples * scene.render.samples);
+}
+
+std::vector<SamplePass> refinement_plan(const Scene& scene) { return doubling_passes(refinement_total(scene)); }
+
 Scene preview_scene(const Scene& scene, int divisor) {
     Scene s = scene;
     s.render.width = std::max(1, scene.render.width / divisor);
     s.render.height = std::max(1, scene.render.height / divisor);
     s.render.samples = 1;
+    if (s.photons) {
+        s.photons->count = std::max(1000, s.photons->count / 8);
+        s.photons->first_pass = 0;
+        s.photons->pass_count = 1;
+    }
     return s;
 }
 
@@ -39,12 +58,13 @@ int next_preview_divisor(int divisor, double preview_ms, double budget_ms, int m
     return divisor;
 }
 
-Rgb8Image display_image(const FloatImage& sums, std::uint32_t samples_done, bool final_pass) {
-    if (final_pass) return to_srgb8(sums);
-    return quick_srgb8(sums, 1.0f / float(std::max<std::uint32_t>(1, samples_done)));
+Rgb8Image display_image(const FloatImage& sums, std::uint32_t samples_done, bool final_pass, const ToneMapping& tone) {
+    if (final_pass) return to_srgb8(sums, tone);
+    return quick_srgb8(sums, 1.0f / float(std::max<std::uint32_t>(1, samples_done)), tone);
 }
 
-Rgb8Image quick_srgb8(const FloatImage& image, float scale) {
+Rgb8Image quick_srgb8(const FloatImage& image, float scale, const ToneMapping& tone) {
+    const bool identity = tone.exposure == 0.0 && tone.tone == Tone::Clamp;
     // Linear [0, 1] in 65536 steps: the sRGB curve's steepest part (12.92 near black) moves
     // 255 * 12.92 / 65535 = 0.05 of a level per step, so rounding stays within one level.
     constexpr int kSteps = 65535;
@@ -57,6 +77,7 @@ Rgb8Image quick_srgb8(const FloatImage& image, float scale) {
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c) {
             float v = image.pixels[i][c] * scale;
+            if (!identity) v = tone_map(v, tone);
             // NaN compares false both ways and lands on 0, as in encode_srgb8.
             int index = v > 0.0f ? (v < 1.0f ? int(v * kSteps + 0.5f) : kSteps) : 0;
             out.bytes[i * 3 + c] = table[index];

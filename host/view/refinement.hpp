@@ -22,8 +22,15 @@ struct SamplePass {
 // into the last pass. 3 x 3: [0,1) [1,2) [2,4) [4,9).
 std::vector<SamplePass> refinement_passes(int samples_per_side);
 
+// What a still of `scene` is made of: its N x N grid samples, or with photon mapping its photon
+// passes (each one camera sample per pixel and a photon map: the caustics refine with the
+// anti-aliasing); and the passes that refine them, as refinement_passes does for a grid.
+std::uint32_t refinement_total(const Scene& scene);
+std::vector<SamplePass> refinement_plan(const Scene& scene);
+
 // The preview of `scene` while the camera moves: 1 sample per pixel (the pixel's centre) at
-// 1/`divisor` of the width and height (at least 1 x 1), same camera and aspect ratio.
+// 1/`divisor` of the width and height (at least 1 x 1), same camera and aspect ratio; with
+// photon mapping, one pass of an eighth of the photons (at least 1000).
 Scene preview_scene(const Scene& scene, int divisor);
 
 // The first divisor to try, from the time of one sample per pixel at full size: the smallest
@@ -37,12 +44,13 @@ int next_preview_divisor(int divisor, double preview_ms, double budget_ms, int m
 // The image after `samples_done` of a pass sequence: sums / samples_done (pass sums are not
 // divided until the last pass, which divides itself; then samples_done is the whole grid and
 // `final_pass` is true). The final picture is converted exactly as `lancer render` writes it;
-// the ones before it, seen for a moment, with quick_srgb8.
-Rgb8Image display_image(const FloatImage& sums, std::uint32_t samples_done, bool final_pass);
+// the ones before it, seen for a moment, with quick_srgb8. Both through the scene's tone mapping.
+Rgb8Image display_image(const FloatImage& sums, std::uint32_t samples_done, bool final_pass,
+                        const ToneMapping& tone = {});
 
-// 8-bit sRGB of `scale` times each linear pixel, through a table instead of pow(): within one
-// level of to_srgb8 and about 4x faster, for previews and partial pictures, which are on screen
-// for a moment and are converted while the next pass waits.
-Rgb8Image quick_srgb8(const FloatImage& image, float scale = 1.0f);
+// 8-bit sRGB of `scale` times each linear pixel (then tone-mapped), through a table instead of
+// pow(): within one level of to_srgb8 and about 4x faster, for previews and partial pictures,
+// which are on screen for a moment and are converted while the next pass waits.
+Rgb8Image quick_srgb8(const FloatImage& image, float scale = 1.0f, const ToneMapping& tone = {});
 
 }  // namespace lancer::view

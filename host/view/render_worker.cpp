@@ -202,7 +202,7 @@ void RenderWorker::refine(const Scene& scene, std::uint64_t generation, bool mov
         ShownFrame f = describe(scene, generation);
         f.kind = ShownFrame::Kind::Preview;
         auto convert_start = Clock::now();
-        f.image = quick_srgb8(preview);
+        f.image = quick_srgb8(preview, 1.0f, scene.render.tone);
         f.convert_ms = ms_since(convert_start);
         f.preview_divisor = preview_divisor_;
         f.render_ms = ms_since(start);
@@ -216,11 +216,11 @@ void RenderWorker::refine(const Scene& scene, std::uint64_t generation, bool mov
         if (changed_.wait_for(lock, kSettle, [&] { return !wanted_locked(generation); })) throw RenderCancelled();
     }
 
-    const auto total = static_cast<std::uint32_t>(scene.render.samples * scene.render.samples);
+    const std::uint32_t total = refinement_total(scene);
     auto view_start = Clock::now();
     FloatImage sums;
     double rays_before = 0.0;
-    const std::vector<SamplePass> passes = refinement_passes(scene.render.samples);
+    const std::vector<SamplePass> passes = refinement_plan(scene);
     for (std::size_t p = 0; p < passes.size(); ++p) {
         auto start = Clock::now();
         renderer_->render_samples(scene, passes[p].first, passes[p].count, sums, wanted);
@@ -234,7 +234,7 @@ void RenderWorker::refine(const Scene& scene, std::uint64_t generation, bool mov
         // A first pass is one sample at full size: what a preview at 1/d of each side costs d^2 less.
         if (p == 0) preview_divisor_ = preview_divisor_for(f.render_ms, kPreviewBudgetMs, kMaxPreviewDivisor);
         auto convert_start = Clock::now();
-        f.image = display_image(sums, f.samples_done, final_pass);
+        f.image = display_image(sums, f.samples_done, final_pass, scene.render.tone);
         f.convert_ms = ms_since(convert_start);
         f.view_ms = ms_since(view_start);
         f.view_rays = sums.total_rays();
@@ -260,7 +260,7 @@ void RenderWorker::run_save(const SaveJob& job) {
         image = to_srgb8(renderer_->render(job.scene, [&](double) {
             std::lock_guard lock(mutex_);
             return !stop_;
-        }));
+        }), job.scene.render.tone);
     }
     try {
         write_png(job.path, image);
@@ -310,7 +310,7 @@ void RenderWorker::run_recording(const RecordingJob& job) {
             FloatImage image = renderer_->render(frame, [&](double) { return !cancelled(); });
             ShownFrame f = describe(frame, 0);
             f.kind = ShownFrame::Kind::Recording;
-            f.image = to_srgb8(image);
+            f.image = to_srgb8(image, frame.render.tone);
             write_png(pattern->path(k), f.image);
             ++done;
             f.render_ms = ms_since(frame_start);

@@ -1,12 +1,15 @@
 // The farm recipes of docs/farm.md, run as written: GNU parallel over "ssh" to two hosts (an
 // ssh stand-in that runs the jobs here) and the Slurm array script, task by task. Either way the
 // frames must be byte for byte those of one machine rendering the whole sequence.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include "image/image.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
@@ -106,6 +109,59 @@ TEST(Farm, SlurmArrayTasksTogetherRenderTheSequence) {
     // Outside a job array the script says what is missing instead of guessing a task.
     EXPECT_NE(run_in(dir, lancer_env() + script), 0);
     EXPECT_NE(test::read_file(dir + "/log.txt").find("SLURM_ARRAY_TASK_ID"), std::string::npos);
+}
+
+// The passes of one photon-mapped still, spread over two hosts by the GNU parallel recipe, then
+// combined: the image one machine renders, up to float rounding in the combination (each part
+// holds the mean of its passes; a missing or doubled pass would move every pixel by a tenth).
+TEST(Farm, PhotonPassesOnTwoHostsCombineIntoTheStillOfOneMachine) {
+    const std::string scene = test::source_path("tests/data/photons/small.toml");  // 6 passes
+    std::string dir = fresh_dir("passes");
+    auto single = test::run_lancer("render " + scene + " --backend cpu -q -o " + dir + "/single.exr");
+    ASSERT_EQ(single.exit_code, 0) << single.err;
+    std::string command = lancer_env() + "LANCER_ARGS='--backend cpu' HOME='" + test::output_dir() +
+                          "' FAKE_SSH_LOG=ssh.log PARALLEL_SSH='" + test::source_path("tests/data/farm/fake-ssh") +
+                          "' env -u SHELL '" + test::source_path("docs/farm/render-passes-parallel.sh") + "' '" + scene +
+                          "' farm.exr 6 1/hostA,1/hostB 2";
+    ASSERT_EQ(run_in(dir, command), 0) << test::read_file(dir + "/log.txt");
+    std::string hosts = test::read_file(dir + "/ssh.log");
+    EXPECT_GE(test::count_occurrences(hosts, "hostA"), 1) << hosts;
+    EXPECT_GE(test::count_occurrences(hosts, "hostB"), 1) << hosts;
+    EXPECT_EQ(test::count_occurrences(hosts, "host"), 3) << "one ssh per part: " << hosts;
+    auto expect_single = [&] {
+        ExrInfo info;
+        FloatImage a = read_exr(dir + "/single.exr"), b = read_exr(dir + "/farm.exr", &info);
+        EXPECT_EQ(info.passes, 6);
+        ASSERT_EQ(a.pixels.size(), b.pixels.size());
+        float largest = 0.0f, worst = 0.0f;
+        for (std::size_t i = 0; i < a.pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c) {
+                largest = std::max(largest, a.pixels[i][c]);
+                worst = std::max(worst, std::abs(a.pixels[i][c] - b.pixels[i][c]));
+            }
+        EXPECT_GT(largest, 0.0f);
+        EXPECT_LE(worst, 1e-6f * largest);
+    };
+    expect_single();
+
+    // A lost part is rendered again, and only it.
+    fs::remove(dir + "/farm.exr.parts/2-3.exr");
+    auto before = fs::last_write_time(dir + "/farm.exr.parts/0-1.exr");
+    ASSERT_EQ(run_in(dir, command), 0) << test::read_file(dir + "/log.txt");
+    EXPECT_EQ(test::count_occurrences(test::read_file(dir + "/ssh.log"), "host"), 4);
+    EXPECT_EQ(fs::last_write_time(dir + "/farm.exr.parts/0-1.exr"), before);
+    expect_single();
+
+    // Combining an incomplete set names the passes that are missing.
+    auto partial = test::run_lancer("combine " + dir + "/farm.exr.parts/0-1.exr " + dir + "/farm.exr.parts/4-5.exr -o " +
+                                    dir + "/partial.png");
+    EXPECT_EQ(partial.exit_code, 2);
+    EXPECT_NE(partial.err.find("passes 2-3 are missing"), std::string::npos) << partial.err;
+    EXPECT_FALSE(test::file_exists(dir + "/partial.png"));
+    auto twice = test::run_lancer("combine " + dir + "/farm.exr.parts/0-1.exr " + dir + "/farm.exr.parts/0-1.exr -o " +
+                                  dir + "/twice.png");
+    EXPECT_EQ(twice.exit_code, 2);
+    EXPECT_NE(twice.err.find("hold the same passes"), std::string::npos) << twice.err;
 }
 
 }  // namespace

@@ -37,7 +37,17 @@ TEST_P(BackendsAgree, GpuMatchesCpuReference) {
     test::expect_same_picture("backends-" + std::filesystem::path(GetParam()).stem().string(), gpu, cpu);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, BackendsAgree, testing::ValuesIn(test::scene_files()), [](const auto& info) {
+// Photon-mapped scenes are estimates with noise of their own on each backend (float and double
+// send a photon path apart after a few bounces): they agree statistically, which
+// photon_agreement_test.cpp checks, not pixel by pixel.
+std::vector<std::string> scenes_without_photons() {
+    std::vector<std::string> out;
+    for (const std::string& path : test::scene_files())
+        if (test::read_file(path).find("\n[photons]") == std::string::npos) out.push_back(path);
+    return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, BackendsAgree, testing::ValuesIn(scenes_without_photons()), [](const auto& info) {
     return std::filesystem::path(info.param).stem().string();
 });
 

@@ -134,17 +134,21 @@ TEST(GpuMemoryBudget, NamesTheBufferTheNeedAndTheLimit) {
 }
 
 // The budget is what the packer made: one entry per scene array of the interface, its size the
-// packed array's.
+// packed array's, then the output band, then (photon-mapped scenes) photon mapping's three
+// working buffers.
 TEST(GpuMemoryBudget, IsThePackedArraysSizes) {
     for (const std::string& path : test::scene_files()) {
         gpu::PackedScene packed = gpu::pack_scene(load_scene(path), {Acceleration::BvhAlways});
         auto needs = gpu::buffer_needs(packed, 64);
-        ASSERT_EQ(needs.size(), gpu::kSceneArrayCount + 1) << path;
+        const std::size_t photon_buffers = packed.features.has_photons ? 3 : 0;
+        ASSERT_EQ(needs.size(), gpu::kSceneArrayCount + 1 + photon_buffers) << path;
         for (std::size_t a = 0; a < gpu::kSceneArrayCount; ++a) {
             EXPECT_EQ(needs[a].what, gpu::kSceneArrays[a].what);
             EXPECT_EQ(needs[a].bytes, packed.bytes(gpu::SceneArray(a)).size()) << path << ": " << needs[a].what;
         }
-        EXPECT_EQ(needs.back().bytes, 64u);
+        EXPECT_EQ(needs[gpu::kSceneArrayCount].bytes, 64u) << path;
+        for (std::size_t b = 0; b < photon_buffers; ++b)
+            EXPECT_GT(needs[gpu::kSceneArrayCount + 1 + b].bytes, 0u) << path << ": " << needs[gpu::kSceneArrayCount + 1 + b].what;
     }
 }
 

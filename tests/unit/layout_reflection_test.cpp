@@ -2,7 +2,8 @@
 // of the shader: every member of every block it reflects at the host's offset, every member the
 // host has reflected, and every descriptor of LANCER_RESOURCES declared at its binding with the
 // type its kind means. Nothing here lists members or bindings by hand: a member or resource added
-// to layout.h is checked at once. (Structs read from texel buffers have no block to reflect:
+// to layout.h is checked at once. The tracer and photon mapping's two compute passes share the
+// one table, so the checks run over all three entry points. (Structs read from texel buffers have no block to reflect:
 // tests/render/interface_test.cpp reads each back through the shader instead.)
 #include <cstddef>
 #include <map>
@@ -55,24 +56,40 @@ struct BlockVariable {
     int stride;  // of a runtime-sized array, else 0
 };
 std::map<std::string, BlockVariable> host_block_variables() {
+    const Offsets uints{{"", 0}};
     return {{"frame", {HOST_OFFSETS(FrameParams), 0}},
             {"band", {HOST_OFFSETS(BandParams), 0}},
-            {"pixels", {Offsets{{"", 0}}, int(sizeof(vec4))}}};
+            {"pixels", {Offsets{{"", 0}}, int(sizeof(vec4))}},
+            {"photon_params", {HOST_OFFSETS(PhotonParams), 0}},
+            {"step", {HOST_OFFSETS(GridStep), 0}},
+            {"photons", {HOST_OFFSETS(Photon), int(sizeof(Photon))}},
+            {"photons_sorted", {HOST_OFFSETS(Photon), int(sizeof(Photon))}},
+            {"photon_counter", {uints, int(sizeof(uint))}},
+            {"cell_count", {uints, int(sizeof(uint))}},
+            {"cell_start", {uints, int(sizeof(uint))}},
+            {"block_sums", {uints, int(sizeof(uint))}}};
 }
+
+// The compute entry points that share the resource table.
+const char* const kEntries[] = {"trace.comp", "photons.comp", "photon_grid.comp"};
 
 TEST(Layout, EveryReflectedBlockMemberIsAtTheHostsOffsetAndEveryHostMemberIsReflected) {
     const auto host = host_block_variables();
     std::set<std::string> seen;
-    for (const ReflectedMember& m : reflect_block_members(full_tree(), "trace.comp")) {
-        const std::string variable = m.name.substr(0, m.name.find('.'));
-        const std::string member = m.name.find('.') == std::string::npos ? "" : m.name.substr(m.name.find('.') + 1);
-        auto block = host.find(variable);
-        ASSERT_NE(block, host.end()) << "the shader has a block variable the host does not know: " << m.name;
-        auto offset = block->second.members.find(member);
-        ASSERT_NE(offset, block->second.members.end()) << "the host's struct has no member " << m.name;
-        EXPECT_EQ(m.offset, static_cast<int>(offset->second)) << m.name;
-        if (block->second.stride) EXPECT_EQ(m.top_level_stride, block->second.stride) << m.name;
-        seen.insert(variable + "." + member);
+    for (const char* entry : kEntries) {
+        for (const ReflectedMember& m : reflect_block_members(full_tree(), entry)) {
+            // An array of structs is reflected through its first element: "photons[0].power".
+            std::string variable = m.name.substr(0, m.name.find('.'));
+            if (variable.size() > 3 && variable.compare(variable.size() - 3, 3, "[0]") == 0) variable.resize(variable.size() - 3);
+            const std::string member = m.name.find('.') == std::string::npos ? "" : m.name.substr(m.name.find('.') + 1);
+            auto block = host.find(variable);
+            ASSERT_NE(block, host.end()) << entry << " has a block variable the host does not know: " << m.name;
+            auto offset = block->second.members.find(member);
+            ASSERT_NE(offset, block->second.members.end()) << "the host's struct has no member " << m.name;
+            EXPECT_EQ(m.offset, static_cast<int>(offset->second)) << m.name;
+            if (block->second.stride) EXPECT_EQ(m.top_level_stride, block->second.stride) << m.name;
+            seen.insert(variable + "." + member);
+        }
     }
     for (const auto& [variable, block] : host)
         for (const auto& [member, offset] : block.members)
@@ -99,8 +116,14 @@ TEST(Layout, EveryResourceIsDeclaredAtItsBindingWithItsKindAndNothingElse) {
         expected[std::string(r.name) + suffix] = {kind, int(r.binding)};
     }
     expected["BandBlock"] = {"push constants", -1};
+    expected["GridBlock"] = {"push constants", -1};
+    // Each entry point declares a part of the table; together they declare all of it.
     std::map<std::string, std::pair<std::string, int>> declared;
-    for (const ReflectedResource& r : reflect_resources(full_tree(), "trace.comp")) declared[r.name] = {r.kind, r.binding};
+    for (const char* entry : kEntries)
+        for (const ReflectedResource& r : reflect_resources(full_tree(), entry)) {
+            auto at = declared.emplace(r.name, std::pair{r.kind, r.binding}).first;
+            EXPECT_EQ(at->second, (std::pair{r.kind, r.binding})) << entry << " declares " << r.name << " differently";
+        }
     EXPECT_EQ(declared, expected);
 }
 

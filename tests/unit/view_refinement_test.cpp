@@ -32,6 +32,35 @@ TEST(Refinement, PassesCoverTheGridInOrderStartingWithOneSample) {
     EXPECT_EQ(refinement_passes(4), (std::vector<SamplePass>{{0, 1}, {1, 1}, {2, 2}, {4, 4}, {8, 8}}));
 }
 
+// With photon mapping the viewer refines over the render's photon passes (each a camera sample
+// per pixel and a photon map), so the caustics sharpen with the anti-aliasing; its preview is
+// one pass of fewer photons.
+TEST(Refinement, PhotonScenesRefinePassByPass) {
+    Scene scene;
+    scene.render.samples = 3;
+    EXPECT_EQ(refinement_total(scene), 9u);
+    scene.photons = PhotonSettings{};
+    scene.photons->passes = 40;
+    scene.photons->count = 50000;
+    EXPECT_EQ(refinement_total(scene), 40u);
+    std::vector<SamplePass> plan = refinement_plan(scene);
+    ASSERT_FALSE(plan.empty());
+    EXPECT_EQ(plan.front(), (SamplePass{0, 1}));
+    std::uint32_t next = 0;
+    for (const SamplePass& p : plan) {
+        EXPECT_EQ(p.first, next);
+        next += p.count;
+    }
+    EXPECT_EQ(next, 40u);
+    scene.photons->first_pass = 8;  // a part of a farm render
+    scene.photons->pass_count = 8;
+    EXPECT_EQ(refinement_total(scene), 8u);
+    Scene preview = preview_scene(scene, 4);
+    ASSERT_TRUE(preview.photons);
+    EXPECT_EQ(preview.photons->last_pass() - preview.photons->first_pass, 1);
+    EXPECT_EQ(preview.photons->count, 50000 / 8);
+}
+
 TEST(Refinement, PreviewIsOneSampleAtAFractionOfTheSize) {
     Scene scene;
     scene.render.width = 640;
