@@ -184,8 +184,13 @@ LANCER_CONST LIGHT_AREA = 2;
 // A pass that does not start at sample 0 continues the sums the output buffer holds, and only
 // the pass that ends at sample N * N divides by N * N: passes add the same floats in the same
 // order as one full render, so progressive refinement ends on exactly that image.
-#define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS) \
-    SCALARS(uint, y0, uint, rows, uint, sample_first, uint, sample_count)
+// With refine_count > 0 the band is a compact list of pixels instead (adaptive anti-aliasing):
+// entry i = y * width + x of the `rows` rows covers the pixel refined_pixel_at(i), for
+// i < refine_count, and writes pixels[i]; y0 is unused. Every lane of the band but the last
+// row's tail has a pixel to trace.
+#define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS)                      \
+    SCALARS(uint, y0, uint, rows, uint, sample_first, uint, sample_count) \
+    SCALARS(uint, refine_count, uint, reserved0, uint, reserved1, uint, reserved2)
 
 // The structs themselves, and their size in rows (Name_ROWS), from the lists above.
 #define LANCER_MEMBER_VEC4(name) vec4 name;
@@ -252,7 +257,8 @@ LANCER_CONST RESOURCE_INT = 4;
 #define LANCER_RESOURCES(X)                                                          \
     X(FRAME, 0, RESOURCE_UNIFORM, FrameParams, frame, frame, "frame parameters")     \
     LANCER_SCENE_ARRAYS(X)                                                           \
-    X(OUTPUT, 12, RESOURCE_OUTPUT, vec4, pixels, pixels, "output rows") /* one band of the image */
+    X(OUTPUT, 12, RESOURCE_OUTPUT, vec4, pixels, pixels, "output rows") /* one band of the image */ \
+    X(REFINE, 13, RESOURCE_UINT, uint, refine, refined_pixel_at, "pixels to refine") /* see BandParams */
 
 #define LANCER_BINDING_CONSTANT(NAME, slot, kind, Element, member, reader, what) LANCER_CONST BINDING_##NAME = slot;
 LANCER_RESOURCES(LANCER_BINDING_CONSTANT)

@@ -34,8 +34,11 @@ int render_still(const RenderOptions& options, const Scene& scene, const std::st
 
     const RenderSettings& r = scene.render;
     double rays = image.total_rays();
-    progress.finish(fmt::format("{}: {}x{}, {} rays/pixel, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB",
-                                output, r.width, r.height, r.samples * r.samples, renderer->description(), seconds,
+    progress.finish(fmt::format("{}: {}x{}, {}, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB", output,
+                                r.width, r.height,
+                                camera_rays_summary(r.samples, static_cast<long long>(image.pixels.size()),
+                                                    image.refined_pixels),
+                                renderer->description(), seconds,
                                 rays / seconds / 1e6, rays / 1e6, peak_rss_mib()));
     if (!options.quiet)
         for (const std::string& note : renderer->notes()) std::fprintf(stderr, "note: %s\n", note.c_str());

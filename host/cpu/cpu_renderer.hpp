@@ -1,4 +1,6 @@
 #pragma once
+#include <vector>
+
 #include "accel/bvh.hpp"
 #include "render/renderer.hpp"
 
@@ -16,6 +18,10 @@ public:
     std::size_t bvh_builds() const { return bvh_cache_.builds(); }  // trees built so far (for tests)
 
 private:
+    // The full N x N grid of the pixels where `selected` is nonzero (all when it is empty); the
+    // others are left zero.
+    FloatImage render_grid(const Scene& scene, const std::vector<char>& selected, const ProgressFn& progress);
+
     unsigned threads_;
     Acceleration acceleration_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
