@@ -51,7 +51,7 @@ void add_render_options(CLI::App& cmd, RenderOptions& o) {
         ->check(CLI::Range(1, limits::kMaxSamples));
     cmd.add_option("--aa-threshold", o.aa_threshold,
                    "T: adaptive anti-aliasing as POV-Ray's +AM1 +A<T>: one ray per pixel, the full N x N grid where a "
-                   "pixel differs from a neighbour by more than T (|dr|+|dg|+|db|, 0..3; POV-Ray's default 0.3)")
+                   "pixel differs from a neighbour by more than T (|dr|+|dg|+|db| of the sRGB colours, 0..3; POV-Ray's default 0.3)")
         ->check(CLI::Validator(check_aa_threshold, "T in [0, 3]"));
     cmd.add_option("--max-depth", o.max_depth, "Levels of reflection and refraction (default 5)")->check(CLI::Range(0, limits::kMaxDepth));
     cmd.add_option("--backend", o.backend, "gpu (Vulkan compute, default) or cpu (reference renderer)")

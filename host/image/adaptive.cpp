@@ -10,7 +10,7 @@ namespace lancer {
 
 double color_difference(const glm::vec4& a, const glm::vec4& b) {
     double d = 0.0;
-    for (int c = 0; c < 3; ++c) d += std::abs(std::clamp(double(a[c]), 0.0, 1.0) - std::clamp(double(b[c]), 0.0, 1.0));
+    for (int c = 0; c < 3; ++c) d += std::abs(int(encode_srgb8(a[c])) - int(encode_srgb8(b[c]))) / 255.0;
     return d;
 }
 

@@ -8,8 +8,9 @@
 
 namespace lancer {
 
-// POV-Ray's colour difference: |r1 - r2| + |g1 - g2| + |b1 - b2|, each channel clamped to
-// 0..1 first (so 0..3), as its anti-aliasing threshold measures it.
+// POV-Ray's colour difference, |r1 - r2| + |g1 - g2| + |b1 - b2| (0..3), over the colours as
+// the PNG holds them (sRGB-encoded, 0..1), not the linear ones: in linear terms an edge in the
+// dark (a checker line in shadow) differs by a few hundredths and would never be refined.
 double color_difference(const glm::vec4& a, const glm::vec4& b);
 
 // The pixels (y * width + x, ascending) of `one_ray` that differ from one of their four
