@@ -27,8 +27,7 @@ struct RenderSettings {
     int samples = 3;    // an N x N grid of rays per pixel (with aa_threshold: the most a pixel gets)
     // Adaptive anti-aliasing (POV-Ray's +AM1): one ray per pixel, then the full N x N grid for
     // the pixels whose colour differs from a neighbour's by more than this (|dr| + |dg| + |db|,
-    // sRGB-encoded colours in 0..1: image/adaptive.hpp; 0 refines every pixel). Unset: every
-    // pixel gets the full grid.
+    // colours in 0..1; 0 refines every pixel). Unset: every pixel gets the full grid.
     std::optional<double> aa_threshold;
     int max_depth = 5;  // levels of reflection and refraction after the camera ray
     dvec3 background{0.0, 0.0, 0.0};
