@@ -36,8 +36,11 @@ run() {  # executable scene png: prints "render user"
   if grep -q '^\[animation\]' "$2"; then args+=(--frames 0 -o "${3%.png}_%d.png"); else args+=(-o "$3"); fi
   /usr/bin/time -f "%U" -o "$out/time" "$1" render "${args[@]}" 2>"$out/log" >/dev/null
   [ -f "$3" ] || mv "${3%.png}_0.png" "$3"
-  # The timing line (notes about re-rendered bands may follow it).
-  echo "$(grep 'Mrays/s' "$out/log" | tail -n 1 | sed -E 's/.*: ([0-9.]+) s, .*/\1/') $(tail -n 1 "$out/time")"
+  # The timing line (notes about re-rendered bands may follow it); an animation's frame line.
+  local render
+  render=$(grep -E 'frame 0 \(1/1\), [0-9.]+ s' "$out/log" | sed -E 's/.*, ([0-9.]+) s.*/\1/' || true)
+  [ -n "$render" ] || render=$(grep 'Mrays/s' "$out/log" | tail -n 1 | sed -E 's/.*: ([0-9.]+) s, .*/\1/')
+  echo "$render $(tail -n 1 "$out/time")"
 }
 
 echo "| scene ($size) | before render s | after render s | before user s | after user s | after/before (user) | same PNG |"

@@ -236,8 +236,13 @@ LANCER_CONST GRID_SCATTER = 5;
 // A pass that does not start at sample 0 continues the sums the output buffer holds, and only
 // the pass that ends at sample N * N divides by N * N: passes add the same floats in the same
 // order as one full render, so progressive refinement ends on exactly that image.
-#define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS) \
-    SCALARS(uint, y0, uint, rows, uint, sample_first, uint, sample_count)
+// With refine_count > 0 the band is a compact list of pixels instead (adaptive anti-aliasing):
+// entry i = y * width + x of the `rows` rows covers the pixel refined_pixel_at(i), for
+// i < refine_count, and writes pixels[i]; y0 is unused. Every lane of the band but the last
+// row's tail has a pixel to trace.
+#define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS)                      \
+    SCALARS(uint, y0, uint, rows, uint, sample_first, uint, sample_count) \
+    SCALARS(uint, refine_count, uint, reserved0, uint, reserved1, uint, reserved2)
 
 // The structs themselves, and their size in rows (Name_ROWS), from the lists above.
 #define LANCER_MEMBER_VEC4(name) vec4 name;
@@ -313,21 +318,22 @@ LANCER_CONST RESOURCE_INT = 4;
     X(FRAME, 0, RESOURCE_UNIFORM, FrameParams, frame, frame, "frame parameters")     \
     LANCER_SCENE_ARRAYS(X)                                                           \
     X(OUTPUT, 15, RESOURCE_OUTPUT, vec4, pixels, pixels, "output rows") /* one band of the image */  \
+    X(REFINE, 16, RESOURCE_UINT, uint, refine, refined_pixel_at, "pixels to refine") /* see BandParams */ \
     LANCER_PHOTON_BUFFERS(X)
 
 // Photon mapping's working buffers, written by its compute passes (sizes: gpu/photon_pass.cpp).
 #define LANCER_PHOTON_BUFFERS(X)                                                                     \
-    X(PHOTON_PARAMS, 16, RESOURCE_UNIFORM, PhotonParams, photon_params, photon_params, "photon pass parameters") \
-    X(PHOTONS, 17, RESOURCE_OUTPUT, Photon, photons, photons, "photons")                             \
-    X(PHOTONS_SORTED, 18, RESOURCE_OUTPUT, Photon, photons_sorted, photons_sorted, "photons by grid bucket") \
-    X(PHOTON_COUNTER, 19, RESOURCE_OUTPUT, uint, photon_counter, photon_counter, "photon counter")   \
-    X(CELL_COUNT, 20, RESOURCE_OUTPUT, uint, cell_count, cell_count, "photons per grid bucket")     \
-    X(CELL_START, 21, RESOURCE_OUTPUT, uint, cell_start, cell_start, "grid bucket starts")          \
-    X(BLOCK_SUMS, 22, RESOURCE_OUTPUT, uint, block_sums, block_sums, "grid scan block sums")         \
+    X(PHOTON_PARAMS, 17, RESOURCE_UNIFORM, PhotonParams, photon_params, photon_params, "photon pass parameters") \
+    X(PHOTONS, 18, RESOURCE_OUTPUT, Photon, photons, photons, "photons")                             \
+    X(PHOTONS_SORTED, 19, RESOURCE_OUTPUT, Photon, photons_sorted, photons_sorted, "photons by grid bucket") \
+    X(PHOTON_COUNTER, 20, RESOURCE_OUTPUT, uint, photon_counter, photon_counter, "photon counter")   \
+    X(CELL_COUNT, 21, RESOURCE_OUTPUT, uint, cell_count, cell_count, "photons per grid bucket")     \
+    X(CELL_START, 22, RESOURCE_OUTPUT, uint, cell_start, cell_start, "grid bucket starts")          \
+    X(BLOCK_SUMS, 23, RESOURCE_OUTPUT, uint, block_sums, block_sums, "grid scan block sums")         \
     /* the sorted photons and bucket starts again, as texel buffers for the tracer's gather (llvmpipe */ \
     /* reads storage buffers lane by lane): copied from the two above once a pass is sorted */            \
-    X(GATHER_PHOTONS, 23, RESOURCE_ROWS, Photon, gather_photons, gather_photon_at, "photons to gather")   \
-    X(GATHER_STARTS, 24, RESOURCE_UINT, uint, gather_starts, gather_start_at, "grid bucket starts to gather")
+    X(GATHER_PHOTONS, 24, RESOURCE_ROWS, Photon, gather_photons, gather_photon_at, "photons to gather")   \
+    X(GATHER_STARTS, 25, RESOURCE_UINT, uint, gather_starts, gather_start_at, "grid bucket starts to gather")
 
 #define LANCER_BINDING_CONSTANT(NAME, slot, kind, Element, member, reader, what) LANCER_CONST BINDING_##NAME = slot;
 LANCER_RESOURCES(LANCER_BINDING_CONSTANT)

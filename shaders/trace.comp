@@ -227,9 +227,16 @@ bool loop_limit_reached() {
 }
 
 void main() {
+    if (gl_GlobalInvocationID.x >= frame.width || gl_GlobalInvocationID.y >= band.rows) return;
+    uint out_index = gl_GlobalInvocationID.y * frame.width + gl_GlobalInvocationID.x;
     uvec2 pixel = uvec2(gl_GlobalInvocationID.x, band.y0 + gl_GlobalInvocationID.y);
-    if (pixel.x >= frame.width || gl_GlobalInvocationID.y >= band.rows || pixel.y >= frame.height) return;
-    uint out_index = gl_GlobalInvocationID.y * frame.width + pixel.x;
+    if (band.refine_count > 0u) {  // a compact list of pixels (see BandParams)
+        if (out_index >= band.refine_count) return;
+        uint p = refined_pixel_at(out_index);
+        pixel = uvec2(p % frame.width, p / frame.width);
+    } else if (pixel.y >= frame.height) {
+        return;
+    }
     if (OUTPUT_HITS) {
         vec4 hit = first_hit(vec2(pixel) + 0.5);
         pixels[out_index] = CHECK_LOOP_LIMIT && loop_limit_reached() ? vec4(-1.0, 0.0, 0.0, -2.0) : hit;

@@ -39,6 +39,14 @@ std::optional<std::pair<int, int>> parse_range(const std::string& text) {
     return std::nullopt;
 }
 
+// CLI::Range lets NaN through (every comparison with it is false).
+std::string check_aa_threshold(std::string& text) {
+    double v = 0.0;
+    if (!CLI::detail::lexical_cast(text, v)) return "'" + text + "' is not a number";
+    if (!(v >= 0.0 && v <= 3.0)) return "must be in [0, 3], not " + text;
+    return "";
+}
+
 }  // namespace
 
 void add_render_options(CLI::App& cmd, RenderOptions& o) {
@@ -53,6 +61,10 @@ void add_render_options(CLI::App& cmd, RenderOptions& o) {
         ->check(CLI::Range(1, limits::kMaxImageSide));
     cmd.add_option("--samples", o.samples, "N: an N x N grid of rays per pixel (default 3 = 9 rays)")
         ->check(CLI::Range(1, limits::kMaxSamples));
+    cmd.add_option("--aa-threshold", o.aa_threshold,
+                   "T: adaptive anti-aliasing as POV-Ray's +AM1 +A<T>: one ray per pixel, the full N x N grid where a "
+                   "pixel differs from a neighbour by more than T (|dr|+|dg|+|db| of the sRGB colours, 0..3; POV-Ray's default 0.3)")
+        ->check(CLI::Validator(check_aa_threshold, "T in [0, 3]"));
     cmd.add_option("--max-depth", o.max_depth, "Levels of reflection and refraction (default 5)")->check(CLI::Range(0, limits::kMaxDepth));
     cmd.add_option("--exposure", o.exposure, "Stops: the PNG shows the image times 2^EV (overrides [render] exposure)")
         ->check(CLI::Range(-64.0, 64.0));
@@ -101,6 +113,10 @@ Scene load_scene_with_overrides(const RenderOptions& o) {
         scene.photons->pass_count = range->second;
     }
     if (scene.photons) check_photon_lights(scene);  // --photons on a scene whose lights have no power
+    if (o.aa_threshold) r.aa_threshold = *o.aa_threshold;
+    if (scene.photons && r.aa_threshold)
+        throw UserError("adaptive anti-aliasing (--aa-threshold, [render] aa_threshold) does not combine with photon "
+                        "mapping, which traces one camera ray per pixel per pass");
     if (static_cast<long long>(r.width) * r.height > limits::kMaxImagePixels)
         throw UserError(fmt::format("{}x{} exceeds the limit of {} pixels", r.width, r.height, limits::kMaxImagePixels));
     return scene;
@@ -159,6 +175,14 @@ long peak_rss_mib() {
     rusage usage{};
     ::getrusage(RUSAGE_SELF, &usage);
     return usage.ru_maxrss / 1024;  // KiB on Linux
+}
+
+std::string camera_rays_summary(int samples, long long pixels, long long refined) {
+    const int grid = samples * samples;
+    if (refined < 0) return fmt::format("{} rays/pixel", grid);
+    const double share = pixels > 0 ? double(refined) / double(pixels) : 0.0;
+    return fmt::format("{:.2f} rays/pixel on average ({:.1f}% of pixels refined to {})", 1.0 + share * grid,
+                       100.0 * share, grid);
 }
 
 }  // namespace lancer

@@ -21,6 +21,7 @@ struct RenderOptions {
     // Photon mapping: photons per pass (switches it on), passes, and a range of them (a farm's part).
     std::optional<int> photons, passes;
     std::string pass_range;
+    std::optional<double> aa_threshold;
     std::string backend = "gpu";
     std::string device;
     std::string shader_dir;  // compile the tracer from these sources at run time (development)
@@ -45,5 +46,10 @@ void check_output_writable(const std::string& path);
 std::unique_ptr<Renderer> make_renderer(const RenderOptions& o);
 
 long peak_rss_mib();
+
+// The summary line's camera rays: "9 rays/pixel", or for adaptive anti-aliasing (refined >= 0:
+// how many of the `pixels` got the full grid) "1.84 rays/pixel on average (10.5% of pixels
+// refined to 9)": one ray per pixel, plus N x N for each refined one.
+std::string camera_rays_summary(int samples, long long pixels, long long refined);
 
 }  // namespace lancer

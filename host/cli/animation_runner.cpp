@@ -1,5 +1,6 @@
 #include "cli/animation_runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -132,6 +133,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
         std::vector<double> times;
         std::vector<int> written;
         double rays = 0.0;
+        long long pixels = 0, refined = -1;  // refined: -1 unless adaptive (camera_rays_summary)
         // Frames are written whole (write_png is atomic) or not at all: an interrupt stops the
         // frame in progress, and the frames before it stay as they are, to be resumed.
         auto stop = [&](int k, const std::string& path) {
@@ -162,14 +164,17 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
             written.push_back(k);
             times.push_back(seconds_since(frame_start));
             rays += image.total_rays();
+            pixels += static_cast<long long>(image.pixels.size());
+            if (image.refined_pixels >= 0) refined = std::max(0LL, refined) + image.refined_pixels;
             progress.end(times.back());
         }
         double total = std::accumulate(times.begin(), times.end(), 0.0);
         double later = times.size() > 1 ? (total - times.front()) / double(times.size() - 1) : times.front();
         progress.message(fmt::format(
-            "{}: rendered {} frame(s): {}, {}x{}, {} rays/pixel, {}: start-up {:.3f} s, first frame {:.3f} s, "
+            "{}: rendered {} frame(s): {}, {}x{}, {}, {}: start-up {:.3f} s, first frame {:.3f} s, "
             "then {:.3f} s/frame, {:.2f} Mrays/s, peak RSS {} MiB",
-            pattern->text(), todo.size(), format_frame_list(todo), r.width, r.height, r.samples * r.samples,
+            pattern->text(), todo.size(), format_frame_list(todo), r.width, r.height,
+            camera_rays_summary(r.samples, pixels, refined),
             renderer->description(), startup, times.front(), later, rays / total / 1e6, peak_rss_mib()));
         renderer.reset();  // tear Vulkan down before counting validation messages
         if (int code = gpu::exit_code_after_validation(0)) return code;

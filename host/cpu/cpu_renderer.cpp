@@ -15,6 +15,7 @@
 #include "cpu/lights.hpp"
 #include "cpu/photon_tracer.hpp"
 #include "cpu/tracer.hpp"
+#include "image/adaptive.hpp"
 #include "scene/camera.hpp"
 
 namespace lancer {
@@ -30,6 +31,28 @@ std::string CpuRenderer::description() const {
 
 FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     if (scene.photons) return render_photons(scene, progress);
+    if (!scene.render.aa_threshold) return render_grid(scene, {}, progress);
+    // Adaptive: one ray per pixel (exactly a one-sample render), then the full grid of the
+    // pixels that differ from a neighbour (exactly those pixels of a full render).
+    Scene one_ray = scene;
+    one_ray.render.samples = 1;
+    const double first_share = 0.1;
+    FloatImage image = render_grid(one_ray, {}, [&](double f) { return !progress || progress(f * first_share); });
+    const std::vector<std::uint32_t> pixels = pixels_to_refine(image, *scene.render.aa_threshold);
+    std::vector<char> selected(image.pixels.size(), 0);
+    for (std::uint32_t p : pixels) selected[p] = 1;
+    FloatImage grid = render_grid(scene, selected, [&](double f) {
+        return !progress || progress(first_share + f * (1.0 - first_share));
+    });
+    std::vector<glm::vec4> refined;
+    refined.reserve(pixels.size());
+    for (std::uint32_t p : pixels) refined.push_back(grid.pixels[p]);
+    merge_refined(image, pixels, refined);
+    image.refined_pixels = static_cast<long long>(pixels.size());
+    return image;
+}
+
+FloatImage CpuRenderer::render_grid(const Scene& scene, const std::vector<char>& selected, const ProgressFn& progress) {
     const RenderSettings& rs = scene.render;
     const cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
     const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
@@ -44,6 +67,7 @@ FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     auto worker = [&] {
         for (int y; (y = next_row.fetch_add(1)) < rs.height && !cancelled;) {
             for (int x = 0; x < rs.width; ++x) {
+                if (!selected.empty() && !selected[std::size_t(y) * rs.width + x]) continue;
                 dvec3 sum(0.0);
                 double rays = 0.0;
                 for (int j = 0; j < n; ++j) {

@@ -1,4 +1,6 @@
 #pragma once
+#include <vector>
+
 #include "accel/bvh.hpp"
 #include "render/renderer.hpp"
 
@@ -19,6 +21,9 @@ private:
     // Photon mapping: per pass, a photon map and one camera sample per pixel; the image is the
     // mean of the passes (docs/scene-format.md, "Photon mapping").
     FloatImage render_photons(const Scene& scene, const ProgressFn& progress);
+    // The full N x N grid of the pixels where `selected` is nonzero (all when it is empty); the
+    // others are left zero.
+    FloatImage render_grid(const Scene& scene, const std::vector<char>& selected, const ProgressFn& progress);
 
     unsigned threads_;
     Acceleration acceleration_;

@@ -13,6 +13,7 @@
 #include "gpu/scene_packing.hpp"
 #include "gpu/surface_codegen.hpp"
 #include "gpu/vk_check.hpp"
+#include "image/adaptive.hpp"
 
 namespace lancer {
 namespace {
@@ -157,7 +158,9 @@ void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_p
             vkCmdPipelineBarrier(command_buffer_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &accumulate, 0, nullptr, 0, nullptr);
         }
-        gpu::BandParams pass{band.y0, band.rows, first, std::min(per_pass, end - first)};
+        gpu::BandParams pass = band;
+        pass.sample_first = first;
+        pass.sample_count = std::min(per_pass, end - first);
         vkCmdPushConstants(command_buffer_, layout_->pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pass),
                            &pass);
         vkCmdDispatch(command_buffer_, (width + gpu::WORKGROUP_X - 1) / gpu::WORKGROUP_X,
@@ -194,7 +197,25 @@ FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
         return image;
     }
     auto all = static_cast<std::uint32_t>(scene.render.samples * scene.render.samples);
-    render_with(scene, false, {0, all}, image, progress);
+    if (!scene.render.aa_threshold) {
+        render_with(scene, false, {0, all}, image, progress);
+        return image;
+    }
+    // Adaptive: one ray per pixel (exactly a one-sample render), then the full grid of the
+    // pixels that differ from a neighbour (exactly those pixels of a full render), dispatched
+    // over the compact list of them. The list is made on the host: the one-ray picture comes
+    // back to the host anyway (band by band), and choosing from it costs a few comparisons
+    // per pixel, nothing beside tracing; the choice is then one function for both backends.
+    Scene one_ray = scene;
+    one_ray.render.samples = 1;
+    const double first_share = 0.1;
+    render_with(one_ray, false, {0, 1}, image, [&](double f) { return !progress || progress(f * first_share); });
+    const std::vector<std::uint32_t> pixels = pixels_to_refine(image, *scene.render.aa_threshold);
+    const std::vector<glm::vec4> refined = render_list(scene, pixels, [&](double f) {
+        return !progress || progress(first_share + f * (1.0 - first_share));
+    });
+    merge_refined(image, pixels, refined);
+    image.refined_pixels = static_cast<long long>(pixels.size());
     return image;
 }
 
@@ -236,23 +257,19 @@ void GpuRenderer::render_samples(const Scene& scene, std::uint32_t first, std::u
     render_with(scene, false, {first, count}, sums, progress);
 }
 
-void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange samples, FloatImage& image,
-                              const ProgressFn& progress, int photon_pass) {
-    const RenderSettings& rs = scene.render;
-    const auto width = static_cast<std::uint32_t>(rs.width);
-    const auto height = static_cast<std::uint32_t>(rs.height);
-    const std::size_t row_bytes = std::size_t(width) * sizeof(gpu::vec4);
-    const bool continues = samples.first > 0;
-    if (continues && (image.width != rs.width || image.height != rs.height))
-        throw std::logic_error("render_samples: the sums so far are not of the scene's size");
-
+std::size_t GpuRenderer::band_rows(const RenderSettings& rs, std::uint32_t samples_per_dispatch) const {
+    const std::size_t row_bytes = std::size_t(rs.width) * sizeof(gpu::vec4);
     std::size_t max_rows = std::max<std::size_t>(1, context_->limits().maxStorageBufferRange / row_bytes);
     std::size_t band_pixels = kBandPixels;
     if (max_dispatch_samples_)
-        band_pixels = std::min(band_pixels, max_dispatch_samples_ / std::max<std::uint32_t>(1, samples.count));
-    std::size_t rows = std::clamp<std::size_t>(band_pixels / width, gpu::WORKGROUP_Y, height);
-    rows = std::min(rows, max_rows);
+        band_pixels = std::min(band_pixels, max_dispatch_samples_ / std::max<std::uint32_t>(1, samples_per_dispatch));
+    std::size_t rows = std::clamp<std::size_t>(band_pixels / std::size_t(rs.width), gpu::WORKGROUP_Y, std::size_t(rs.height));
+    return std::min(rows, max_rows);
+}
 
+gpu::ShaderFeatures GpuRenderer::prepare_band_output(const Scene& scene, bool output_hits, std::size_t rows,
+                                                     const ProgressFn& progress, int photon_pass) {
+    const std::size_t row_bytes = std::size_t(scene.render.width) * sizeof(gpu::vec4);
     gpu::ShaderFiles generated;
     gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, generated);
     features.output_hits = output_hits;
@@ -263,36 +280,78 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
         photons_->use_programs(photon_spirv_, gpu::embedded_spirv(gpu::kGridShader));
         photons_->run(scene, photon_pass, features, emitters_, resources_, progress, 0.0);
     }
-    const gpu::Buffer& output = resources_.output(rows * row_bytes);
+    resources_.output(rows * row_bytes);
+    return features;
+}
 
+void GpuRenderer::dispatch_checked(const gpu::BandParams& params, std::uint32_t width, std::size_t entries,
+                                   const glm::vec4* sums_before, bool check_loop_limit, double done,
+                                   const ProgressFn& progress) {
+    const gpu::Buffer& output = resources_.output(entries * sizeof(gpu::vec4));
+    const auto* band = static_cast<const gpu::vec4*>(output.data());
+    auto cut_short = [&] {
+        return check_loop_limit && std::any_of(band, band + entries, [](const gpu::vec4& p) { return p.a < 0.0f; });
+    };
+    if (sums_before) std::memcpy(output.data(), sums_before, entries * sizeof(gpu::vec4));
+    // All of the range's samples in one invocation is fastest (lavapipe: ~1.5x one per
+    // invocation); where the driver's loop limit cut that short, one sample per pass.
+    dispatch_band(params, params.sample_count, width, done, progress);
+    if (params.sample_count > 1 && cut_short()) {
+        ++bands_rerendered_;
+        if (sums_before) std::memcpy(output.data(), sums_before, entries * sizeof(gpu::vec4));  // the sums before this range
+        dispatch_band(params, 1, width, done, progress);
+    }
+    if (cut_short())
+        throw UserError(fmt::format(
+            "a sample of this scene needs more loop iterations than the {} driver allows in one shader "
+            "invocation (65535); render with --backend cpu, or lower max_depth or the number of lights",
+            context_->info().name));
+}
+
+void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange samples, FloatImage& image,
+                              const ProgressFn& progress, int photon_pass) {
+    const RenderSettings& rs = scene.render;
+    const auto width = static_cast<std::uint32_t>(rs.width);
+    const auto height = static_cast<std::uint32_t>(rs.height);
+    const bool continues = samples.first > 0;
+    if (continues && (image.width != rs.width || image.height != rs.height))
+        throw std::logic_error("render_samples: the sums so far are not of the scene's size");
+
+    const std::size_t rows = band_rows(rs, samples.count);
+    const gpu::ShaderFeatures features = prepare_band_output(scene, output_hits, rows, progress, photon_pass);
     if (!continues) image = FloatImage(rs.width, rs.height);
     for (std::uint32_t y0 = 0; y0 < height; y0 += static_cast<std::uint32_t>(rows)) {
-        auto band_rows = static_cast<std::uint32_t>(std::min<std::size_t>(rows, height - y0));
+        auto rows_here = static_cast<std::uint32_t>(std::min<std::size_t>(rows, height - y0));
         glm::vec4* band_start = &image.pixels[std::size_t(y0) * width];
-        const std::size_t band_bytes = band_rows * row_bytes;
-        const auto* band = static_cast<const gpu::vec4*>(output.data());
-        auto cut_short = [&] {
-            return features.check_loop_limit && !output_hits &&
-                   std::any_of(band, band + std::size_t(band_rows) * width, [](const gpu::vec4& p) { return p.a < 0.0f; });
-        };
-        const gpu::BandParams params{y0, band_rows, samples.first, samples.count};
-        if (continues) std::memcpy(output.data(), band_start, band_bytes);
-        // All of the range's samples in one invocation is fastest (lavapipe: ~1.5x one per
-        // invocation); where the driver's loop limit cut that short, one sample per pass.
-        dispatch_band(params, samples.count, width, double(y0) / height, progress);
-        if (samples.count > 1 && cut_short()) {
-            ++bands_rerendered_;
-            if (continues) std::memcpy(output.data(), band_start, band_bytes);  // the sums before this range
-            dispatch_band(params, 1, width, double(y0) / height, progress);
-        }
-        if (cut_short())
-            throw UserError(fmt::format(
-                "a sample of this scene needs more loop iterations than the {} driver allows in one shader "
-                "invocation (65535); render with --backend cpu, or lower max_depth or the number of lights",
-                context_->info().name));
-        std::memcpy(band_start, output.data(), band_bytes);
-        if (progress && !progress(double(y0 + band_rows) / height)) throw RenderCancelled();
+        const std::size_t entries = std::size_t(rows_here) * width;
+        const gpu::BandParams params{y0, rows_here, samples.first, samples.count, 0, 0, 0, 0};
+        dispatch_checked(params, width, entries, continues ? band_start : nullptr,
+                         features.check_loop_limit && !output_hits, double(y0) / height, progress);
+        std::memcpy(band_start, resources_.output(0).data(), entries * sizeof(gpu::vec4));
+        if (progress && !progress(double(y0 + rows_here) / height)) throw RenderCancelled();
     }
+}
+
+std::vector<glm::vec4> GpuRenderer::render_list(const Scene& scene, const std::vector<std::uint32_t>& pixels,
+                                                const ProgressFn& progress) {
+    const RenderSettings& rs = scene.render;
+    const auto width = static_cast<std::uint32_t>(rs.width);
+    const auto all = static_cast<std::uint32_t>(rs.samples * rs.samples);
+    const std::size_t rows = band_rows(rs, all);
+    const gpu::ShaderFeatures features = prepare_band_output(scene, false, rows, progress);
+    std::vector<glm::vec4> refined(pixels.size());
+    const std::size_t per_band = rows * width;
+    for (std::size_t first = 0; first < pixels.size(); first += per_band) {
+        const std::size_t entries = std::min(per_band, pixels.size() - first);
+        const auto rows_here = static_cast<std::uint32_t>((entries + width - 1) / width);
+        resources_.write_refine_list(pixels.data() + first, entries);
+        const gpu::BandParams params{0, rows_here, 0, all, static_cast<std::uint32_t>(entries), 0, 0, 0};
+        const double done = double(first) / double(pixels.size());
+        dispatch_checked(params, width, entries, nullptr, features.check_loop_limit, done, progress);
+        std::memcpy(&refined[first], resources_.output(0).data(), entries * sizeof(gpu::vec4));
+        if (progress && !progress(double(first + entries) / double(pixels.size()))) throw RenderCancelled();
+    }
+    return refined;
 }
 
 }  // namespace lancer

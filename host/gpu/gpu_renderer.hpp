@@ -80,6 +80,21 @@ private:
     // Photon mapping: passes [first, last) of the scene's render into `sums` (which holds the
     // passes before `first`); the render's last pass leaves the mean of all of them.
     void render_passes(const Scene& scene, int first, int last, FloatImage& sums, const ProgressFn& progress);
+    // The full grid of each pixel in `pixels` (y * width + x), in that order: bands of the
+    // compact list, every lane with a pixel (BandParams::refine_count).
+    std::vector<glm::vec4> render_list(const Scene& scene, const std::vector<std::uint32_t>& pixels,
+                                       const ProgressFn& progress);
+    // Rows per band for dispatches of `samples_per_dispatch` samples per pixel.
+    std::size_t band_rows(const RenderSettings& rs, std::uint32_t samples_per_dispatch) const;
+    // Uploads the scene, selects its pipeline (and runs a photon pass when `photon_pass` >= 0)
+    // and sizes the output for bands of `rows` rows.
+    gpu::ShaderFeatures prepare_band_output(const Scene& scene, bool output_hits, std::size_t rows,
+                                            const ProgressFn& progress, int photon_pass = -1);
+    // Traces one band (`entries` output pixels) into the output buffer, which first gets
+    // `sums_before` when the band continues earlier passes; again one sample per pass where the
+    // driver's loop limit cut it short (lavapipe; see shaders/trace.comp).
+    void dispatch_checked(const gpu::BandParams& params, std::uint32_t width, std::size_t entries,
+                          const glm::vec4* sums_before, bool check_loop_limit, double done, const ProgressFn& progress);
     // Renders band.sample_count samples from band.sample_first into output_, `per_pass` of them
     // per invocation (one dispatch per pass).
     void dispatch_band(const gpu::BandParams& band, std::uint32_t per_pass, std::uint32_t width, double done,

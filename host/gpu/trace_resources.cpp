@@ -82,6 +82,11 @@ const Buffer& TraceResources::output(std::size_t bytes) {
     return buffers_[BINDING_OUTPUT];
 }
 
+void TraceResources::write_refine_list(const uint* pixels, std::size_t count) {
+    reserve(BINDING_REFINE, count * sizeof(uint));
+    if (count) buffers_[BINDING_REFINE].write(pixels, count * sizeof(uint));
+}
+
 VkDescriptorSet TraceResources::descriptor_set() {
     if (!descriptors_dirty_) return set_;
     std::array<VkDescriptorBufferInfo, kResourceCount> infos{};

@@ -35,6 +35,8 @@ public:
 
     // The output band: at least `bytes`, mapped for reading back.
     const Buffer& output(std::size_t bytes);
+    // The compact list of pixels a refining band traces (BandParams::refine_count).
+    void write_refine_list(const uint* pixels, std::size_t count);
 
     // A buffer the passes themselves fill (photon mapping's, LANCER_PHOTON_BUFFERS): at least
     // `bytes`, mapped. Growing it keeps nothing of what it held.

@@ -31,6 +31,8 @@ void read_render(TableReader& t, RenderSettings& r) {
     if (static_cast<long long>(r.width) * r.height > limits::kMaxImagePixels)
         t.fail("height", "width x height exceeds the limit of " + std::to_string(limits::kMaxImagePixels) + " pixels");
     r.samples = check_int_range(t, "samples", t.integer("samples", r.samples), 1, limits::kMaxSamples);
+    if (t.has("aa_threshold"))
+        r.aa_threshold = check_range(t, "aa_threshold", t.number("aa_threshold", 0.0), 0.0, 3.0);
     r.max_depth = check_int_range(t, "max_depth", t.integer("max_depth", r.max_depth), 0, limits::kMaxDepth);
     r.background = check_color(t, "background", t.vec3("background", r.background));
     r.tone.exposure = check_range(t, "exposure", t.number("exposure", r.tone.exposure), -64.0, 64.0);

@@ -27,7 +27,11 @@ using glm::dvec3;
 struct RenderSettings {
     int width = 640;
     int height = 480;
-    int samples = 3;    // an N x N grid of rays per pixel
+    int samples = 3;    // an N x N grid of rays per pixel (with aa_threshold: the most a pixel gets)
+    // Adaptive anti-aliasing (POV-Ray's +AM1): one ray per pixel, then the full N x N grid for
+    // the pixels whose colour differs from a neighbour's by more than this (|dr| + |dg| + |db|,
+    // colours in 0..1; 0 refines every pixel). Unset: every pixel gets the full grid.
+    std::optional<double> aa_threshold;
     int max_depth = 5;  // levels of reflection and refraction after the camera ray
     dvec3 background{0.0, 0.0, 0.0};
     // How linear radiance becomes the PNG's 8 bits (image/tone.hpp): exposure in stops, tone curve.

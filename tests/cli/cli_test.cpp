@@ -85,6 +85,34 @@ TEST(Cli, SamplesAndMaxDepthOverrideTheRenderTable) {
     EXPECT_NE(line.err.find("4 rays/pixel"), std::string::npos) << line.err;
 }
 
+// --aa-threshold is [render] aa_threshold; the final line reports the camera rays it traced and
+// the share of pixels refined (seed at 48x27: sky, checker edges and silhouettes).
+TEST(Cli, AaThresholdOptionIsTheRenderKeyAndReportsItsRays) {
+    std::string seed = test::read_file(test::source_path("scenes/seed.toml"));
+    const std::string from = "samples = 3";
+    ASSERT_NE(seed.find(from), std::string::npos);
+    seed.replace(seed.find(from), from.size(), "samples = 3\naa_threshold = 0.3");
+    std::string edited = test::output_dir() + "/cli-seed-adaptive.toml";
+    test::write_file(edited, seed);
+    const std::string size = " --width 48 --height 27 -o ";
+    std::string by_file = out_path("aa-by-file"), by_option = out_path("aa-by-option"), full = out_path("aa-full");
+    auto r = test::run_lancer("render " + edited + size + by_file);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto o = test::run_lancer("render " + test::source_path("scenes/seed.toml") + " --aa-threshold 0.3" + size + by_option);
+    ASSERT_EQ(o.exit_code, 0) << o.err;
+    ASSERT_EQ(test::run_lancer("render " + test::source_path("scenes/seed.toml") + size + full + " -q").exit_code, 0);
+    EXPECT_EQ(read_png(by_option).bytes, read_png(by_file).bytes);
+    EXPECT_NE(read_png(by_option).bytes, read_png(full).bytes);
+    EXPECT_NE(o.err.find(" rays/pixel on average ("), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("% of pixels refined to 9)"), std::string::npos) << o.err;
+    // T = 0 refines everything: the full grid's bytes, and 1 + 9 camera rays per pixel.
+    std::string zero = out_path("aa-zero");
+    auto z = test::run_lancer("render " + test::source_path("scenes/seed.toml") + " --aa-threshold 0" + size + zero);
+    ASSERT_EQ(z.exit_code, 0) << z.err;
+    EXPECT_EQ(read_png(zero).bytes, read_png(full).bytes);
+    EXPECT_NE(z.err.find("10.00 rays/pixel on average (100.0% of pixels refined to 9)"), std::string::npos) << z.err;
+}
+
 TEST(Cli, HelpVersionAndDevices) {
     auto help = test::run_lancer("render --help");
     EXPECT_EQ(help.exit_code, 0);
@@ -173,6 +201,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"too_large", "render " + test::source_path("scenes/seed.toml") + " --width 16384 --height 16384 -o OUT", "",
                 "lancer: error: 16384x16384 exceeds the limit of 67108864 pixels"},
         BadCase{"bad_option", "render " + test::source_path("scenes/seed.toml") + " --samples 0 -o OUT", "", "lancer: error: --samples: Value 0 not in range"},
+        BadCase{"aa_threshold_negative", "render " + test::source_path("scenes/seed.toml") + " --aa-threshold -0.1 -o OUT", "",
+                "lancer: error: --aa-threshold: must be in [0, 3], not -0.1"},
+        BadCase{"aa_threshold_nan", "render " + test::source_path("scenes/seed.toml") + " --aa-threshold nan -o OUT", "",
+                "lancer: error: --aa-threshold: "},
         BadCase{"unknown_backend", "render " + test::source_path("scenes/seed.toml") + " --backend gpgpu -o OUT", "", "lancer: error: --backend: gpgpu not in"},
         BadCase{"no_vulkan_device", "render " + test::source_path("scenes/seed.toml") + kSmall + "-o OUT",
                 "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json", "lancer: error: no Vulkan device found"},

@@ -126,7 +126,7 @@ TEST(GpuMemoryBudget, NamesTheBufferTheNeedAndTheLimit) {
         gpu::check_memory_budget(needs, {"small GPU", 1u << 27, 1ull << 30, 3 << 20});
         FAIL() << "accepted";
     } catch (const UserError& e) {
-        EXPECT_EQ(std::string(e.what()).rfind("the scene needs 4 MiB of GPU memory in all, more than small GPU has "
+        EXPECT_EQ(std::string(e.what()).rfind("the scene needs 5 MiB of GPU memory in all, more than small GPU has "
                                               "(3 MiB in its memory heap)", 0),
                   0u)
             << e.what();
@@ -134,21 +134,23 @@ TEST(GpuMemoryBudget, NamesTheBufferTheNeedAndTheLimit) {
 }
 
 // The budget is what the packer made: one entry per scene array of the interface, its size the
-// packed array's, then the output band, then (photon-mapped scenes) photon mapping's three
-// working buffers.
+// packed array's, then the output band and the list of pixels to refine (adaptive anti-aliasing),
+// then (photon-mapped scenes) photon mapping's three working buffers.
 TEST(GpuMemoryBudget, IsThePackedArraysSizes) {
     for (const std::string& path : test::scene_files()) {
         gpu::PackedScene packed = gpu::pack_scene(load_scene(path), {Acceleration::BvhAlways});
         auto needs = gpu::buffer_needs(packed, 64);
         const std::size_t photon_buffers = packed.features.has_photons ? 3 : 0;
-        ASSERT_EQ(needs.size(), gpu::kSceneArrayCount + 1 + photon_buffers) << path;
+        ASSERT_EQ(needs.size(), gpu::kSceneArrayCount + 2 + photon_buffers) << path;
         for (std::size_t a = 0; a < gpu::kSceneArrayCount; ++a) {
             EXPECT_EQ(needs[a].what, gpu::kSceneArrays[a].what);
             EXPECT_EQ(needs[a].bytes, packed.bytes(gpu::SceneArray(a)).size()) << path << ": " << needs[a].what;
         }
-        EXPECT_EQ(needs[gpu::kSceneArrayCount].bytes, 64u) << path;
+        EXPECT_EQ(needs[gpu::kSceneArrayCount].bytes, 64u) << path;  // the output band: 4 pixels
+        EXPECT_EQ(needs[gpu::kSceneArrayCount + 1].what, "pixels to refine");  // at most those 4, one uint each
+        EXPECT_EQ(needs[gpu::kSceneArrayCount + 1].bytes, 16u);
         for (std::size_t b = 0; b < photon_buffers; ++b)
-            EXPECT_GT(needs[gpu::kSceneArrayCount + 1 + b].bytes, 0u) << path << ": " << needs[gpu::kSceneArrayCount + 1 + b].what;
+            EXPECT_GT(needs[gpu::kSceneArrayCount + 2 + b].bytes, 0u) << path << ": " << needs[gpu::kSceneArrayCount + 2 + b].what;
     }
 }
 
