@@ -150,17 +150,15 @@ TEST_P(Adaptive, EveryPixelOnAnEdgeOfSeedIsRefined) {
 }
 
 // At the threshold that finds every edge of seed (above) the picture is the full grid's by the
-// image tests' metric. At POV-Ray's default 0.3 it is not: 46.9 dB, but 0.95% of the pixels of
-// this 96x54 render are off by more than 4/255 (low-contrast edges left at one ray), beyond the
-// metric's 0.1% (tests/support/test_support.hpp). That is measured here too, so a change that
-// moves it is seen.
+// image tests' metric. At POV-Ray's default 0.3 it is not (46.9 dB, but 0.95% of the pixels of
+// this 96x54 render off by more than 4/255, beyond the metric's 0.1%: low-contrast edges left at
+// one ray; README, "Adaptive anti-aliasing"), so only its PSNR is held here.
 TEST_P(Adaptive, EdgeThresholdLooksLikeTheFullGrid) {
     const Rgb8Image full = to_srgb8(test::render_on(GetParam(), seed(3, std::nullopt)));
     const Rgb8Image adaptive = to_srgb8(test::render_on(GetParam(), seed(3, 0.05)));
     test::expect_same_picture(std::string("adaptive_") + test::backend_name(GetParam()), adaptive, full);
     const ImageDiff at_default = compare_images(to_srgb8(test::render_on(GetParam(), seed(3, 0.3))), full, 4);
     EXPECT_GT(at_default.psnr_db, 40.0);
-    EXPECT_GT(at_default.fraction_over, 0.001);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, Adaptive, ::testing::Values(test::Backend::Gpu, test::Backend::Cpu),
