@@ -11,6 +11,7 @@
 #include "gpu/embedded_shaders.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/scene_packing.hpp"
+#include "gpu/submit.hpp"
 #include "gpu/surface_codegen.hpp"
 #include "gpu/vk_check.hpp"
 #include "image/adaptive.hpp"
@@ -139,7 +140,6 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
 
 void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_pass, std::uint32_t width, double done,
                                 const ProgressFn& progress) {
-    VkDevice device = context_->device();
     VK_CHECK(vkResetCommandBuffer(command_buffer_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -174,20 +174,7 @@ void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_p
                          &barrier, 0, nullptr, 0, nullptr);
     VK_CHECK(vkEndCommandBuffer(command_buffer_));
 
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &command_buffer_;
-    VK_CHECK(vkResetFences(device, 1, &fence_));
-    VK_CHECK(vkQueueSubmit(context_->queue(), 1, &submit, fence_));
-    // Wait in short slices so a cancel request (Ctrl-C) is noticed within a second.
-    bool cancel = false;
-    for (;;) {
-        VkResult r = vkWaitForFences(device, 1, &fence_, VK_TRUE, 1'000'000'000ull);
-        if (r == VK_SUCCESS) break;
-        if (r != VK_TIMEOUT) VK_CHECK(r);
-        if (progress && !cancel && !progress(done)) cancel = true;
-    }
-    if (cancel) throw RenderCancelled();
+    gpu::submit_and_wait(*context_, command_buffer_, fence_, progress, done);
 }
 
 FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {

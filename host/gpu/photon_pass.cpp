@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "gpu/scene_packing.hpp"
+#include "gpu/submit.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace lancer::gpu {
@@ -114,7 +115,6 @@ std::uint32_t PhotonPass::submit(const PhotonParams& p, const ShaderFeatures& fe
     const uint zero = 0;
     counter.write(&zero, sizeof(zero));
 
-    VkDevice device = context_.device();
     VK_CHECK(vkResetCommandBuffer(commands_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -136,19 +136,7 @@ std::uint32_t PhotonPass::submit(const PhotonParams& p, const ShaderFeatures& fe
     barrier(commands_, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);  // the counter, read below
     VK_CHECK(vkEndCommandBuffer(commands_));
 
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &commands_;
-    VK_CHECK(vkResetFences(device, 1, &fence_));
-    VK_CHECK(vkQueueSubmit(context_.queue(), 1, &submit, fence_));
-    bool cancel = false;
-    for (;;) {
-        VkResult r = vkWaitForFences(device, 1, &fence_, VK_TRUE, 1'000'000'000ull);
-        if (r == VK_SUCCESS) break;
-        if (r != VK_TIMEOUT) VK_CHECK(r);
-        if (progress && !cancel && !progress(done)) cancel = true;
-    }
-    if (cancel) throw RenderCancelled();
+    submit_and_wait(context_, commands_, fence_, progress, done);
     uint stored = 0;
     std::memcpy(&stored, counter.data(), sizeof(stored));
     if (stored <= p.capacity) {

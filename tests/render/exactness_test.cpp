@@ -11,6 +11,7 @@
 #include "cpu/cpu_renderer.hpp"
 #include "scene/camera.hpp"
 #include "support/test_support.hpp"
+#include "support/twin_stage.hpp"
 #include "surface/bezier_patch.hpp"
 
 namespace lancer {
@@ -251,31 +252,8 @@ void expect_same_picture(const Scene& a, const Scene& b, const std::string& name
     test::expect_same_picture(name, to_srgb8(test::gpu_renderer().render(a, {})), to_srgb8(test::gpu_renderer().render(b, {})));
 }
 
-const char* kTwinStage = R"(
-    [render]
-    width = 120
-    height = 90
-    samples = 2
-    [camera]
-    eye = [1.5, 2.5, -4]
-    look_at = [0, 0, 0]
-    fov = 45
-    [[light]]
-    position = [-4, 6, -5]
-    [material.m]
-    color = [0.8, 0.5, 0.2]
-    specular = 0.6
-    shininess = 30
-    [[object]]
-    type = "plane"
-    point = [0, -1.5, 0]
-    normal = [0, 1, 0]
-    [[object]]
-    material = "m"
-)";
-
 TEST(Twins, ParametricSphereIsTheAnalyticSphere) {
-    Scene parametric = test::scene_from_text(std::string(kTwinStage) + R"toml(
+    Scene parametric = test::scene_from_text(std::string(test::kTwinStage) + R"toml(
         type = "parametric"
         x = "1.2*cos(v)*cos(u)"
         y = "1.2*sin(v)"
@@ -283,12 +261,12 @@ TEST(Twins, ParametricSphereIsTheAnalyticSphere) {
         u = [0, "2*pi"]
         v = ["-pi/2", "pi/2"]
     )toml");
-    Scene analytic = test::scene_from_text(std::string(kTwinStage) + "type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1.2\n");
+    Scene analytic = test::scene_from_text(std::string(test::kTwinStage) + "type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1.2\n");
     expect_same_picture(parametric, analytic, "twin-sphere");
 }
 
 TEST(Twins, ParametricTorusIsTheRationalBezierTorus) {
-    Scene parametric = test::scene_from_text(std::string(kTwinStage) + R"toml(
+    Scene parametric = test::scene_from_text(std::string(test::kTwinStage) + R"toml(
         type = "parametric"
         x = "(1 + 0.35*cos(v)) * cos(u)"
         y = "(1 + 0.35*cos(v)) * sin(u)"

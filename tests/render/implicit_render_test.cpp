@@ -14,32 +14,10 @@
 #include "scene/camera.hpp"
 #include "support/rational_patches.hpp"
 #include "support/test_support.hpp"
+#include "support/twin_stage.hpp"
 
 namespace lancer {
 namespace {
-
-const char* kStage = R"(
-    [render]
-    width = 120
-    height = 90
-    samples = 2
-    [camera]
-    eye = [1.5, 2.5, -4]
-    look_at = [0, 0, 0]
-    fov = 45
-    [[light]]
-    position = [-4, 6, -5]
-    [material.m]
-    color = [0.8, 0.5, 0.2]
-    specular = 0.6
-    shininess = 30
-    [[object]]
-    type = "plane"
-    point = [0, -1.5, 0]
-    normal = [0, 1, 0]
-    [[object]]
-    material = "m"
-)";
 
 void expect_twins(const Scene& a, const Scene& b, const std::string& name) {
     for (test::Backend backend : {test::Backend::Gpu, test::Backend::Cpu}) {
@@ -49,18 +27,18 @@ void expect_twins(const Scene& a, const Scene& b, const std::string& name) {
 }
 
 TEST(ImplicitTwins, SphereIsTheAnalyticSphere) {
-    Scene implicit = test::scene_from_text(std::string(kStage) + R"toml(
+    Scene implicit = test::scene_from_text(std::string(test::kTwinStage) + R"toml(
         type = "implicit"
         function = "x^2 + y^2 + z^2 - 1.44"
         box = { min = [-1.3, -1.3, -1.3], max = [1.3, 1.3, 1.3] }
     )toml");
-    Scene analytic = test::scene_from_text(std::string(kStage) + "type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1.2\n");
+    Scene analytic = test::scene_from_text(std::string(test::kTwinStage) + "type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1.2\n");
     expect_twins(implicit, analytic, "implicit-twin-sphere");
 }
 
 // The exact torus: 16 rational biquadratic Bezier patches (exact for a torus of revolution).
 TEST(ImplicitTwins, TorusIsTheRationalBezierTorus) {
-    Scene implicit = test::scene_from_text(std::string(kStage) + R"toml(
+    Scene implicit = test::scene_from_text(std::string(test::kTwinStage) + R"toml(
         type = "implicit"
         function = "(x^2 + y^2 + z^2 + 1 - 0.35^2)^2 - 4*(x^2 + y^2)"
         box = { min = [-1.4, -1.4, -0.4], max = [1.4, 1.4, 0.4] }
