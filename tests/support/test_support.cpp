@@ -21,8 +21,12 @@ std::string output_dir() {
     return LANCER_TEST_OUTPUT_DIR;
 }
 
+// ctest runs each test in its own process, in parallel: a directory named only by the caller
+// would be emptied by one test while another reads it, so it lives under the running test's name.
 std::string fresh_dir(const std::string& name) {
     std::string dir = output_dir() + "/" + name;
+    if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info())
+        dir = output_dir() + "/" + info->test_suite_name() + "." + info->name() + "/" + name;
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
@@ -52,6 +56,10 @@ FloatImage render_on(Backend backend, const Scene& scene) {
     if (backend == Backend::Gpu) return gpu_renderer().render(scene, {});
     return CpuRenderer().render(scene, {});
 }
+
+std::string small_animation() { return source_path("tests/data/anim/small.toml"); }
+
+void PrintTo(const RejectedCommand& c, std::ostream* os) { *os << c.name; }
 
 const char* backend_name(Backend backend) { return backend == Backend::Gpu ? "gpu" : "cpu"; }
 

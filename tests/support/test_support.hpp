@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "image/diff.hpp"
 #include "scene/scene.hpp"
@@ -12,7 +13,7 @@ namespace lancer::test {
 
 std::string source_path(const std::string& relative);  // under the repository root
 std::string output_dir();                               // build/test-output, created on demand
-std::string fresh_dir(const std::string& name);         // output_dir()/name, emptied or created
+std::string fresh_dir(const std::string& name);         // output_dir()/<running test>/name, emptied or created
 // The names in `dir`, sorted and space-separated: a temporary file left behind shows up here.
 std::string listing(const std::string& dir);
 
@@ -24,8 +25,26 @@ void release_gpu_renderer();
 
 // The two renderers, for tests that check both against the same expected values.
 enum class Backend { Gpu, Cpu };
+// How far a pixel may be from a value computed in double when it is compared on both backends:
+// the GPU works in float.
+inline constexpr float kBackendTolerance = 2e-5f;
+inline constexpr double kDegree = kPi / 180.0;
 FloatImage render_on(Backend backend, const Scene& scene);  // the shared GPU renderer, or a CpuRenderer
 const char* backend_name(Backend backend);                   // "gpu" or "cpu", for test names
+
+// tests/data/anim/small.toml: an animation of 6 frames at 10 fps, 48x27.
+std::string small_animation();
+inline constexpr int kSmallAnimationFrames = 6;
+
+// A command line that must be refused with one clear line: the test's name, its arguments and
+// environment, and the start of the line expected on stderr.
+struct RejectedCommand {
+    std::string name;
+    std::string args;
+    std::string env;
+    std::string message;
+};
+void PrintTo(const RejectedCommand& c, std::ostream* os);
 
 // Loads a scene from text (for tests that build scenes inline).
 Scene scene_from_text(const std::string& toml);
