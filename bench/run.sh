@@ -142,7 +142,7 @@ psnr() {  # a b label: one line of lancer diff's metric
 bench_implicit() {  # scene width height accuracy
   local name=$1 w=$2 h=$3 accuracy=$4
   local toml=scenes/$name.toml poly="" iso
-  if python3 bench/toml_to_pov.py "$toml" | grep -q "^polynomial"; then
+  if python3 bench/toml_to_pov.py "$toml" | grep "^polynomial" >/dev/null; then  # grep -q would break the pipe
     poly=$(check_twin "bench/pov/$name-poly.pov" "$toml")
   fi
   iso=$(check_twin "bench/pov/$name-isosurface.pov" "$toml" --implicit-as isosurface --accuracy "$accuracy")
@@ -165,6 +165,16 @@ bench_implicit() {  # scene width height accuracy
   psnr "$out/$name-lancer-gpu.png" "$exact" "lancer gpu vs $(basename "$exact" .png)"
   psnr "$out/$name-lancer-cpu.png" "$exact" "lancer cpu vs $(basename "$exact" .png)"
   psnr "$out/$name-isosurface-pov.png" "$exact" "POV isosurface vs $(basename "$exact" .png)"
+  psnr "$out/$name-lancer-gpu.png" "$out/$name-lancer-cpu.png" "lancer gpu vs lancer cpu (exact roots)"
+  if [ -n "$poly" ]; then
+    # POV's anti-aliasing counts the pixel centre twice: its polynomial again, at exactly lancer's
+    # 3 x 3 sample positions (bench/pov_supersample.py), so that sampling is not what differs.
+    povray +I"$poly" +O"$out/$name-poly-pov-3x.png" +W$((3 * w)) +H$((3 * h)) -A +FN16 File_Gamma=1.0 +WT2 -D \
+      >/dev/null 2>&1
+    python3 bench/pov_supersample.py 3 "$out/$name-poly-pov-3x.png" "$out/$name-poly-pov-samples.png"
+    psnr "$out/$name-lancer-gpu.png" "$out/$name-poly-pov-samples.png" "lancer gpu vs POV polynomial at lancer's samples"
+    psnr "$out/$name-lancer-cpu.png" "$out/$name-poly-pov-samples.png" "lancer cpu vs POV polynomial at lancer's samples"
+  fi
   build/lancer diff "$out/$name-lancer-gpu.png" "$exact" --side-by-side "$out/$name-side.png" >/dev/null
 }
 

@@ -7,10 +7,14 @@
 //
 // With SPIRV_FILE, the pipeline is built from that module instead of the embedded tracer (to
 // measure what a smaller or pre-optimised module costs the driver).
+// Each phase prints its wall time and the CPU time of the whole process (all threads, the
+// driver's included), which a loaded machine disturbs far less.
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <iterator>
+#include <string>
 #include <vector>
 
 #include "gpu/embedded_shaders.hpp"
@@ -24,7 +28,24 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+double cpu_ms() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
+}
+
+// A phase's start; elapsed() is "wall ms, CPU ms" since then.
+struct Phase {
+    Clock::time_point wall = Clock::now();
+    double cpu = cpu_ms();
+    std::string elapsed() const {
+        char text[64];
+        std::snprintf(text, sizeof text, "%8.1f ms wall %8.1f ms CPU",
+                      std::chrono::duration<double, std::milli>(Clock::now() - wall).count(), cpu_ms() - cpu);
+        return text;
+    }
+};
 
 }  // namespace
 
@@ -34,22 +55,22 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: %s SCENE [SPIRV_FILE]\n", argv[0]);
         return 2;
     }
-    auto t = Clock::now();
+    Phase t;
     Scene scene = load_scene(argv[1]);
     scene.render.width = scene.render.height = scene.render.samples = 1;
-    std::printf("load scene        %8.1f ms\n", ms_since(t));
+    std::printf("load scene        %s\n", t.elapsed().c_str());
 
-    t = Clock::now();
+    t = Phase();
     gpu::Context context(gpu::ContextOptions{});
     gpu::TraceLayout layout(context);
     gpu::TraceResources resources(context, layout.set_layout());
-    std::printf("instance, device  %8.1f ms  (%s)\n", ms_since(t), context.info().name.c_str());
+    std::printf("instance, device  %s  (%s)\n", t.elapsed().c_str(), context.info().name.c_str());
 
-    t = Clock::now();
+    t = Phase();
     gpu::PackedScene packed = gpu::pack_scene(scene);
     resources.upload(packed, gpu::pack_frame(scene, packed));
     const gpu::Buffer& output = resources.output(sizeof(gpu::vec4));
-    std::printf("pack, upload      %8.1f ms\n", ms_since(t));
+    std::printf("pack, upload      %s\n", t.elapsed().c_str());
 
     std::vector<std::uint32_t> spirv = gpu::embedded_trace_spirv();
     if (argc > 2) {
@@ -60,14 +81,14 @@ int main(int argc, char** argv) {
     }
     std::printf("SPIR-V            %8zu words\n", spirv.size());
     gpu::ShaderFeatures features = packed.features;
-    t = Clock::now();
+    t = Phase();
     std::size_t specialized = gpu::specialize_spirv(spirv, features).size();
-    std::printf("specialise        %8.1f ms  (%zu words; done again inside pipeline creation)\n", ms_since(t), specialized);
-    t = Clock::now();
+    std::printf("specialise        %s  (%zu words; done again inside pipeline creation)\n", t.elapsed().c_str(), specialized);
+    t = Phase();
     gpu::ComputePipeline pipeline(context, layout, spirv, features);
-    std::printf("create pipeline   %8.1f ms\n", ms_since(t));
+    std::printf("create pipeline   %s\n", t.elapsed().c_str());
 
-    t = Clock::now();
+    t = Phase();
     VkDevice device = context.device();
     VkCommandBuffer commands;
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
@@ -89,7 +110,7 @@ int main(int argc, char** argv) {
     submit.pCommandBuffers = &commands;
     VK_CHECK(vkQueueSubmit(context.queue(), 1, &submit, VK_NULL_HANDLE));
     VK_CHECK(vkQueueWaitIdle(context.queue()));
-    std::printf("first dispatch    %8.1f ms  (pixel %.3f %.3f %.3f)\n", ms_since(t),
+    std::printf("first dispatch    %s  (pixel %.3f %.3f %.3f)\n", t.elapsed().c_str(),
                 static_cast<const gpu::vec4*>(output.data())->r, static_cast<const gpu::vec4*>(output.data())->g,
                 static_cast<const gpu::vec4*>(output.data())->b);
     vkFreeCommandBuffers(device, context.command_pool(), 1, &commands);

@@ -346,6 +346,9 @@ def max_gradient(node, params, lo, hi, n=48):
     return 1.1 * best
 
 
+POLY_SCALE = 10.0
+
+
 def implicit(o, implicit_as, accuracy):
     params = o.get("params", {})
     node = parse_function(o["function"])
@@ -353,10 +356,17 @@ def implicit(o, implicit_as, accuracy):
     box = f"box {{ {vec(lo)}, {vec(hi)} }}"
     poly = expand(node, params) if implicit_as == "poly" else None
     if poly is not None:
+        # POV-Ray's polynomial solver works with absolute tolerances that suit objects about ten
+        # units across: at lancer's unit-sized boxes it loses roots near double points (the
+        # Barth sextic's cones showed lit speckles in their shadows, 44.5 dB at one ray per
+        # pixel), and a hundred times larger its small coefficients fall below its zero
+        # threshold. So the twin is the same surface POLY_SCALE times larger, scaled back down.
         degree = max(sum(k) for k in poly)
-        terms = ",\n  ".join("xyz(%d, %d, %d): %.17g" % (k + (v,)) for k, v in sorted(poly.items(), reverse=True))
+        scaled = {k: v * POLY_SCALE ** -sum(k) for k, v in poly.items()}
+        terms = ",\n  ".join("xyz(%d, %d, %d): %.17g" % (k + (v,)) for k, v in sorted(scaled.items(), reverse=True))
+        big = f"box {{ {vec([POLY_SCALE * x for x in lo])}, {vec([POLY_SCALE * x for x in hi])} }}"
         return (f"polynomial {{ {degree},\n  {terms}\n  sturm\n"
-                f"  clipped_by {{ {box} }}\n  bounded_by {{ clipped_by }}\n")
+                f"  clipped_by {{ {big} }}\n  bounded_by {{ clipped_by }}\n  scale {1 / POLY_SCALE:g}\n")
     return (f"isosurface {{\n  function {{ {pov_function(node, params)} }}\n  contained_by {{ {box} }}\n"
             f"  accuracy {accuracy:g} max_gradient {max_gradient(node, params, lo, hi):.6g} open\n")
 

@@ -157,6 +157,7 @@ LANCER_CONST GRID_SCATTER = 5;
     /* optics: refraction and the highlight model */                                                \
     VEC4(transmission) /* rgb = T, the fraction passed per channel (all 0: opaque); w = ior */      \
     VEC4(absorption)   /* rgb = Beer-Lambert coefficient per unit distance inside; w unused */      \
+    VEC4(checker_phase) /* xyz = where the GPU's origin is in the solid checker (gpu/float_anchor.hpp) */ \
     SCALARS(uint, highlight, /* HIGHLIGHT_PHONG or HIGHLIGHT_BLINN */                               \
             float, ms_tint_r, float, ms_tint_g, float, ms_tint_b) /* microfacet metals: the multiple-scattering colour */
 

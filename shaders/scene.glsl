@@ -112,13 +112,29 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out Nearest be
     if (box_entry(node_at(0).lo.xyz, node_at(0).hi.xyz, ray.origin, inv_dir, reach(best)) == INFINITY) {
         return best.prim != NO_PRIMITIVE;
     }
+    // "While-while" traversal (Aila and Laine 2009): interior nodes in one loop, until a leaf;
+    // the leaf's primitives after it. lavapipe runs every path that any lane of a SIMD group
+    // takes, so one loop doing both would pay for a leaf's tests (Bezier clipping, Newton) in
+    // every step where some lane is at a leaf: the teapot took 1.5 times as long.
+    bool visit = true;  // `node` is next; else the next is popped from the stack
     for (;;) {
-        BvhNode n = node_at(node);
-        if (n.count > 0u) {
-            for (uint i = n.first; i < n.first + n.count; ++i) {
-                if (consider(i, ray, t_min, false, best) && any_hit) return true;
+        BvhNode n;
+        for (;;) {
+            if (!visit) {
+                // Pop the next subtree that may still hold something as near as the best hit.
+                bool found = false;
+                while (sp > 0) {
+                    --sp;
+                    if (stack_t[sp] <= reach(best)) {
+                        node = stack[sp];
+                        found = true;
+                        break;
+                    }
+                }
+                if (!found) return best.prim != NO_PRIMITIVE;
             }
-        } else {
+            n = node_at(node);
+            if (n.count > 0u) break;
             uint near_child = n.first;
             uint far_child = n.first + 1u;
             float limit = reach(best);
@@ -128,27 +144,20 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out Nearest be
                 uint c = near_child; near_child = far_child; far_child = c;
                 float f = t_near; t_near = t_far; t_far = f;
             }
-            if (t_near != INFINITY) {
+            visit = t_near != INFINITY;
+            if (visit) {
                 if (t_far != INFINITY) {
                     stack[sp] = far_child;
                     stack_t[sp] = t_far;
                     ++sp;
                 }
                 node = near_child;
-                continue;
             }
         }
-        // Pop the next subtree that may still hold something as near as the best hit.
-        bool found = false;
-        while (sp > 0) {
-            --sp;
-            if (stack_t[sp] <= reach(best)) {
-                node = stack[sp];
-                found = true;
-                break;
-            }
+        for (uint i = n.first; i < n.first + n.count; ++i) {
+            if (consider(i, ray, t_min, false, best) && any_hit) return true;
         }
-        if (!found) break;
+        visit = false;
     }
     return best.prim != NO_PRIMITIVE;
 }

@@ -13,7 +13,9 @@ vec3 material_pigment(Material m, vec3 p) {
         // The 1e-4 bias keeps surfaces lying on integer planes (the floor at y = 0) on one side.
         // The parity by mod, as the CPU reference's fmod: converting a sum beyond int's range
         // (a checker far finer than the scene) to int is undefined.
-        vec3 cell = floor(p / m.checker_size + 1e-4);
+        // p is relative to the GPU's anchor near the camera: checker_phase puts it back in the
+        // checker's period.
+        vec3 cell = floor((p + m.checker_phase.xyz) / m.checker_size + 1e-4);
         bool odd = mod(abs(cell.x + cell.y + cell.z), 2.0) == 1.0;
         return odd ? m.color2.rgb : m.color.rgb;
     }

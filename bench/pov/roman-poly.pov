@@ -15,13 +15,14 @@ polygon { 5, <-6, 0, -6>, <6, 0, -6>, <6, 0, 6>, <-6, 0, 6>, <-6, 0, -6>
 }
 
 polynomial { 4,
-  xyz(2, 2, 0): 1,
-  xyz(2, 0, 2): 1,
-  xyz(1, 1, 1): -1,
-  xyz(0, 2, 2): 1
+  xyz(2, 2, 0): 0.0001,
+  xyz(2, 0, 2): 0.0001,
+  xyz(1, 1, 1): -0.001,
+  xyz(0, 2, 2): 0.0001
   sturm
-  clipped_by { box { <-0.52, -0.52, -0.52>, <0.52, 0.52, 0.52> } }
+  clipped_by { box { <-5.2, -5.2, -5.2>, <5.2, 5.2, 5.2> } }
   bounded_by { clipped_by }
+  scale 0.1
   pigment { rgb <0.95, 0.45, 0.35> }
   finish { ambient 0.1 diffuse 0.65 phong 0.5 phong_size 40 reflection 0 }
   scale 3.2 rotate <-35, 45, 0> translate <0, 1.25, 0>

@@ -13,14 +13,7 @@ struct BoundsOf {
         return b;
     }
     std::optional<Aabb> operator()(const Box& b) const { return Aabb{b.min, b.max}; }
-    std::optional<Aabb> operator()(const ParametricObject& p) const {
-        Aabb b;
-        for (const auto& cell : p.cells) {
-            b.extend(cell.lo);
-            b.extend(cell.hi);
-        }
-        return b;
-    }
+    std::optional<Aabb> operator()(const ParametricObject& p) const { return Aabb{p.bounds_lo, p.bounds_hi}; }
     std::optional<Aabb> operator()(const ImplicitObject& o) const {
         Aabb b;
         surface::implicit_world_bounds(o.surface, b.lo, b.hi);

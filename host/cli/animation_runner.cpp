@@ -24,8 +24,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
 // A frame counts as rendered when its file decodes completely (every scanline, up to the PNG's
 // last chunk) at the requested size. lancer's own writes are atomic, but a frame copied from
 // another machine may have been cut short, and its header alone would still give the size; a

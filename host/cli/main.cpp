@@ -29,7 +29,7 @@ int report(std::exception_ptr error) {
     try {
         std::rethrow_exception(error);
     } catch (const lancer::UserError& e) {
-        std::fprintf(stderr, "%s\n", lancer::format_error(e).c_str());
+        lancer::print_error(e);
         return 2;
     } catch (const lancer::gpu::VulkanError& e) {
         std::fprintf(stderr, "lancer: GPU error: %s\n", lancer::escape_control_characters(e.what()).c_str());

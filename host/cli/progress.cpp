@@ -18,11 +18,11 @@ int terminal_width() {
     return 80;
 }
 
+}  // namespace
+
 double seconds_since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
-
-}  // namespace
 
 ProgressLine::ProgressLine(bool quiet)
     : quiet_(quiet), terminal_(stderr_is_terminal()), start_(std::chrono::steady_clock::now()) {}

@@ -7,6 +7,9 @@
 
 namespace lancer {
 
+// Seconds from t until now, on the clock progress is timed with.
+double seconds_since(std::chrono::steady_clock::time_point t);
+
 class ProgressLine {
 public:
     explicit ProgressLine(bool quiet);

@@ -55,7 +55,7 @@ struct WatchCommand {
                 scene = std::move(loaded);
                 return true;
             } catch (const UserError& e) {
-                std::fprintf(stderr, "%s\n", format_error(e).c_str());
+                print_error(e);
                 scene_files.watch_failure(e);
                 return false;
             } catch (const Cancelled&) {

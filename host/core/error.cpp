@@ -1,10 +1,13 @@
 #include "core/error.hpp"
 
+#include <cstdio>
 #include <sstream>
 
 #include "core/escape.hpp"
 
 namespace lancer {
+
+void print_error(const std::exception& e) { std::fprintf(stderr, "%s\n", format_error(e).c_str()); }
 
 std::string format_error(const std::exception& e) {
     std::ostringstream out;

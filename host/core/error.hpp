@@ -40,5 +40,7 @@ private:
 // The one rendering of an error for humans: "file:line:col: error: what" (or "lancer: error: what"),
 // with control characters in names (the file's, or those in the message) escaped.
 std::string format_error(const std::exception& e);
+// format_error's line on stderr: what every command prints for an error it does not stop on.
+void print_error(const std::exception& e);
 
 }  // namespace lancer

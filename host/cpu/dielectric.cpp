@@ -54,8 +54,8 @@ dvec3 beer_lambert(const dvec3& a, double distance) {
     return left;
 }
 
-dvec3 past_surface(const dvec3& p, const dvec3& n, const dvec3& d) {
-    return p + (ray_offset(p) / std::max(std::abs(glm::dot(d, n)), 0.01)) * d;
+dvec3 past_surface(const dvec3& p, const dvec3& n, const dvec3& d, double offset) {
+    return p + (offset / std::max(std::abs(glm::dot(d, n)), 0.01)) * d;
 }
 
 bool is_thin_sheet(const Shape& shape) { return std::holds_alternative<Rectangle>(shape); }

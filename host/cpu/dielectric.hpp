@@ -11,6 +11,10 @@
 
 namespace lancer::cpu {
 
+// A path passes through at most this many surfaces that do not show (a surface with the same
+// medium on both sides, such as a liquid's wall inside its glass), as the shader's MAX_PASS_THROUGH.
+inline constexpr int kMaxPassThrough = 16;
+
 // The transparent materials (indices into Scene::materials) a ray is inside. Crossing a surface
 // of a transparent material toggles being inside it; the innermost material is the medium the
 // ray travels in (none: air, index of refraction 1).
@@ -47,10 +51,10 @@ dvec3 refract(const dvec3& d, const dvec3& n, double eta, double cos_i, double c
 dvec3 beer_lambert(const dvec3& a, double distance);
 
 // Where a ray going on through a surface at p (unit normal n, either side) in direction d starts:
-// on its own line, ray_offset(p) past the tangent plane like every secondary ray, but at most
+// on its own line, `offset` (ray_offset) past the tangent plane like every secondary ray, but at most
 // 100 ray_offset along the ray for grazing rays. On the line, paths through media keep their
 // true length (Beer-Lambert).
-dvec3 past_surface(const dvec3& p, const dvec3& n, const dvec3& d);
+dvec3 past_surface(const dvec3& p, const dvec3& n, const dvec3& d, double offset);
 
 // Rectangles have no inside: as transparent surfaces they are thin sheets, which reflect and
 // transmit without bending the ray or changing the medium.

@@ -5,14 +5,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.hpp"
 #include "cpu/dielectric.hpp"
 #include "cpu/lights.hpp"
 #include "optics/ggx.hpp"
 
 namespace lancer::cpu {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // An orthonormal basis with n as +z (Duff et al., "Building an orthonormal basis, revisited").
 struct Frame {

@@ -1,16 +1,15 @@
 #include "cpu/pattern.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/constants.hpp"
+
 namespace lancer::cpu {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Perlin's turbulence: the sum over octaves i of omega^i |noise(lambda^i q)|.
 NoiseSample turbulence(const Pattern& pattern, const dvec3& q) {

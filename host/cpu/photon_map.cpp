@@ -4,13 +4,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.hpp"
+
 namespace lancer::cpu {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
-
 KdTree::KdTree(std::vector<Photon> photons) : photons_(std::move(photons)), axis_(photons_.size(), 0) {
     build(0, photons_.size());
 }

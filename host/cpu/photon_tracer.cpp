@@ -7,18 +7,14 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.hpp"
 #include "cpu/appearance.hpp"
 #include "cpu/lights.hpp"
 #include "cpu/microfacet.hpp"
+#include "scene/camera.hpp"
 
 namespace lancer::cpu {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-// As the camera's rays: at most this many surfaces that do not show, per path.
-constexpr int kMaxPassThrough = 16;
-
-double max_of(const dvec3& v) { return std::max({v.r, v.g, v.b}); }
 
 dvec3 uniform_sphere(double u1, double u2) {
     double z = 1.0 - 2.0 * u1;
@@ -145,7 +141,7 @@ private:
             from = p;
             if (clear && !sheet && beyond.innermost() == media.innermost()) {
                 media = beyond;  // a surface that does not show
-                ray = {past_surface(p, n, ray.dir), ray.dir};
+                ray = {past_surface(p, n, ray.dir, ray_offset(p, offset_origin_)), ray.dir};
                 if (++passes > kMaxPassThrough) return;
                 continue;
             }
@@ -208,15 +204,16 @@ private:
             ++bounces;
             if (refracts) {
                 media = beyond;
-                ray.origin = past_surface(p, n, ray.dir);
+                ray.origin = past_surface(p, n, ray.dir, ray_offset(p, offset_origin_));
             } else {
-                ray.origin = p + ray_offset(p) * n;
+                ray.origin = p + ray_offset(p, offset_origin_) * n;
             }
         }
     }
 
     const Tracer& tracer_;
     const Scene& scene_;
+    const dvec3 offset_origin_ = working_origin(scene_.camera);  // what ray offsets scale with
     bool keep_direct_;
     std::vector<Emitter> emitters_;
     double total_ = 0.0;

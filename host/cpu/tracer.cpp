@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "accel/shape_bounds.hpp"
+#include "core/constants.hpp"
 #include "cpu/appearance.hpp"
 #include "cpu/lights.hpp"
 #include "cpu/photon_map.hpp"
@@ -20,15 +21,11 @@ namespace {
 constexpr double kMinWeight = 1.0 / 1024.0;
 // The ray tree's rule, as the shader's: at most this many rays wait while one is followed.
 constexpr std::size_t kPendingSize = 8;
-// A path passes through at most this many surfaces that do not show (same medium both sides).
-constexpr int kMaxPassThrough = 16;
 // On a transparent surface, a light sample that would add less than this to the pixel unshadowed
 // is skipped, shadow ray and all (as the shader): mostly highlights far from their peak.
 constexpr double kMinLight = 1.0 / 65536.0;
 // A shadow ray passes through at most this many transparent surfaces; more block the light.
 constexpr int kMaxShadowCrossings = 16;
-
-constexpr double kPi = 3.14159265358979323846;
 
 dvec3 mirror(const dvec3& d, const dvec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
 
@@ -163,7 +160,7 @@ dvec3 Tracer::transmittance(dvec3 from, dvec3 origin, const dvec3& q, Media medi
         if (std::max({through.r, through.g, through.b}) < kMinWeight) return dvec3(0.0);
         media = beyond;
         from = p;
-        origin = past_surface(p, hit.normal, ray.dir);
+        origin = past_surface(p, hit.normal, ray.dir, ray_offset(p, offset_origin_));
     }
 }
 
@@ -185,7 +182,7 @@ dvec3 Tracer::shade_local(const Material& m, const dvec3& surface_pigment, const
     dvec3 pigment = surface_pigment * (1.0 - m.transmission);
     dvec3 color = m.ambient * pigment * scene_.ambient;
     dvec3 mirrored = mirror(view_dir, shading_n);
-    dvec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
+    dvec3 origin = p + ray_offset(p, offset_origin_) * n;  // shadow rays start here; shading uses p itself
     for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
         const Light& light = scene_.lights[i];
         const int count = light_sample_count(light);
@@ -226,7 +223,7 @@ dvec3 Tracer::shade_microfacet(const Material& m, const MicrofacetTerms& terms, 
                                const dvec3& scale, double& rays) const {
     dvec3 color(0.0);
     if (terms.alpha == 0.0) return color;  // a perfect mirror shows no point of light
-    dvec3 origin = p + ray_offset(p) * n;
+    dvec3 origin = p + ray_offset(p, offset_origin_) * n;
     for (std::size_t i = 0; i < scene_.lights.size(); ++i) {
         const Light& light = scene_.lights[i];
         const int count = light_sample_count(light);
@@ -251,12 +248,6 @@ dvec3 Tracer::shade_microfacet(const Material& m, const MicrofacetTerms& terms, 
     return color;
 }
 
-namespace {
-
-double max_of(const dvec3& v) { return std::max({v.r, v.g, v.b}); }
-
-}  // namespace
-
 dvec3 Tracer::phong_hit(const Material& m, const Hit& hit, const dvec3& p, const dvec3& n, const Branch& b,
                         const Media& beyond, bool sheet, std::uint32_t seed_d, Branch& reflected, Branch& refracted,
                         double& rays) const {
@@ -270,7 +261,7 @@ dvec3 Tracer::phong_hit(const Material& m, const Hit& hit, const dvec3& p, const
         color += scale * (m.diffuse / kPi) * look.pigment * (1.0 - m.transmission) * irradiance;
     }
     // A bump tilts the mirror direction; refraction follows the geometric surface.
-    reflected = {{p + ray_offset(p) * n, bounce_direction(b.ray.dir, look.normal, n)}, p, b.weight * m.reflection,
+    reflected = {{p + ray_offset(p, offset_origin_) * n, bounce_direction(b.ray.dir, look.normal, n)}, p, b.weight * m.reflection,
                  b.depth + 1, b.media};
     refracted = {{p, b.ray.dir}, p, dvec3(0.0), b.depth + 1, beyond};
     if (clear) {
@@ -283,7 +274,7 @@ dvec3 Tracer::phong_hit(const Material& m, const Hit& hit, const dvec3& p, const
         reflected.weight += passing * f.reflectance;
         refracted.weight = passing * (1.0 - f.reflectance);
         if (!sheet) refracted.ray.dir = refract(b.ray.dir, n, n1 / n2, cos_i, f.cos_t);
-        refracted.ray.origin = past_surface(p, n, refracted.ray.dir);
+        refracted.ray.origin = past_surface(p, n, refracted.ray.dir, ray_offset(p, offset_origin_));
     }
     return color;
 }
@@ -297,7 +288,7 @@ dvec3 Tracer::microfacet_hit(const Material& m, const Hit& hit, const dvec3& p, 
     const double n2 = sheet ? m.ior : ior_of(beyond);
     dvec3 color = b.weight * shade_microfacet(m, terms, p, n, wo, n1, n2, b.media, seed_d, b.weight, rays);
     const std::array<double, 3> u = surface_sample_numbers(seed_d);
-    reflected = {{p + ray_offset(p) * n, dvec3(0.0)}, p, dvec3(0.0), b.depth + 1, b.media};
+    reflected = {{p + ray_offset(p, offset_origin_) * n, dvec3(0.0)}, p, dvec3(0.0), b.depth + 1, b.media};
     refracted = {{p, b.ray.dir}, p, dvec3(0.0), b.depth + 1, beyond};
     if (m.conductor) {
         Scattered s = sample_metal(m, terms, n, wo, u);
@@ -311,7 +302,7 @@ dvec3 Tracer::microfacet_hit(const Material& m, const Hit& hit, const dvec3& p, 
     reflected.weight = b.weight * split.reflected.weight;
     refracted.weight = b.weight * split.refracted.weight;
     if (!sheet) refracted.ray.dir = split.refracted.dir;
-    refracted.ray.origin = past_surface(p, n, refracted.ray.dir);
+    refracted.ray.origin = past_surface(p, n, refracted.ray.dir, ray_offset(p, offset_origin_));
     return color;
 }
 
@@ -341,7 +332,7 @@ dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
             if (clear && !sheet && beyond.innermost() == b.media.innermost()) {
                 // The same medium on both sides (a liquid's wall inside its glass): invisible.
                 b.media = beyond;
-                b.ray = {past_surface(p, n, b.ray.dir), b.ray.dir};
+                b.ray = {past_surface(p, n, b.ray.dir, ray_offset(p, offset_origin_)), b.ray.dir};
                 b.from = p;
                 goes_on = ++passes <= kMaxPassThrough;
             } else {

@@ -11,6 +11,7 @@
 #include "cpu/microfacet.hpp"
 #include "cpu/ray.hpp"
 #include "render/renderer.hpp"
+#include "scene/camera.hpp"
 
 namespace lancer::cpu {
 
@@ -94,6 +95,7 @@ private:
     void for_each_candidate(const Ray& ray, TMax t_max, Visit visit) const;
 
     const Scene& scene_;
+    const dvec3 offset_origin_ = working_origin(scene_.camera);  // what ray offsets scale with
     bool has_transparency_ = false;  // without, shadow rays only ask whether anything is in the way
     std::vector<MicrofacetTerms> terms_;  // per material
     const PhotonMaps* photons_ = nullptr;

@@ -86,10 +86,12 @@ void GpuRenderer::use_shader_directory(const std::string& directory) {
 }
 
 std::vector<std::string> GpuRenderer::notes() const {
-    if (!bands_rerendered_) return {};
-    return {fmt::format("{} band(s) rendered again with one sample per shader invocation: the driver limits loop "
-                        "iterations per invocation (lavapipe)",
-                        bands_rerendered_)};
+    std::vector<std::string> notes = float_notes_;
+    if (bands_rerendered_)
+        notes.push_back(fmt::format("{} band(s) rendered again with one sample per shader invocation: the driver limits "
+                                    "loop iterations per invocation (lavapipe)",
+                                    bands_rerendered_));
+    return notes;
 }
 
 void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated, bool photons) {
@@ -131,6 +133,7 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
     for (const gpu::BufferNeed& need : needs) buffer_bytes += need.bytes;
     gpu::check_render_memory(scene, buffer_bytes);
     emitters_ = packed.emitters;
+    float_notes_ = packed.float_notes;
     resources_.upload(packed, gpu::pack_frame(scene, packed));
     if (std::string code = gpu::surface_functions_glsl(scene); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;
@@ -291,7 +294,8 @@ void GpuRenderer::dispatch_checked(const gpu::BandParams& params, std::uint32_t 
     if (cut_short())
         throw UserError(fmt::format(
             "a sample of this scene needs more loop iterations than the {} driver allows in one shader "
-            "invocation (65535); render with --backend cpu, or lower max_depth or the number of lights",
+            "invocation (65535); render with --backend cpu, or lower max_depth, the number of lights or, with photon "
+            "mapping, the photons per pass (--photons)",
             context_->info().name));
 }
 

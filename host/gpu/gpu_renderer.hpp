@@ -116,6 +116,7 @@ private:
     gpu::TraceResources resources_;
     std::unique_ptr<gpu::PhotonPass> photons_;
     std::vector<gpu::Emitter> emitters_;  // the last uploaded scene's, for the photon pass
+    std::vector<std::string> float_notes_;  // the last uploaded scene's objects float cannot resolve
     VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
     Acceleration acceleration_;

@@ -13,7 +13,7 @@
 
 #include "gpu/layout.hpp"
 #include "gpu/resource_kinds.hpp"
-#include "gpu/spirv_specialize.hpp"
+#include "gpu/spirv_cache.hpp"
 #include "gpu/vk_check.hpp"
 
 namespace lancer::gpu {
@@ -75,7 +75,7 @@ ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layo
     specialization.dataSize = sizeof(values);
     specialization.pData = values.data();
 
-    const std::vector<std::uint32_t> specialized = specialize_spirv(spirv, features);
+    const std::vector<std::uint32_t> specialized = cached_specialization(spirv, features);
     VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     module_info.codeSize = specialized.size() * sizeof(std::uint32_t);
     module_info.pCode = specialized.data();

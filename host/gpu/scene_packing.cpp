@@ -10,12 +10,14 @@
 
 #include "accel/bvh.hpp"
 #include "accel/shape_bounds.hpp"
+#include "gpu/float_anchor.hpp"
 #include "core/finite.hpp"
 #include "core/perlin_permutation.hpp"
 #include "optics/energy.hpp"
 #include "optics/ggx.hpp"
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
+#include "surface/parametric_cells.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -43,7 +45,6 @@ void pack_box(const Aabb& box, vec4& lo, vec4& hi) {
 struct PrimitivePacker {
     PackedScene& out;
     std::vector<std::pair<Primitive, std::optional<Aabb>>>& prims;
-    const DeviceMemoryLimits* limits;
     uint material = 0;
     uint object = 0;
 
@@ -72,7 +73,7 @@ struct PrimitivePacker {
         info.row2 = vec4(float(m[0][2]), float(m[1][2]), float(m[2][2]), float(m[3][2]));
         info.domain = vec4(float(p.surface.u0), float(p.surface.u1), float(p.surface.v0), float(p.surface.v1));
         out.surfaces.push_back(info);
-        for (const auto& cell : p.cells) {
+        for (const auto& cell : surface::subdivide_surface(p.surface)) {
             // The corners seed Newton's method, and their mean re-origins the ray. Where the
             // surface is undefined at a corner (a cell at the edge of where it is defined, or
             // 0 * log(negative)), a point of the cell stands in: the centre of its (u, v) range,
@@ -116,7 +117,6 @@ struct PrimitivePacker {
     // boxes cull more rays before Bezier clipping starts, and clipping converges sooner.
     void operator()(const BezierSurface& s) {
         const int n = 1 << s.subdivision;
-        if (limits) check_buffer_need(array_need(SceneArray::PATCHES, out.patches.size() + s.patches.size() * n * n), *limits);
         for (std::size_t i = 0; i < s.patches.size(); ++i) {
             for (int a = 0; a < n; ++a) {
                 for (int b = 0; b < n; ++b) {
@@ -151,6 +151,7 @@ struct MapPacker {
     PackedScene& out;
     std::map<const TextureImage*, uint> image_offsets;
     std::map<double, std::pair<uint, double>> tables;  // alpha -> (energy table, E_avg)
+    dvec3 anchor;                                       // of the GPU's coordinates
 
     uint texture(const ImageTexture& t) {
         auto [at, added] = image_offsets.emplace(t.image.get(), static_cast<uint>(out.texels.size()));
@@ -205,6 +206,7 @@ struct MapPacker {
         g.reflection = float(m.reflection);
         g.pattern = m.checker ? PATTERN_CHECKER : PATTERN_SOLID;
         g.checker_size = m.checker ? float(m.checker->size) : 1.0f;
+        g.checker_phase = m.checker ? v4(checker_phase(anchor, m.checker->size)) : vec4(0.0f);
         g.texture_map = m.texture ? texture(*m.texture) : NO_MAP;
         g.color_pattern = m.pattern ? pattern(*m.pattern, 0.0) : NO_MAP;
         g.bump_pattern = m.bump ? pattern(m.bump->pattern, m.bump->amount) : NO_MAP;
@@ -298,6 +300,15 @@ Light pack_light(const lancer::Light& l) {
     return g;
 }
 
+// The Bezier leaves of the whole scene, counted before any is made: a scene with too many for
+// the device is refused before the packer spends seconds and gigabytes on them.
+std::uint64_t bezier_leaf_count(const Scene& scene) {
+    std::uint64_t leaves = 0;
+    for (const Object& o : scene.objects)
+        if (const auto* s = std::get_if<BezierSurface>(&o.shape)) leaves += std::uint64_t(s->patches.size()) << (2 * s->subdivision);
+    return leaves;
+}
+
 }  // namespace
 
 std::uint32_t photon_capacity(std::uint32_t count) {
@@ -318,12 +329,18 @@ float round_up(double x) {
     return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-PackedScene pack_scene(const Scene& scene, const PackOptions& options) {
+PackedScene pack_scene(const Scene& world, const PackOptions& options) {
+    if (options.limits) check_buffer_need(array_need(SceneArray::PATCHES, bezier_leaf_count(world)), *options.limits);
     PackedScene packed;
+    packed.anchor = float_anchor(world.camera);
+    packed.float_notes = float_resolution_notes(world, packed.anchor);
+    std::optional<Scene> local;
+    if (packed.anchor != dvec3(0.0)) local = rebased(world, packed.anchor);
+    const Scene& scene = local ? *local : world;
     std::vector<std::pair<Primitive, std::optional<Aabb>>> prims;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
-        std::visit(PrimitivePacker{packed, prims, options.limits, o.material, static_cast<uint>(i)}, o.shape);
+        std::visit(PrimitivePacker{packed, prims, o.material, static_cast<uint>(i)}, o.shape);
     }
     const Acceleration acceleration = options.acceleration;
     std::size_t bounded_count = 0;
@@ -352,7 +369,7 @@ PackedScene pack_scene(const Scene& scene, const PackOptions& options) {
         g.count = n.count;
         packed.nodes.push_back(g);
     }
-    MapPacker maps{packed, {}, {}};
+    MapPacker maps{packed, {}, {}, packed.anchor};
     for (const lancer::Material& m : scene.materials) packed.materials.push_back(maps.material(m));
     if (!packed.patterns.empty()) packed.permutation.assign(kPerlinPermutation.begin(), kPerlinPermutation.end());
     for (const lancer::Light& l : scene.lights) packed.lights.push_back(pack_light(l));
@@ -428,7 +445,7 @@ FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {
     const RenderSettings& r = scene.render;
     CameraBasis cam = make_camera_basis(scene.camera, r.width, r.height);
     FrameParams f{};
-    f.eye = v4(cam.eye);
+    f.eye = v4(cam.eye - packed.anchor);
     f.forward = v4(cam.forward);
     f.right = v4(cam.right);
     f.up = v4(cam.up);

@@ -6,6 +6,7 @@
 // shader features the scene needs. Pure data conversion, no Vulkan.
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "accel/bvh.hpp"
@@ -20,6 +21,10 @@ struct PackedScene {
 #define LANCER_PACKED_ARRAY(NAME, slot, kind, Element, member, reader, what) std::vector<Element> member;
     LANCER_SCENE_ARRAYS(LANCER_PACKED_ARRAY)
 #undef LANCER_PACKED_ARRAY
+    // Every position above is relative to this point, in double (gpu/float_anchor.hpp).
+    dvec3 anchor{0.0};
+    // Objects the GPU's float cannot resolve at their distance from the anchor: for the notes.
+    std::vector<std::string> float_notes;
     uint unbounded_count = 0;
     uint photon_count = 0;  // photons per pass, with photon mapping
     // The scene's shape families and shading features: has_bezier, has_bvh, has_textures, ...

@@ -6,13 +6,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.hpp"
+
 namespace lancer::optics {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
-
 double ggx_distribution(double cos_m, double alpha) {
     if (cos_m <= 0.0) return 0.0;
     double a2 = alpha * alpha;

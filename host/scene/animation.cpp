@@ -29,10 +29,8 @@ void translate(Shape& shape, const dvec3& offset) {
         }
         void operator()(ParametricObject& p) const {
             p.surface.to_world[3] += glm::dvec4(d, 0.0);  // translation column of the affine map
-            for (auto& cell : p.cells) {
-                cell.lo += d;
-                cell.hi += d;
-            }
+            p.bounds_lo += d;
+            p.bounds_hi += d;
         }
         void operator()(ImplicitObject& o) const {
             glm::dmat4 m = o.surface.to_world;

@@ -1,5 +1,6 @@
 #include "scene/camera.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -29,6 +30,12 @@ dvec3 camera_ray_direction(const CameraBasis& cam, double sx, double sy, int wid
     double ndc_x = 2.0 * sx / width - 1.0;
     double ndc_y = 1.0 - 2.0 * sy / height;
     return cam.forward + ndc_x * cam.right + ndc_y * cam.up;
+}
+
+dvec3 working_origin(const CameraSpec& camera) {
+    const dvec3& e = camera.eye;
+    const double reach = std::max({std::abs(e.x), std::abs(e.y), std::abs(e.z)});
+    return reach >= kWorkingOriginRadius ? e : dvec3(0.0);
 }
 
 }  // namespace lancer

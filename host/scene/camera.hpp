@@ -18,6 +18,15 @@ struct CameraBasis {
 // up is zero or up is parallel to the view direction (the picture would be undefined).
 CameraBasis make_camera_basis(const CameraSpec& spec, int width, int height);
 
+// The point a renderer's working coordinates start from: the world origin while the eye is within
+// kWorkingOriginRadius of it on every axis, else the eye. Secondary-ray offsets scale with the
+// distance from it (both backends), and the GPU's float coordinates are relative to it: a scene
+// moved far from the origin, camera and lights with it, renders the picture it renders there.
+// (Near the origin the world frame is kept: pictures stay what they were, and an animation that
+// only moves the camera keeps its BVH.)
+constexpr double kWorkingOriginRadius = 1024.0;
+dvec3 working_origin(const CameraSpec& camera);
+
 // Direction (not normalised) through the continuous image position (sx, sy), in pixels from the
 // top-left corner of the image.
 dvec3 camera_ray_direction(const CameraBasis& cam, double sx, double sy, int width, int height);

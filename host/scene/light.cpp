@@ -4,12 +4,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.hpp"
 #include "scene/scene.hpp"
 
 namespace lancer {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The spot factor at angle theta from the axis (docs/scene-format.md, "type = spot").
 double spot_at(const Light& l, double theta) {

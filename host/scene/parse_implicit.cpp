@@ -4,8 +4,9 @@
 //   box = { min = [-1.4, -0.4, -1.4], max = [1.4, 0.4, 1.4] }   params = { R = 1, r = 0.35 }
 // Errors inside the function point at their exact column in the scene file; a function that is
 // undefined or infinite everywhere in the box, a polynomial above the degree limit, an empty box
-// a constant beyond float's range (the GPU evaluates f in float), a function above the
-// operation limit and a surface that provably does not meet its box are errors too.
+// a constant beyond float's range, a function whose float evaluation overflows or strays from
+// double's (the GPU evaluates f in float), a function above the operation limit and a surface
+// that provably does not meet its box are errors too.
 #include <cmath>
 
 #include <fmt/format.h>
@@ -82,6 +83,11 @@ Shape read_implicit(TableReader& t) {
         t.fail("function", fmt::format("the function takes {} operations (after simplification); the limit is {}: it "
                                        "becomes code that the GPU's driver compiles and runs at every step of every ray",
                                        operations, limits::kMaxSurfaceOperations));
+    try {
+        surface::check_float_evaluation(s);  // the GPU finds and shades the zeros of f in float
+    } catch (const surface::FloatEvaluationError& e) {
+        throw SceneError(column_in_string(*node, t.file(), e.column), e.what());
+    }
     if (s.polynomial && s.polynomial->degree() <= 0) {
         double c = s.polynomial->terms.empty() ? 0.0 : s.polynomial->terms.front().coefficient;
         t.fail("function", t.what() + (c == 0.0 ? ": the function is 0 everywhere: the surface would fill its whole box"

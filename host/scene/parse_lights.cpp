@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
+#include "core/constants.hpp"
 #include "scene/limits.hpp"
 #include "scene/parse_shapes.hpp"
 
@@ -33,8 +34,6 @@ void reject_other_types_keys(TableReader& t, LightType type) {
                                         kTypeNames[int(k.type)], kTypeNames[int(k.type)], kTypeNames[int(type)]));
     }
 }
-
-constexpr double kPi = 3.14159265358979323846;
 
 // power (W) or intensity (W/sr): a light in physical units, which falls off with the square of
 // the distance. `color` stays a tint; the size goes into Light::scale, in the renderer's units

@@ -18,6 +18,7 @@
 #include "surface/expr/evaluate.hpp"
 #include "surface/expr/parser.hpp"
 #include "surface/float_check.hpp"
+#include "surface/parametric_cells.hpp"
 
 namespace lancer {
 namespace {
@@ -94,8 +95,11 @@ Shape read_parametric(TableReader& t) {
         }
     }
     s.to_world = read_transform(t);
+    std::vector<surface::SurfaceCell> cells;
     try {
-        object.cells = surface::subdivide_surface(s);
+        // The loader proves the surface can be cut into the GPU's cells (and bounds it by them);
+        // the GPU cuts it again when it packs the scene, so the scene does not carry them.
+        cells = surface::subdivide_surface(s);
     } catch (const surface::FloatEvaluationError& e) {
         throw SceneError(column_in_string(*t.node(axes[e.expression]), t.file(), e.column), e.what());
     } catch (const UserError& e) {
@@ -106,11 +110,13 @@ Shape read_parametric(TableReader& t) {
         throw SceneError(t.location(), std::string("parametric surface: ") + e.what());
     }
     dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-    for (const auto& cell : object.cells) {
+    for (const auto& cell : cells) {
         lo = glm::min(lo, cell.lo);
         hi = glm::max(hi, cell.hi);
     }
     check_world_extent(t, t.has("transform") ? "transform" : "x", lo, hi);
+    object.bounds_lo = lo;
+    object.bounds_hi = hi;
     return object;
 }
 

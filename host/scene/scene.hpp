@@ -17,7 +17,6 @@
 #include "scene/material_maps.hpp"
 #include "surface/bezier_patch.hpp"
 #include "surface/implicit_surface.hpp"
-#include "surface/parametric_cells.hpp"
 #include "surface/parametric_surface.hpp"
 
 namespace lancer {
@@ -210,11 +209,12 @@ struct BezierSurface {
     std::string source_file;  // the patch file they came from, if any
 };
 
-// A surface given by its equations, with its domain cut into cells whose world boxes are proved
-// to contain it (interval arithmetic): the GPU's leaves. Both are in world space.
+// A surface given by its equations, with a world box proved to contain it (interval arithmetic
+// over the cells of its domain: surface/parametric_cells.hpp). The GPU cuts it into its own cells
+// when it packs the scene; renderers need nothing else from the loader.
 struct ParametricObject {
     surface::ParametricSurface surface;
-    std::vector<surface::SurfaceCell> cells;
+    dvec3 bounds_lo{0.0}, bounds_hi{0.0};  // world space
 };
 
 // A surface given by its equation f(x, y, z) = 0, clipped to a box (docs/scene-format.md).

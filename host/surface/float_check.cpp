@@ -18,6 +18,21 @@ bool finite(const Dual<GpuFloat>& d) { return std::isfinite(d.v.x) && std::isfin
 
 std::string at_point(double u, double v) { return fmt::format("at (u, v) = ({:.6g}, {:.6g})", u, v); }
 
+// Throws at the first operation whose float result gives out where double's does not; where()
+// names the point (called only then).
+template <class Where>
+void check_no_overflow(const Program& program, const std::vector<Dual<double>>& exact, const Dual<GpuFloat>* f,
+                       Where where) {
+    for (std::size_t k = 0; k < exact.size(); ++k) {
+        if (finite(f[k]) || !finite(exact[k])) continue;
+        throw FloatEvaluationError(
+            fmt::format("the GPU's float arithmetic overflows here {}: the value and its derivatives are {:.3g}, "
+                        "{:.3g}, {:.3g} in double, and float holds magnitudes up to {:.3g}",
+                        where(), exact[k].v, exact[k].du, exact[k].dv, kFloatMax),
+            program.nodes[k].column, program.origins[k]);
+    }
+}
+
 }  // namespace
 
 void check_float_constants(const Expr& expr) {
@@ -60,16 +75,7 @@ double check_float_evaluation(const Program& program, const ParametricSurface& s
             if (!defined) continue;  // not a point of the surface: nothing for the GPU to match
             const Dual<GpuFloat>* f = evaluate_all_nodes(program, Dual<GpuFloat>::variable_u(GpuFloat(u)),
                                                          Dual<GpuFloat>::variable_v(GpuFloat(v)));
-            // The first operation whose float result gives out where double's does not.
-            for (int k = 0; k < count; ++k) {
-                if (finite(f[k]) || !finite(exact[k])) continue;
-                const Node& n = program.nodes[k];
-                throw FloatEvaluationError(
-                    fmt::format("the GPU's float arithmetic overflows here {}: the value and its derivatives are "
-                                "{:.3g}, {:.3g}, {:.3g} in double, and float holds magnitudes up to {:.3g}",
-                                at_point(u, v), exact[k].v, exact[k].du, exact[k].dv, kFloatMax),
-                    n.column, program.origins[k]);
-            }
+            check_no_overflow(program, exact, f, [&] { return at_point(u, v); });
             double distance2 = 0.0;
             for (int k = 0; k < 3; ++k) {
                 const double e = exact[program.outputs[k]].v, g = f[program.outputs[k]].v.x;
@@ -101,6 +107,62 @@ double check_float_evaluation(const Program& program, const ParametricSurface& s
             0, axis);
     }
     return worst.distance;
+}
+
+double check_float_evaluation(const ImplicitSurface& s, int grid) {
+    const Program& program = s.program;
+    const int count = static_cast<int>(program.nodes.size());
+    const int out = program.outputs.at(0);
+    std::vector<Dual<double>> exact(program.nodes.size());
+    double f_lo = HUGE_VAL, f_hi = -HUGE_VAL, worst = 0.0;
+    dvec3 worst_at(0.0);
+    double worst_gpu = 0.0, worst_reference = 0.0;
+    for (int i = 0; i <= grid; ++i)
+        for (int j = 0; j <= grid; ++j)
+            for (int k = 0; k <= grid; ++k) {
+                // The GPU is handed its points in float: both evaluate at the same point.
+                dvec3 p;
+                const int ijk[] = {i, j, k};
+                for (int a = 0; a < 3; ++a)
+                    p[a] = static_cast<float>(s.box_lo[a] + (s.box_hi[a] - s.box_lo[a]) * ijk[a] / grid);
+                // Dual carries two partials: d/dx and d/dy in one pass, d/dz in the other.
+                for (int pass = 0; pass < 2; ++pass) {
+                    using D = Dual<double>;
+                    using F = Dual<GpuFloat>;
+                    const D xd[] = {pass ? D::constant(p.x) : D::variable_u(p.x),
+                                    pass ? D::constant(p.y) : D::variable_v(p.y),
+                                    pass ? D::variable_u(p.z) : D::constant(p.z)};
+                    const F xf[] = {pass ? F::constant(p.x) : F::variable_u(GpuFloat(p.x)),
+                                    pass ? F::constant(p.y) : F::variable_v(GpuFloat(p.y)),
+                                    pass ? F::variable_u(GpuFloat(p.z)) : F::constant(p.z)};
+                    const D* d = evaluate_all_nodes<D>(program, xd);
+                    exact.assign(d, d + count);
+                    if (!finite(exact[out])) break;  // f undefined here: no surface for the GPU to match
+                    const F* f = evaluate_all_nodes<F>(program, xf);
+                    check_no_overflow(program, exact, f, [&] {
+                        return fmt::format("at (x, y, z) = ({:.6g}, {:.6g}, {:.6g})", p.x, p.y, p.z);
+                    });
+                    if (pass) continue;
+                    f_lo = std::min(f_lo, exact[out].v);
+                    f_hi = std::max(f_hi, exact[out].v);
+                    const double difference = std::abs(static_cast<double>(f[out].v.x) - exact[out].v);
+                    if (difference > worst) {
+                        worst = difference;
+                        worst_at = p;
+                        worst_gpu = f[out].v.x;
+                        worst_reference = exact[out].v;
+                    }
+                }
+            }
+    const double range = f_hi - f_lo;
+    if (worst > kTolerance * range)
+        throw FloatEvaluationError(
+            fmt::format("the GPU's float arithmetic computes f = {:.7g} at (x, y, z) = ({:.6g}, {:.6g}, {:.6g}), where the "
+                        "exact value is {:.7g}: {:.3g} apart, more than {:g} of f's range over the box ({:.3g}), so the "
+                        "GPU would draw another surface (large terms that cancel?)",
+                        worst_gpu, worst_at.x, worst_at.y, worst_at.z, worst_reference, worst, kTolerance, range),
+            0, 0);
+    return worst;
 }
 
 }  // namespace lancer::surface

@@ -10,6 +10,7 @@
 
 #include "surface/expr/expr.hpp"
 #include "surface/expr/program.hpp"
+#include "surface/implicit_surface.hpp"
 #include "surface/parametric_surface.hpp"
 
 namespace lancer::surface {
@@ -38,5 +39,12 @@ void check_float_constants(const Expr& expr);
 // surface's extent. Returns the largest distance between the two points, in the surface's own
 // frame (before its transform).
 double check_float_evaluation(const Program& program, const ParametricSurface& surface, int grid = 64);
+
+// The same for an implicit surface, whose f and gradient the GPU evaluates in float to find and
+// shade its zeros: on a grid of (grid + 1)^3 points of the box, FloatEvaluationError (expression
+// 0) where an operation's float result is not finite but double's is, and where float's f strays
+// from double's by more than 1e-3 of f's range over the box (a zero found by float's f then lies
+// that far off, relative to the box). Returns the largest difference in f.
+double check_float_evaluation(const ImplicitSurface& surface, int grid = 16);
 
 }  // namespace lancer::surface

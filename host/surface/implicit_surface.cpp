@@ -1,5 +1,6 @@
 #include "surface/implicit_surface.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -13,8 +14,15 @@ namespace lancer::surface {
 namespace {
 
 bool regular(const dvec3& g) {
-    double length = glm::length(g);
-    return std::isfinite(length) && length > 0.0;
+    const bool finite = std::isfinite(g.x) && std::isfinite(g.y) && std::isfinite(g.z);
+    return finite && (g.x != 0.0 || g.y != 0.0 || g.z != 0.0);
+}
+
+// g / |g|, scaled by its largest component first: a gradient like (0, 1e-164, 1e-170) (f = y^17 z
+// near y = 0) has a squared length below double's range, and normalize() would divide by 0.
+dvec3 unit(dvec3 g) {
+    g /= std::max({std::abs(g.x), std::abs(g.y), std::abs(g.z)});
+    return glm::normalize(g);
 }
 
 }  // namespace
@@ -41,7 +49,7 @@ dvec3 implicit_normal(const ImplicitSurface& s, const dvec3& world) {
     const dvec3 diagonal = (s.box_hi - s.box_lo) / std::sqrt(3.0);
     for (double step : {0.0, 1e-9, 1e-7, 1e-5, 1e-3, 1e-2}) {
         dvec3 n = normal_map * evaluate_implicit(s, local + step * diagonal).gradient;
-        if (regular(n)) return glm::normalize(n);
+        if (regular(n)) return unit(n);
     }
     return {0.0, 0.0, 1.0};
 }

@@ -3,13 +3,12 @@
 // contains both the exact range and the values the same functions return in double.
 #include "surface/interval.hpp"
 
-#include <numbers>
+#include "core/constants.hpp"
 
 namespace lancer::surface {
 namespace {
 
 constexpr int kLibmUlps = 4;
-constexpr double kPi = std::numbers::pi;
 
 double lib_down(double x) { return down(x, kLibmUlps); }
 double lib_up(double x) { return up(x, kLibmUlps); }

@@ -36,10 +36,10 @@ Animation cyclic_animation(int frames) {
     return a;
 }
 
-std::string vec(const dvec3& v) { return fmt::format("[{:g}, {:g}, {:g}]", v.x, v.y, v.z); }
+std::string short_vec(const dvec3& v) { return fmt::format("[{:g}, {:g}, {:g}]", v.x, v.y, v.z); }
 
 std::string orbit_text(const Orbit& o) {
-    return fmt::format("center {}, radius {:g}, height {:g}, start_angle {:g}", vec(o.center), o.radius, o.height,
+    return fmt::format("center {}, radius {:g}, height {:g}, start_angle {:g}", short_vec(o.center), o.radius, o.height,
                        o.start_angle_deg);
 }
 

@@ -29,8 +29,6 @@ constexpr double kPreviewBudgetMs = 30.0;
 constexpr int kMaxPreviewDivisor = 16;
 constexpr std::chrono::milliseconds kSettle{60};
 
-void print_error(const std::exception& e) { std::fprintf(stderr, "%s\n", format_error(e).c_str()); }
-
 // The parts of a picture's description that come from its scene.
 ShownFrame describe(const Scene& scene, std::uint64_t generation) {
     ShownFrame f;

@@ -28,8 +28,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void print_error(const std::exception& e) { std::fprintf(stderr, "%s\n", format_error(e).c_str()); }
-
 std::optional<CameraMove> camera_move_for(SDL_Keycode key) {
     switch (key) {
         case SDLK_RIGHT: return CameraMove::Right;

@@ -17,10 +17,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScene = test::source_path("tests/data/anim/small.toml");  // 6 frames, 10 fps, 48x27
+const std::string kScene = test::small_animation();
 
 // A fresh, empty directory under build/test-output for one test.
-std::string fresh_dir(const std::string& name) { return test::fresh_dir("anim-" + name); }
+std::string anim_dir(const std::string& name) { return test::fresh_dir("anim-" + name); }
 
 std::string slurp(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -64,7 +64,7 @@ std::size_t files_in(const std::string& dir) {
 }
 
 TEST(AnimationCli, RendersEveryFrameWithOnePlainLinePerFrameAndASummary) {
-    std::string dir = fresh_dir("all");
+    std::string dir = anim_dir("all");
     auto r = test::run_lancer("render " + kScene + " -o " + dir + "/f_%02d.png");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     for (int k = 0; k < 6; ++k) {
@@ -87,7 +87,7 @@ TEST(AnimationCli, RendersEveryFrameWithOnePlainLinePerFrameAndASummary) {
 // (the log says so; the other files keep their inode and mtime), and all five are byte for
 // byte what a clean run makes.
 TEST(AnimationCli, ResumeRendersOnlyTheMissingFrame) {
-    std::string dir = fresh_dir("resume"), clean = fresh_dir("resume-clean");
+    std::string dir = anim_dir("resume"), clean = anim_dir("resume-clean");
     ASSERT_EQ(test::run_lancer("render " + kScene + " --frames 0-4 -o " + dir + "/f_%d.png").exit_code, 0);
     ASSERT_EQ(test::run_lancer("render " + kScene + " --frames 0-4 -o " + clean + "/f_%d.png").exit_code, 0);
     EXPECT_FALSE(test::file_exists(dir + "/f_5.png")) << "--frames 0-4 renders 0 to 4 only";
@@ -122,7 +122,7 @@ TEST(AnimationCli, ResumeRendersOnlyTheMissingFrame) {
 }
 
 TEST(AnimationCli, FramesOfAnotherSizeAreRenderedAgain) {
-    std::string dir = fresh_dir("resize");
+    std::string dir = anim_dir("resize");
     ASSERT_EQ(test::run_lancer("render " + kScene + " --frames 0-1 -o " + dir + "/f_%d.png").exit_code, 0);
     auto r = test::run_lancer("render " + kScene + " --frames 0-1 --width 32 --height 18 -o " + dir + "/f_%d.png");
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -133,7 +133,7 @@ TEST(AnimationCli, FramesOfAnotherSizeAreRenderedAgain) {
 // A frame rendered inside a sequence (after others, with the GPU's buffers reused and partly
 // skipped) is byte for byte the frame rendered alone by a fresh process, as a still.
 TEST(AnimationCli, FramesOfASequenceEqualStillsOfTheSameMoment) {
-    std::string dir = fresh_dir("stills");
+    std::string dir = anim_dir("stills");
     ASSERT_EQ(test::run_lancer("render " + kScene + " -o " + dir + "/f_%d.png").exit_code, 0);
     for (int k : {0, 3, 5}) {
         std::string still = dir + "/still_" + std::to_string(k) + ".png";
@@ -144,7 +144,7 @@ TEST(AnimationCli, FramesOfASequenceEqualStillsOfTheSameMoment) {
 }
 
 TEST(AnimationCli, QuietPrintsNothing) {
-    std::string dir = fresh_dir("quiet");
+    std::string dir = anim_dir("quiet");
     auto r = test::run_lancer("render " + kScene + " --frames 0-1 -q -o " + dir + "/f_%d.png");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err, "");
@@ -153,7 +153,7 @@ TEST(AnimationCli, QuietPrintsNothing) {
 }
 
 TEST(AnimationCli, CreatesTheFrameDirectory) {
-    std::string dir = fresh_dir("mkdir");
+    std::string dir = anim_dir("mkdir");
     auto r = test::run_lancer("render " + kScene + " --frames 0 -o " + dir + "/new/deeper/f_%d.png");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(test::file_exists(dir + "/new/deeper/f_0.png"));
@@ -162,7 +162,7 @@ TEST(AnimationCli, CreatesTheFrameDirectory) {
 // On a terminal: one live line (rewritten with \r) with frame i/N, percent, elapsed and ETA,
 // and no per-frame log lines. `script` (util-linux, Essential in Debian) gives lancer a pty.
 TEST(AnimationCli, TerminalGetsOneLiveLine) {
-    std::string dir = fresh_dir("tty");
+    std::string dir = anim_dir("tty");
     std::string log = dir + "/typescript";
     std::string inner = "LANCER_VALIDATION=1 " + std::string(LANCER_EXE) + " render " + kScene + " -o " + dir + "/f_%d.png";
     std::string command = "script -qefc '" + inner + "' /dev/null >" + log + " 2>&1 </dev/null";
@@ -196,7 +196,7 @@ Probe probe(const std::string& video) {
 class Video : public testing::TestWithParam<std::string> {};
 
 TEST_P(Video, HasEveryFrameAtTheScenesFps) {
-    std::string dir = fresh_dir("video-" + GetParam());
+    std::string dir = anim_dir("video-" + GetParam());
     std::string video = dir + "/small." + GetParam();
     auto r = test::run_lancer("render " + kScene + " -o " + dir + "/f_%d.png --video " + video);
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -211,7 +211,7 @@ TEST_P(Video, HasEveryFrameAtTheScenesFps) {
 INSTANTIATE_TEST_SUITE_P(Formats, Video, testing::Values("mp4", "webm", "gif"));
 
 TEST(AnimationCli, VideoWaitsForEveryFrame) {
-    std::string dir = fresh_dir("video-missing");
+    std::string dir = anim_dir("video-missing");
     auto r = test::run_lancer("render " + kScene + " --frames 0-2 -o " + dir + "/f_%d.png --video " + dir + "/v.mp4");
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(lines_of(r.err).back().find("frame(s) 3-5 of " + dir + "/f_%d.png are missing"), std::string::npos) << r.err;
@@ -227,7 +227,7 @@ TEST(AnimationCli, VideoWaitsForEveryFrame) {
 // A frame cut short after its header (an interrupted copy in the farm workflow) still says its
 // size; it must be rendered again, and the video must hold every frame it claims.
 TEST(AnimationCli, ATruncatedFrameIsRenderedAgain) {
-    std::string dir = fresh_dir("truncated");
+    std::string dir = anim_dir("truncated");
     ASSERT_EQ(test::run_lancer("render " + kScene + " -o " + dir + "/f_%d.png").exit_code, 0);
     std::string whole = slurp(dir + "/f_3.png");
     fs::resize_file(dir + "/f_3.png", 60);
@@ -245,7 +245,7 @@ TEST(AnimationCli, ATruncatedFrameIsRenderedAgain) {
 // The same cut-short frame is not a frame for --video: it is named as missing rather than
 // encoded as whatever ffmpeg makes of it.
 TEST(AnimationCli, VideoCountsDecodedFramesNotFiles) {
-    std::string dir = fresh_dir("truncated-video");
+    std::string dir = anim_dir("truncated-video");
     ASSERT_EQ(test::run_lancer("render " + kScene + " -o " + dir + "/f_%d.png").exit_code, 0);
     fs::resize_file(dir + "/f_2.png", 60);
     auto r = test::run_lancer("render " + kScene + " --frames 0-1 -o " + dir + "/f_%d.png --video " + dir + "/v.mp4");
@@ -254,20 +254,14 @@ TEST(AnimationCli, VideoCountsDecodedFramesNotFiles) {
     EXPECT_FALSE(test::file_exists(dir + "/v.mp4"));
 }
 
-struct BadCase {
-    std::string name;
-    std::string args;  // DIR is replaced by the case's empty directory
-    std::string env;
-    std::string message;  // the start of the one line on stderr
-};
-
-void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+// In args, DIR is replaced by the case's empty directory.
+using BadCase = test::RejectedCommand;
 
 class AnimationCliRejects : public testing::TestWithParam<BadCase> {};
 
 TEST_P(AnimationCliRejects, WithExitCode2AndOneLineAndNoFiles) {
     const BadCase& c = GetParam();
-    std::string dir = fresh_dir("bad-" + c.name);
+    std::string dir = anim_dir("bad-" + c.name);
     std::string args = c.args, message = c.message;
     for (std::string* s : {&args, &message})
         for (std::size_t at; (at = s->find("DIR")) != std::string::npos;) s->replace(at, 3, dir);

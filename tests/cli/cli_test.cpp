@@ -133,14 +133,8 @@ TEST(Cli, HelpVersionAndDevices) {
     EXPECT_NE(no_scene.err.find("a scene file is required"), std::string::npos) << no_scene.err;
 }
 
-struct BadCase {
-    std::string name;
-    std::string args;
-    std::string env;
-    std::string message;  // expected at the start of stderr (after the output path is substituted)
-};
-
-void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+// The message is expected at the start of stderr, after the output path is substituted.
+using BadCase = test::RejectedCommand;
 
 // A directory whose name ends in .png, in the way of an output file.
 std::string directory_named_png() {

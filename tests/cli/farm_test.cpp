@@ -17,15 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScene = test::source_path("tests/data/anim/small.toml");  // 6 frames, 48x27
-constexpr int kFrames = 6;
+constexpr int kFrames = test::kSmallAnimationFrames;
 
-std::string fresh_dir(const std::string& name) {
-    std::string dir = test::output_dir() + "/farm-" + name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+std::string farm_dir(const std::string& name) { return test::fresh_dir("farm-" + name); }
 
 // Runs a shell command in `dir` (stdout and stderr to dir/log.txt); returns its exit code.
 int run_in(const std::string& dir, const std::string& command) {
@@ -39,7 +33,7 @@ std::string lancer_env() { return std::string("LANCER='") + LANCER_EXE + "' LANC
 
 // The whole sequence rendered by one machine, in dir/single.
 void render_on_one_machine(const std::string& dir) {
-    auto r = test::run_lancer("render " + kScene + " -q -o " + dir + "/single/f_%d.png");
+    auto r = test::run_lancer("render " + test::small_animation() + " -q -o " + dir + "/single/f_%d.png");
     ASSERT_EQ(r.exit_code, 0) << r.err;
 }
 
@@ -52,7 +46,7 @@ void expect_same_frames(const std::string& dir, const std::string& sub) {
 }
 
 TEST(Farm, GnuParallelOverSshToTwoHostsRendersTheSameFrames) {
-    std::string dir = fresh_dir("parallel");
+    std::string dir = farm_dir("parallel");
     render_on_one_machine(dir);
     fs::create_directories(dir + "/farm");
     // Chunks of 2 frames: three jobs over hostA and hostB, one job at a time on each. HOME is an
@@ -61,7 +55,7 @@ TEST(Farm, GnuParallelOverSshToTwoHostsRendersTheSameFrames) {
     // SHELL is unset, as under CI: the remote side must get it from "sshd", not from the caller.
     std::string command = lancer_env() + "HOME='" + test::output_dir() + "' FAKE_SSH_LOG=ssh.log PARALLEL_SSH='" +
                           test::source_path("tests/data/farm/fake-ssh") + "' env -u SHELL '" +
-                          test::source_path("docs/farm/render-parallel.sh") + "' '" + kScene +
+                          test::source_path("docs/farm/render-parallel.sh") + "' '" + test::small_animation() +
                           "' farm/f_%d.png 6 1/hostA,1/hostB 2";
     ASSERT_EQ(run_in(dir, command), 0) << test::read_file(dir + "/log.txt");
     std::string hosts = test::read_file(dir + "/ssh.log");
@@ -81,10 +75,10 @@ TEST(Farm, GnuParallelOverSshToTwoHostsRendersTheSameFrames) {
 // parallel counts a job as done when its ssh exits 0, which a broken host can do having run
 // nothing; the recipe then fails, naming what is missing, instead of reporting success.
 TEST(Farm, GnuParallelFailsWhenAHostRendersNothing) {
-    std::string dir = fresh_dir("parallel-idle-host");
+    std::string dir = farm_dir("parallel-idle-host");
     fs::create_directories(dir + "/farm");
     std::string command = lancer_env() + "PARALLEL_SSH=true '" + test::source_path("docs/farm/render-parallel.sh") +
-                          "' '" + kScene + "' farm/f_%03d.png 6 1/hostA 2";
+                          "' '" + test::small_animation() + "' farm/f_%03d.png 6 1/hostA 2";
     EXPECT_EQ(run_in(dir, command), 1);
     std::string log = test::read_file(dir + "/log.txt");
     EXPECT_NE(log.find("6 of 6 frames missing"), std::string::npos) << log;
@@ -92,10 +86,10 @@ TEST(Farm, GnuParallelFailsWhenAHostRendersNothing) {
 }
 
 TEST(Farm, SlurmArrayTasksTogetherRenderTheSequence) {
-    std::string dir = fresh_dir("slurm");
+    std::string dir = farm_dir("slurm");
     render_on_one_machine(dir);
     fs::create_directories(dir + "/farm");
-    std::string script = "'" + test::source_path("docs/farm/render-array.sbatch") + "' '" + kScene + "' farm/f_%d.png 6 4";
+    std::string script = "'" + test::source_path("docs/farm/render-array.sbatch") + "' '" + test::small_animation() + "' farm/f_%d.png 6 4";
     // Chunks of 4: task 0 renders 0-3, task 1 renders 4-5, task 2 finds nothing left.
     for (int task = 0; task < 3; ++task) {
         std::string env = lancer_env() + "SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " SLURM_CPUS_PER_TASK=2 ";
@@ -116,7 +110,7 @@ TEST(Farm, SlurmArrayTasksTogetherRenderTheSequence) {
 // holds the mean of its passes; a missing or doubled pass would move every pixel by a tenth).
 TEST(Farm, PhotonPassesOnTwoHostsCombineIntoTheStillOfOneMachine) {
     const std::string scene = test::source_path("tests/data/photons/small.toml");  // 6 passes
-    std::string dir = fresh_dir("passes");
+    std::string dir = farm_dir("passes");
     auto single = test::run_lancer("render " + scene + " --backend cpu -q -o " + dir + "/single.exr");
     ASSERT_EQ(single.exit_code, 0) << single.err;
     std::string command = lancer_env() + "LANCER_ARGS='--backend cpu' HOME='" + test::output_dir() +

@@ -19,7 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kScene = R"(
+const char* kWatchedScene = R"(
 [render]
 width = 32
 height = 18
@@ -43,7 +43,7 @@ material = "red"
 const char* const kStarted = "; watching ";
 
 std::string scene_text(const std::string& sphere_x) {
-    std::string s = kScene;
+    std::string s = kWatchedScene;
     s.replace(s.find("SPHERE_X"), 8, sphere_x);
     return s;
 }

@@ -107,11 +107,9 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require(!s.patches.empty(), when + ": bezier object without patches");
                     for (const auto& p : s.patches) check_patch(p, when + ": bezier");
                 } else if constexpr (std::is_same_v<T, ParametricObject>) {
-                    require(!s.cells.empty(), when + ": parametric surface without cells");
-                    for (const auto& c : s.cells) {
-                        require_finite(c.lo, when + ": parametric cell box");
-                        require_finite(c.hi, when + ": parametric cell box");
-                    }
+                    require_finite(s.bounds_lo, when + ": parametric surface's bounds");
+                    require_finite(s.bounds_hi, when + ": parametric surface's bounds");
+                    require(glm::all(glm::lessThanEqual(s.bounds_lo, s.bounds_hi)), when + ": parametric bounds are empty");
                 } else if constexpr (std::is_same_v<T, ImplicitObject>) {
                     const surface::ImplicitSurface& f = s.surface;
                     require_finite(f.box_lo, when + ": implicit box");
@@ -248,6 +246,12 @@ void implicit_expression(std::string_view text) {
     }
     const surface::Expr* f[] = {&s.f};
     s.program = surface::compile_program(f);
+    try {
+        surface::check_float_evaluation(s, 4);  // a coarse grid: the fuzzer's time goes to many inputs
+    } catch (const surface::FloatEvaluationError& error) {
+        require_column(error.column, text.size(), "an implicit float evaluation error");
+        return;
+    }
     s.place(glm::dmat4(1.0));
     surface::emit_glsl_implicit(s.f, "fuzz_implicit");
     for (const cpu::Ray& ray : {cpu::Ray{{-3.0, 0.1, 0.2}, glm::normalize(dvec3(1.0, 0.05, -0.1))},

@@ -13,11 +13,9 @@ namespace lancer {
 namespace {
 
 // GPU arithmetic is float: allow a few ulps of the [0, 1] range.
-constexpr float kTolerance = 2e-5f;
 
 using test::Backend;
 
-FloatImage render(Backend backend, const Scene& scene) { return test::render_on(backend, scene); }
 
 class Analytic : public testing::TestWithParam<Backend> {};
 
@@ -50,12 +48,12 @@ TEST_P(Analytic, LitSphereCentrePixelIsThePhongFormula) {
         radius = 1
         material = "m"
     )");
-    FloatImage img = render(GetParam(), s);
+    FloatImage img = test::render_on(GetParam(), s);
     glm::dvec3 C(0.8, 0.4, 0.2), Ia(0.5, 0.6, 0.7), I(0.9, 0.8, 0.7);
     double n_dot_l = 4.0 / std::sqrt(41.0);  // hit (0,0,-1), light (0,5,-5): L = (0,5,-4)/sqrt(41)
     glm::dvec3 expected = 0.2 * C * Ia + 0.6 * C * I * n_dot_l + 0.5 * I * std::pow(n_dot_l, 7.0);
     glm::vec4 got = img.at(4, 4);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], expected[c], kTolerance) << "channel " << c;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], expected[c], test::kBackendTolerance) << "channel " << c;
     EXPECT_EQ(got.a, 2.0f);  // one camera ray + one shadow ray
 }
 
@@ -87,11 +85,11 @@ TEST_P(Analytic, PointInShadowGetsExactlyTheAmbientTerm) {
         center = [0, 2, 0]
         radius = 1
     )");
-    FloatImage img = render(GetParam(), s);
+    FloatImage img = test::render_on(GetParam(), s);
     glm::vec4 got = img.at(4, 4);
-    EXPECT_NEAR(got.r, 0.3 * 0.5 * 0.9, kTolerance);
-    EXPECT_NEAR(got.g, 0.3 * 0.7 * 0.9, kTolerance);
-    EXPECT_NEAR(got.b, 0.3 * 0.9 * 0.9, kTolerance);
+    EXPECT_NEAR(got.r, 0.3 * 0.5 * 0.9, test::kBackendTolerance);
+    EXPECT_NEAR(got.g, 0.3 * 0.7 * 0.9, test::kBackendTolerance);
+    EXPECT_NEAR(got.b, 0.3 * 0.9 * 0.9, test::kBackendTolerance);
 }
 
 // An unoccluded, slightly tilted floor seen at grazing angles from far away (large coordinates,
@@ -119,7 +117,7 @@ TEST_P(Analytic, UnoccludedFloorHasNoDarkPixels) {
         normal = [0.02, 1, 0.01]
         material = "floor"
     )");
-    FloatImage img = render(GetParam(), s);
+    FloatImage img = test::render_on(GetParam(), s);
     const Plane& plane = std::get<Plane>(s.objects[0].shape);
     CameraBasis cam = make_camera_basis(s.camera, s.render.width, s.render.height);
     int floor_pixels = 0;
@@ -151,7 +149,7 @@ TEST_P(Analytic, EmptySceneIsBackground) {
         eye = [0, 0, -5]
         look_at = [0, 0, 0]
     )");
-    FloatImage img = render(GetParam(), s);
+    FloatImage img = test::render_on(GetParam(), s);
     for (const auto& p : img.pixels) {
         EXPECT_FLOAT_EQ(p.r, 0.25f);
         EXPECT_FLOAT_EQ(p.b, 0.75f);
@@ -197,11 +195,11 @@ TEST_P(Analytic, MirrorShowsWhatItFacesUpToMaxDepth) {
         t.replace(t.find("DEPTH"), 5, std::to_string(depth));
         return test::scene_from_text(t);
     };
-    glm::vec4 reflected = render(GetParam(), with_depth(1)).at(2, 2);
-    EXPECT_NEAR(reflected.r, 1.0f, kTolerance);
-    EXPECT_NEAR(reflected.g, 0.0f, kTolerance);
-    glm::vec4 cut = render(GetParam(), with_depth(0)).at(2, 2);
-    EXPECT_NEAR(cut.r, 0.0f, kTolerance);
+    glm::vec4 reflected = test::render_on(GetParam(), with_depth(1)).at(2, 2);
+    EXPECT_NEAR(reflected.r, 1.0f, test::kBackendTolerance);
+    EXPECT_NEAR(reflected.g, 0.0f, test::kBackendTolerance);
+    glm::vec4 cut = test::render_on(GetParam(), with_depth(0)).at(2, 2);
+    EXPECT_NEAR(cut.r, 0.0f, test::kBackendTolerance);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, Analytic, testing::Values(Backend::Gpu, Backend::Cpu),

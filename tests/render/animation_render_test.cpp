@@ -21,7 +21,6 @@ namespace {
 using test::Backend;
 using test::backend_name;
 
-FloatImage render(Backend backend, const Scene& scene) { return test::render_on(backend, scene); }
 
 bool identical(const FloatImage& a, const FloatImage& b) {
     return a.width == b.width && a.height == b.height &&
@@ -107,7 +106,7 @@ TEST_P(OrbitCorrectness, TargetIsCentredAndRoundAtEveryFrame) {
     for (int k = 0; k < a.frames; ++k) {
         SCOPED_TRACE(fmt::format("{} height {} frame {}", backend_name(backend), height, k));
         Scene frame = scene_at(scene, frame_time(a, k));
-        FloatImage img = render(backend, frame);
+        FloatImage img = test::render_on(backend, frame);
         Silhouette s = silhouette(img);
         ASSERT_GT(s.pixels, 100) << "the target is not in the picture";
         EXPECT_LE(std::abs(s.width - s.height), 1) << s.width << "x" << s.height;
@@ -222,14 +221,14 @@ class FrameZero : public testing::TestWithParam<Backend> {};
 TEST_P(FrameZero, EqualsTheStillSceneBitForBit) {
     Scene animated = test::scene_from_text(kAnimated);
     Scene still = test::scene_from_text(kStill);
-    FloatImage a = render(GetParam(), scene_at(animated, frame_time(*animated.animation, 0)));
-    FloatImage b = render(GetParam(), still);
+    FloatImage a = test::render_on(GetParam(), scene_at(animated, frame_time(*animated.animation, 0)));
+    FloatImage b = test::render_on(GetParam(), still);
     if (!identical(a, b)) {
         std::string dir = test::save_comparison(std::string("frame-zero-") + backend_name(GetParam()), to_srgb8(a), to_srgb8(b));
         ADD_FAILURE() << "frame 0 differs from the still scene; images in " << dir;
     }
     // The animation does move: frame 1 is another picture.
-    EXPECT_FALSE(identical(render(GetParam(), scene_at(animated, frame_time(*animated.animation, 1))), b));
+    EXPECT_FALSE(identical(test::render_on(GetParam(), scene_at(animated, frame_time(*animated.animation, 1))), b));
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, FrameZero, testing::Values(Backend::Gpu, Backend::Cpu),

@@ -16,8 +16,6 @@ namespace {
 
 using test::Backend;
 
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
-constexpr float kTolerance = 2e-5f;
 
 class LightTypes : public testing::TestWithParam<Backend> {
 protected:
@@ -68,16 +66,16 @@ TEST_P(LightTypes, SpotLightIsFullInsideItsConeAndDarkOutside) {
     for (int x = 0; x < img.width; ++x) {
         dvec3 p = floor_point(s, x, 0);
         dvec3 to_light = dvec3(0, 4, 0) - p;
-        double angle = std::acos(4.0 / glm::length(to_light)) / kDegree;
+        double angle = std::acos(4.0 / glm::length(to_light)) / test::kDegree;
         double spot = 1.0;
         if (angle > 14.0) {
             spot = 0.0;
         } else if (angle > 10.0) {
-            double t = (std::cos(angle * kDegree) - std::cos(14 * kDegree)) / (std::cos(10 * kDegree) - std::cos(14 * kDegree));
+            double t = (std::cos(angle * test::kDegree) - std::cos(14 * test::kDegree)) / (std::cos(10 * test::kDegree) - std::cos(14 * test::kDegree));
             spot = t * t * (3 - 2 * t);
         }
         double expected = spot * 4.0 / glm::length(to_light);  // diffuse 1 x N.L
-        EXPECT_NEAR(img.at(x, 0).r, expected, kTolerance) << "pixel " << x << " at " << angle << " degrees";
+        EXPECT_NEAR(img.at(x, 0).r, expected, test::kBackendTolerance) << "pixel " << x << " at " << angle << " degrees";
         full += angle < 10.0;
         dark += angle > 14.0;
         edge += angle > 10.5 && angle < 13.5;
@@ -103,7 +101,7 @@ TEST_P(LightTypes, InverseSquareFalloffGivesTheColourAtTheReferenceDistance) {
         s.render.width = 3;
         s.render.height = 3;
         centre[i] = render(s).at(1, 1).r;
-        EXPECT_NEAR(centre[i], 0.8 * std::pow(2.0 / height, 2.0), kTolerance) << "light at height " << height;
+        EXPECT_NEAR(centre[i], 0.8 * std::pow(2.0 / height, 2.0), test::kBackendTolerance) << "light at height " << height;
     }
     EXPECT_NEAR(centre[0] / centre[1], 4.0, 1e-4);
 }
@@ -219,7 +217,7 @@ TEST_P(LightTypes, HighlightFollowsItsFormulaAndPeaksAtTheMirrorPoint) {
                 dvec3 v = glm::normalize(eye - p), l = glm::normalize(light - p);
                 double c = model == "blinn" ? glm::dot(n, glm::normalize(l + v)) : glm::dot(2.0 * glm::dot(n, v) * n - v, l);
                 double expected = c > 0 ? 0.8 * 0.9 * std::pow(c, 60.0) : 0.0;
-                EXPECT_NEAR(img.at(x, y).r, expected, kTolerance) << model << " pixel " << x << "," << y;
+                EXPECT_NEAR(img.at(x, y).r, expected, test::kBackendTolerance) << model << " pixel " << x << "," << y;
                 if (img.at(x, y).r > best) best = img.at(x, y).r, best_x = x, best_y = y;
             }
         }

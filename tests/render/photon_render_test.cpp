@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "core/constants.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/lights.hpp"
 #include "scene/camera.hpp"
@@ -20,7 +21,6 @@ namespace {
 
 using test::Backend;
 
-constexpr double kPi = 3.14159265358979323846;
 
 // A white diffuse floor (y = 0) and a perfect mirror facing it at y = 3; a 100 W point light at
 // height 2.4 between them. Photons stop after two interactions, so the only stored ones went

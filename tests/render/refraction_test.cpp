@@ -16,9 +16,6 @@ namespace {
 
 using test::Backend;
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegree = kPi / 180.0;
-constexpr float kTolerance = 2e-5f;  // float arithmetic on the GPU
 
 class Refraction : public testing::TestWithParam<Backend> {
 protected:
@@ -93,7 +90,7 @@ std::string box(const std::string& material, dvec3 lo, dvec3 hi) {
 // and a few degrees across; the middle row's rays lie in the xz-plane. Behind everything a white
 // wall at z = wall_z covers x >= edge_x; the rest is black.
 std::string edge_scene(double deg, double wall_z, double edge_x, const std::string& extra) {
-    View v{401, 3, {0, 0, 0}, {10 * std::sin(deg * kDegree), 0, 10 * std::cos(deg * kDegree)}, 0.1};
+    View v{401, 3, {0, 0, 0}, {10 * std::sin(deg * test::kDegree), 0, 10 * std::cos(deg * test::kDegree)}, 0.1};
     return ambient_scene(v, rectangle("white", {edge_x, -50, wall_z}, {50, 0, 0}, {0, 100, 0}) + extra);
 }
 
@@ -125,7 +122,7 @@ const std::string kSlab = box("glass", {-50, -50, 2}, {50, 50, 3});
 // the wall behind it is seen d / cos(theta) further along x than without the slab.
 TEST_P(Refraction, SlabDisplacesTheRayByTheTextbookAmount) {
     const double t = 1.0, n = 1.5, wall = 6.0;
-    const double edge = wall * std::tan(40 * kDegree);  // without the slab: the centre column
+    const double edge = wall * std::tan(40 * test::kDegree);  // without the slab: the centre column
     Scene plain = test::scene_from_text(edge_scene(40, wall, edge, ""));
     auto straight = [&](double theta) { return wall * std::tan(theta); };
     auto through_slab = [&](double theta) {
@@ -155,7 +152,7 @@ TEST_P(Refraction, NestedMediaBendByTheRatioOfTheirIndices) {
         double theta_l = std::asin((right_model ? std::sin(theta) : std::sin(theta_g)) / nl);
         return 2.0 * std::tan(theta) + 0.5 * std::tan(theta_g) + 2.5 * std::tan(theta_l) + 2.0 * std::tan(theta);
     };
-    const double edge = landing(40 * kDegree, true);
+    const double edge = landing(40 * test::kDegree, true);
     const std::string objects = kSlab + box("liquid", {-50, -50, 2.5}, {50, 50, 5});
     Scene scene = test::scene_from_text(edge_scene(40, wall, edge, objects));
     int expected = predicted_column(scene, edge, [&](double th) { return landing(th, true); });
@@ -172,7 +169,7 @@ TEST_P(Refraction, NormalIncidenceReflectsTheTextbookFraction) {
         std::string half_space = "[[object]]\ntype = \"plane\"\npoint = [0, 0, 2]\nnormal = [0, 0, -1]\nmaterial = \"glass\"\n";
         FloatImage img = render(ambient_scene(View{}, half_space + rectangle("white", {-50, -50, -5}, {100, 0, 0}, {0, 100, 0}), n));
         double r = std::pow((1.0 - n) / (1.0 + n), 2.0);
-        EXPECT_NEAR(img.at(1, 1).r, r, kTolerance) << "ior " << n;
+        EXPECT_NEAR(img.at(1, 1).r, r, test::kBackendTolerance) << "ior " << n;
     }
 }
 
@@ -182,7 +179,7 @@ TEST_P(Refraction, SlabTransmitsWhatBothFacesLetThrough) {
     FloatImage img = render(ambient_scene(View{}, box("glass", {-50, -50, 1}, {50, 50, 2}) +
                                                       rectangle("white", {-50, -50, 5}, {100, 0, 0}, {0, 100, 0})));
     double r = 0.04;
-    EXPECT_NEAR(img.at(1, 1).g, (1 - r) * (1 - r) * (1 + r * r), kTolerance);
+    EXPECT_NEAR(img.at(1, 1).g, (1 - r) * (1 - r) * (1 + r * r), test::kBackendTolerance);
 }
 
 // A ray enters the top of a glass cube at 60 degrees and meets a side face at 90 - theta'. With
@@ -191,15 +188,15 @@ TEST_P(Refraction, SlabTransmitsWhatBothFacesLetThrough) {
 // max_depth = 2 stops the tree at what the side face sends on (the wall, or the cube's bottom).
 TEST_P(Refraction, TotalInternalReflectionBeyondTheCriticalAngle) {
     for (double n : {1.2, 1.5}) {
-        View v{3, 3, {0.5 - 10 * std::sin(60 * kDegree), 6, 0}, {0.5, 1, 0}, 1, 2};
+        View v{3, 3, {0.5 - 10 * std::sin(60 * test::kDegree), 6, 0}, {0.5, 1, 0}, 1, 2};
         FloatImage img = render(ambient_scene(v, box("glass", {-1, -1, -1}, {1, 1, 1}) +
                                                      rectangle("white", {3, -50, -50}, {0, 50.8, 0}, {0, 0, 100}), n));
-        double theta_t = std::asin(std::sin(60 * kDegree) / n);
-        double at_side = 90 * kDegree - theta_t;
+        double theta_t = std::asin(std::sin(60 * test::kDegree) / n);
+        double at_side = 90 * test::kDegree - theta_t;
         bool total = n * std::sin(at_side) > 1.0;
         ASSERT_EQ(total, n == 1.5);
-        double expected = total ? 0.0 : (1 - reflectance(60 * kDegree, 1.0, n)) * (1 - reflectance(at_side, n, 1.0));
-        EXPECT_NEAR(img.at(1, 1).r, expected, kTolerance) << "ior " << n;
+        double expected = total ? 0.0 : (1 - reflectance(60 * test::kDegree, 1.0, n)) * (1 - reflectance(at_side, n, 1.0));
+        EXPECT_NEAR(img.at(1, 1).r, expected, test::kBackendTolerance) << "ior " << n;
         if (!total) {
             EXPECT_GT(expected, 0.8);
         }
@@ -211,12 +208,12 @@ TEST_P(Refraction, TotalInternalReflectionBeyondTheCriticalAngle) {
 TEST_P(Refraction, AbsorptionFollowsBeerLambert) {
     const dvec3 a(0.5, 1.0, 2.0);
     for (double deg : {0.0, 50.0}) {
-        View v{3, 3, {0, 0, 0}, {10 * std::sin(deg * kDegree), 0, 10 * std::cos(deg * kDegree)}, 1};
+        View v{3, 3, {0, 0, 0}, {10 * std::sin(deg * test::kDegree), 0, 10 * std::cos(deg * test::kDegree)}, 1};
         const char* tinted = "[material.tinted]\ntransmission = 1\nabsorption = [0.5, 1, 2]\nambient = 0\ndiffuse = 0\n";
         FloatImage img = render(ambient_scene(v, std::string(tinted) + box("tinted", {-50, -50, 1}, {50, 50, 1.7}) +
                                                      rectangle("white", {-50, -50, 5}, {100, 0, 0}, {0, 100, 0})));
-        double path = 0.7 / std::cos(deg * kDegree);
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(img.at(1, 1)[c], std::exp(-a[c] * path), kTolerance) << deg << " deg, channel " << c;
+        double path = 0.7 / std::cos(deg * test::kDegree);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(img.at(1, 1)[c], std::exp(-a[c] * path), test::kBackendTolerance) << deg << " deg, channel " << c;
     }
 }
 
@@ -261,7 +258,7 @@ TEST_P(Refraction, ShadowThroughGlassIsTintedByItsTransmission) {
     for (int c = 0; c < 3; ++c) {
         double through = std::pow(0.8 * T[c], 2.0) * std::exp(-a[c]);
         double expected = 0.2 * C[c] * 0.5 + 0.7 * C[c] * 0.9 * through;
-        EXPECT_NEAR(img.at(1, 1)[c], expected, kTolerance) << "channel " << c;
+        EXPECT_NEAR(img.at(1, 1)[c], expected, test::kBackendTolerance) << "channel " << c;
     }
 }
 

@@ -23,12 +23,7 @@ namespace {
 
 using glm::dvec2;
 
-enum class Backend { Gpu, Cpu };
-
-FloatImage render(Backend backend, const Scene& scene) {
-    if (backend == Backend::Gpu) return test::gpu_renderer().render(scene, {});
-    return CpuRenderer().render(scene, {});
-}
+using test::Backend;
 
 class Textures : public testing::TestWithParam<Backend> {};
 
@@ -114,7 +109,7 @@ void expect_texels_on_rectangle(Backend backend, const Placement& placement) {
         edge_v = [0, 2, 0]
         material = "m"
     )", kUnlit, file, placement.keys));
-    FloatImage img = render(backend, s);
+    FloatImage img = test::render_on(backend, s);
     int checked = 0;
     for (int y = 0; y < img.height; ++y) {
         for (int x = 0; x < img.width; ++x) {
@@ -166,7 +161,7 @@ TEST_P(Textures, SphericalMappingFollowsLongitudeAndLatitude) {
             rotate = [{}, {}, {}]
             material = "m"
         )", kUnlit, file, angles.x, angles.y, angles.z));
-        FloatImage img = render(GetParam(), s);
+        FloatImage img = test::render_on(GetParam(), s);
         glm::dmat3 to_sphere = glm::transpose(glm::dmat3(rotation_degrees(angles)));
         int checked = 0;
         for (int y = 0; y < img.height; ++y) {
@@ -216,7 +211,7 @@ TEST_P(Textures, BilinearMidpointIsTheMeanOfDecodedTexels) {
         edge_v = [0, 2, 0]
         material = "bw"
     )", kUnlit, black_white, grey));
-    FloatImage img = render(GetParam(), s);
+    FloatImage img = test::render_on(GetParam(), s);
     // The centre pixel's ray meets the rectangle's centre: u = 0.5, half way between the two
     // texel centres. In linear light that is 0.5 (filtering before decoding would give 0.21).
     EXPECT_NEAR(img.at(2, 2).r, 0.5, 2e-5);
@@ -224,7 +219,7 @@ TEST_P(Textures, BilinearMidpointIsTheMeanOfDecodedTexels) {
 
     ASSERT_EQ(s.materials[1].name, "grey");
     s.objects[0].material = 1;
-    img = render(GetParam(), s);
+    img = test::render_on(GetParam(), s);
     for (int x = 0; x < 5; ++x) {
         EXPECT_NEAR(img.at(x, 2).r, 0.21586050011389926, 2e-6);  // sRGB 128
         EXPECT_NEAR(img.at(x, 2).g, 0.05126945837404324, 2e-6);  // sRGB 64
@@ -253,7 +248,7 @@ Scene pattern_plate(const std::string& pattern) {
 TEST_P(Textures, NoiseIsPerlinsReferenceOnBothBackends) {
     // Pattern space = world / 0.37 + (1.3, -0.2, 2.1): scale 0.37, then translate.
     Scene s = pattern_plate("type = \"noise\", scale = 0.37, translate = [0.481, -0.074, 0.777]");
-    FloatImage img = render(GetParam(), s);
+    FloatImage img = test::render_on(GetParam(), s);
     double worst = 0.0;
     for (int y = 0; y < img.height; ++y) {
         for (int x = 0; x < img.width; ++x) {
@@ -270,7 +265,7 @@ TEST_P(Textures, MarbleWoodAndTurbulenceAreTheDocumentedFunctionsOfNoise) {
     for (std::string type : {"marble", "wood", "turbulence"}) {
         std::string turbulence = type == "turbulence" ? "" : ", turbulence = 0.4";
         Scene s = pattern_plate(fmt::format("type = \"{}\", octaves = 3, omega = 0.6, lambda = 2.2{}", type, turbulence));
-        FloatImage img = render(GetParam(), s);
+        FloatImage img = test::render_on(GetParam(), s);
         double worst = 0.0;
         for (int y = 0; y < img.height; ++y) {
             for (int x = 0; x < img.width; ++x) {
@@ -312,7 +307,7 @@ TEST_P(Textures, BumpTiltsTheNormalByTheDocumentedRule) {
         edge_v = [0, 4, 0]
         material = "m"
     )");
-    FloatImage img = render(GetParam(), s);
+    FloatImage img = test::render_on(GetParam(), s);
     int checked = 0;
     for (int y = 0; y < img.height; ++y) {
         for (int x = 0; x < img.width; ++x) {
@@ -356,7 +351,7 @@ TEST_P(Textures, BumpChangesShadingButNotGeometry) {
     Renderer& renderer = GetParam() == Backend::Gpu ? static_cast<Renderer&>(test::gpu_renderer()) : cpu;
     FloatImage hits_smooth = renderer.render_hits(smooth), hits_bumpy = renderer.render_hits(bumpy);
     EXPECT_EQ(hits_smooth.pixels, hits_bumpy.pixels);
-    FloatImage a = render(GetParam(), smooth), b = render(GetParam(), bumpy);
+    FloatImage a = test::render_on(GetParam(), smooth), b = test::render_on(GetParam(), bumpy);
     int on_sphere = 0, changed = 0;
     for (int y = 0; y < a.height; ++y)
         for (int x = 0; x < a.width; ++x) {

@@ -24,7 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kSeed = test::source_path("scenes/seed.toml");
-const std::string kAnimation = test::source_path("tests/data/anim/small.toml");  // 6 frames, 48x27
 
 std::string fresh_dir(const std::string& name) { return test::fresh_dir("faults-" + name); }
 
@@ -85,7 +84,7 @@ TEST(Faults, DiskFullWhileWritingAStill) {
 TEST(Faults, DiskFullInAnAnimationKeepsTheFinishedFrames) {
     std::string dir = fresh_dir("full-anim"), evidence = fresh_dir("full-anim-evidence");
     std::string e = evidence;
-    const std::string render = lancer_command() + " render " + kAnimation + " --width 200 --height 120";
+    const std::string render = lancer_command() + " render " + test::small_animation() + " --width 200 --height 120";
     int status = in_private_tmpfs(dir, "size=1m", render + " --frames 0-1 -o \"$D/f_%d.png\" 2>/dev/null; echo $? > " + e + R"(/code1
         cp "$D/f_0.png" "$D/f_1.png" )" + e + R"(/
         stat -c '%n %i %Y' "$D/f_0.png" "$D/f_1.png" > )" + e + R"(/before
@@ -111,8 +110,8 @@ TEST(Faults, ReadOnlyDirectory) {
     std::string dir = fresh_dir("readonly"), e = fresh_dir("readonly-evidence");
     int status = in_private_tmpfs(dir, "ro,size=64k",
         lancer_command() + " render " + kSeed + " --width 32 --height 18 -o \"$D/out.png\" 2> " + e + "/err1; echo $? > " + e + "/code1\n" +
-        lancer_command() + " render " + kAnimation + " -o \"$D/f_%d.png\" 2> " + e + "/err2; echo $? > " + e + "/code2\n" +
-        lancer_command() + " render " + kAnimation + " -o \"$D/frames/f_%d.png\" 2> " + e + "/err3; echo $? > " + e + "/code3\n" +
+        lancer_command() + " render " + test::small_animation() + " -o \"$D/f_%d.png\" 2> " + e + "/err2; echo $? > " + e + "/code2\n" +
+        lancer_command() + " render " + test::small_animation() + " -o \"$D/frames/f_%d.png\" 2> " + e + "/err3; echo $? > " + e + "/code3\n" +
         "ls -A \"$D\" > " + e + "/listing");
     ASSERT_EQ(status, 0);
     for (const char* n : {"1", "2", "3"}) EXPECT_EQ(trim(test::read_file(e + "/code" + n)), "2") << n;
@@ -140,7 +139,7 @@ TEST(Faults, FileSizeLimit) {
 TEST(Faults, AFramePathThatIsADirectoryStopsTheAnimation) {
     std::string dir = fresh_dir("frame-dir");
     fs::create_directory(dir + "/f_1.png");
-    auto r = test::run_lancer("render " + kAnimation + " --frames 0-2 -o " + dir + "/f_%d.png");
+    auto r = test::run_lancer("render " + test::small_animation() + " --frames 0-2 -o " + dir + "/f_%d.png");
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_EQ(last_line(r.err), "lancer: error: cannot write '" + dir + "/f_1.png': it is a directory");
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
@@ -193,7 +192,7 @@ TEST_P(Interrupt, InTheMiddleOfAStillWritesNothing) {
 TEST_P(Interrupt, InTheMiddleOfAFrameKeepsTheFramesBefore) {
     const InterruptCase& c = GetParam();
     std::string dir = fresh_dir("interrupt-anim-" + name_of(c));
-    test::PtyProcess lancer({"render", kAnimation, "--backend", c.backend, "--frames", "0-3", "--width", "640", "--height",
+    test::PtyProcess lancer({"render", test::small_animation(), "--backend", c.backend, "--frames", "0-3", "--width", "640", "--height",
                              "480", "--samples", "4", "-o", dir + "/f_%d.png"});
     std::string frame0;
     ASSERT_TRUE(lancer.read_until([&](const std::string& s) {

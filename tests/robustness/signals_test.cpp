@@ -20,7 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
-const std::string kAnimation = test::source_path("tests/data/anim/small.toml");  // 6 frames, 48x27
 
 std::string signal_text(int signal_number) { return signal_number == SIGINT ? "SIGINT" : "SIGTERM"; }
 
@@ -114,7 +113,7 @@ TEST_P(Signals, WhileEncodingAVideo) {
     const char* old_path = std::getenv("PATH");
     std::string saved = old_path ? old_path : "";
     ::setenv("PATH", (bin + ":" + saved).c_str(), 1);
-    test::PtyProcess lancer({"render", kAnimation, "-o", frames + "/f_%d.png", "--video", dir + "/out.webm"});
+    test::PtyProcess lancer({"render", test::small_animation(), "-o", frames + "/f_%d.png", "--video", dir + "/out.webm"});
     ::setenv("PATH", saved.c_str(), 1);
     ASSERT_TRUE(lancer.read_until([](const std::string& s) { return s.find("encoding 6 frames") != std::string::npos; }))
         << lancer.output();

@@ -5,12 +5,11 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "core/constants.hpp"
 #include "cpu/dielectric.hpp"
 
 namespace lancer::cpu {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double normal_incidence(double n1, double n2) { return std::pow((n1 - n2) / (n1 + n2), 2.0); }
 

@@ -15,7 +15,7 @@
 namespace lancer::surface {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 TEST(ExprEvaluate, HandComputedValues) {
     Constants p{{"R", 1.0}, {"r", 0.35}};

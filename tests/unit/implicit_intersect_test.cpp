@@ -252,10 +252,10 @@ TEST(ImplicitIntersect, SingularPointsHaveFiniteNormals) {
             std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(kummer.surface, ray, 0.0, 1e9);
             const double t = glm::length(p - origin);
             bool at_p = std::any_of(roots.begin(), roots.end(), [&](const auto& r) { return std::abs(r.t - t) < 1e-6; });
-            if (offset == 0.0) EXPECT_TRUE(at_p) << "double point " << p.x << " " << p.y << " " << p.z;
+            if (offset == 0.0) { EXPECT_TRUE(at_p) << "double point " << p.x << " " << p.y << " " << p.z; }
             auto hit = cpu::intersect(kummer, ray, 0.0, 1e9);
-            if (offset == 0.0) ASSERT_TRUE(hit);
-            if (hit) EXPECT_NEAR(glm::length(hit->normal), 1.0, 1e-12);
+            if (offset == 0.0) { ASSERT_TRUE(hit); }
+            if (hit) { EXPECT_NEAR(glm::length(hit->normal), 1.0, 1e-12); }
         }
         EXPECT_NEAR(glm::length(surface::implicit_normal(kummer.surface, p)), 1.0, 1e-12);
     }

@@ -17,7 +17,7 @@
 namespace lancer::surface {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 struct Unary {
     std::string name;

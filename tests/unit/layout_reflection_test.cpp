@@ -87,7 +87,7 @@ TEST(Layout, EveryReflectedBlockMemberIsAtTheHostsOffsetAndEveryHostMemberIsRefl
             auto offset = block->second.members.find(member);
             ASSERT_NE(offset, block->second.members.end()) << "the host's struct has no member " << m.name;
             EXPECT_EQ(m.offset, static_cast<int>(offset->second)) << m.name;
-            if (block->second.stride) EXPECT_EQ(m.top_level_stride, block->second.stride) << m.name;
+            if (block->second.stride) { EXPECT_EQ(m.top_level_stride, block->second.stride) << m.name; }
             seen.insert(variable + "." + member);
         }
     }

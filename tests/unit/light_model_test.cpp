@@ -6,12 +6,11 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "core/constants.hpp"
 #include "cpu/lights.hpp"
 
 namespace lancer::cpu {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Values of PCG's output permutation computed outside lancer (Python, 32-bit wrapping
 // arithmetic): the shader's hash must give the same bits (tests/render's area light scenes).

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "core/constants.hpp"
 #include "cpu/microfacet.hpp"
 #include "cpu/dielectric.hpp"
 #include "optics/energy.hpp"
@@ -20,7 +21,6 @@ namespace lancer {
 namespace {
 
 using glm::dvec3;
-constexpr double kPi = 3.14159265358979323846;
 
 const double kRoughnesses[] = {0.05, 0.1, 0.25, 0.5, 0.75, 1.0};
 

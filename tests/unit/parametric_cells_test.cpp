@@ -16,7 +16,7 @@
 namespace lancer::surface {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 void expect_tiling(const ParametricSurface& s, const std::vector<SurfaceCell>& cells) {
     double area = 0.0;

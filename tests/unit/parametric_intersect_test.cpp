@@ -17,7 +17,7 @@ namespace lancer::cpu {
 namespace {
 
 using surface::ParametricSurface;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 bool is_unit(const dvec3& n) { return std::isfinite(n.x + n.y + n.z) && std::abs(glm::length(n) - 1.0) < 1e-12; }
 

@@ -12,7 +12,7 @@
 namespace lancer::surface {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 TEST(ParametricSurface, EvaluatesPointAndPartialsInWorldSpace) {
     ParametricSurface s = test::make_surface(test::surface_spec("torus"));  // R = 1, r = 0.35

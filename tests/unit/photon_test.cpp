@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "core/constants.hpp"
 #include "cpu/dielectric.hpp"
 #include "cpu/photon_map.hpp"
 #include "cpu/photon_tracer.hpp"
@@ -18,8 +19,6 @@
 
 namespace lancer {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(KdTree, GathersExactlyThePhotonsABruteForceSearchFinds) {
     std::mt19937 rng(1);
@@ -89,7 +88,7 @@ TEST(PhotonMap, IrradianceUnderAPointLightConvergesToTheInverseSquareLaw) {
         // Expected: about 1/sqrt(photons in the disc), plus under 1% of bias from the disc's size.
         EXPECT_LT(rms, previous) << photons << " photons";
         previous = rms;
-        if (photons == 1280000) EXPECT_LT(rms, 0.05);
+        if (photons == 1280000) { EXPECT_LT(rms, 0.05); }
     }
 }
 

@@ -46,7 +46,7 @@ TEST(Plane, LeavingRaysDoNotReintersect) {
         dvec3 hit = origin + h->t * d;
         dvec3 out = glm::normalize(p.normal + 0.5 * dvec3(u(rng), u(rng), u(rng)));
         if (glm::dot(out, p.normal) <= 0.0) continue;
-        EXPECT_FALSE(intersect(p, {hit + ray_offset(hit) * p.normal, out}, 0.0, 1e30)) << i;
+        EXPECT_FALSE(intersect(p, {hit + ray_offset(hit, dvec3(0.0)) * p.normal, out}, 0.0, 1e30)) << i;
     }
 }
 

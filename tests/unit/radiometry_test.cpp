@@ -5,14 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.hpp"
 #include "image/image.hpp"
 #include "optics/metals.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 const char* kCamera = R"(
     [camera]

@@ -68,7 +68,7 @@ TEST(Sphere, AimedRaysHitTheirTargetAndLeavingRaysEscape) {
         dvec3 n = dir_on_sphere;
         dvec3 out = glm::normalize(n + 0.9 * dvec3(u(rng), u(rng), u(rng)) * 0.5);
         if (glm::dot(out, n) <= 0.05) continue;
-        Ray leaving{target + ray_offset(target) * n, out};
+        Ray leaving{target + ray_offset(target, dvec3(0.0)) * n, out};
         EXPECT_FALSE(intersect(s, leaving, 0.0, 1e30)) << i;
     }
 }

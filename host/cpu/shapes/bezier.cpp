@@ -11,6 +11,7 @@
 
 #include "core/finite.hpp"
 #include "cpu/shapes/bezier_algebra.hpp"
+#include "cpu/shapes/ray_planes.hpp"
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
@@ -19,24 +20,9 @@ namespace {
 using namespace bezier_algebra;
 using surface::BezierPatch;
 
-// Rotating the two planes off the coordinate axes keeps them from containing the planar
-// iso-curves that axis-aligned data is full of (the teapot's z = 0.9 row): such a plane makes f
-// vanish on a whole parameter line and turns that line's u into a multiple eigenvalue.
-constexpr double kPlaneAngle = 0.7137;
 // Eigenvalues and v roots may lie this far outside [0, 1] and still be worth polishing: hits on
 // patch edges and corners (shared with neighbours) must not be lost to rounding.
 constexpr double kParameterSlack = 1e-6;
-
-
-// The two planes through the ray: unit normals perpendicular to d and to each other.
-std::pair<dvec3, dvec3> ray_planes(const dvec3& d) {
-    dvec3 a = glm::abs(d);
-    dvec3 axis = (a.x <= a.y && a.x <= a.z) ? dvec3(1, 0, 0) : (a.y <= a.z ? dvec3(0, 1, 0) : dvec3(0, 0, 1));
-    dvec3 e1 = glm::normalize(glm::cross(d, axis));
-    dvec3 e2 = glm::cross(d, e1);
-    dvec3 n1 = std::cos(kPlaneAngle) * e1 + std::sin(kPlaneAngle) * e2;
-    return {n1, glm::cross(d, n1)};
-}
 
 // Slab test against the control-point box, widened by pad: can the ray meet the patch in (t_min, t_max)?
 bool may_hit_box(const surface::PatchBounds& box, double pad, const Ray& ray, double t_min, double t_max) {

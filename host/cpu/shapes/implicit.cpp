@@ -43,13 +43,13 @@ constexpr double kCluster = 1e-6;      // real eigenvalues this close may be a d
 constexpr int kMaxIntervalSteps = 20000;  // per ray; a pathological ray ends with what it found so far
 
 // The ray in the surface's coordinates, from a base point on it: x(s) = o + s d, s = t - base.
-struct LocalRay {
+struct ImplicitRay {
     dvec3 o, d;
     double base;
 };
 
 // g and g' at s (double).
-Dual<double> along(const ImplicitSurface& f, const LocalRay& r, double s) {
+Dual<double> along(const ImplicitSurface& f, const ImplicitRay& r, double s) {
     const Dual<double> x[] = {{r.o.x + s * r.d.x, r.d.x, 0.0}, {r.o.y + s * r.d.y, r.d.y, 0.0},
                               {r.o.z + s * r.d.z, r.d.z, 0.0}};
     Dual<double> g;
@@ -60,7 +60,7 @@ Dual<double> along(const ImplicitSurface& f, const LocalRay& r, double s) {
 Interval coordinate(double o, double d, const Interval& s) { return Interval(o) + Interval(d) * s; }
 
 // An enclosure of g over S.
-Interval along(const ImplicitSurface& f, const LocalRay& r, const Interval& s) {
+Interval along(const ImplicitSurface& f, const ImplicitRay& r, const Interval& s) {
     const Interval x[] = {coordinate(r.o.x, r.d.x, s), coordinate(r.o.y, r.d.y, s), coordinate(r.o.z, r.d.z, s)};
     Interval g;
     surface::evaluate_program<Interval>(f.program, x, &g);
@@ -68,7 +68,7 @@ Interval along(const ImplicitSurface& f, const LocalRay& r, const Interval& s) {
 }
 
 // Enclosures of g and g' over S; true when f is proved defined and smooth all along S.
-bool along_smooth(const ImplicitSurface& f, const LocalRay& r, const Interval& s, Dual<Interval>& g) {
+bool along_smooth(const ImplicitSurface& f, const ImplicitRay& r, const Interval& s, Dual<Interval>& g) {
     const Dual<Interval> x[] = {{coordinate(r.o.x, r.d.x, s), Interval(r.d.x), Interval(0.0)},
                                 {coordinate(r.o.y, r.d.y, s), Interval(r.d.y), Interval(0.0)},
                                 {coordinate(r.o.z, r.d.z, s), Interval(r.d.z), Interval(0.0)}};
@@ -78,7 +78,7 @@ bool along_smooth(const ImplicitSurface& f, const LocalRay& r, const Interval& s
 class RootFinder {
 public:
     // Roots with s in [s0, s1] (the box) and t = base + s in (t_min, t_max).
-    RootFinder(const ImplicitSurface& f, const LocalRay& r, double s0, double s1, double t_min, double t_max, double e,
+    RootFinder(const ImplicitSurface& f, const ImplicitRay& r, double s0, double s1, double t_min, double t_max, double e,
                bool all)
         : f_(f), r_(r), s0_(s0), s1_(s1), t_min_(t_min), t_max_(t_max), e_(e), all_(all) {}
 
@@ -88,7 +88,15 @@ public:
         } else {
             by_interval_newton();
         }
-        return std::move(roots_);
+        // The eigenvalues' candidates are in order, but polishing may carry one past the next
+        // (near a root of high multiplicity): nearest first, each root once, and for a first
+        // hit the nearest of all.
+        std::sort(roots_.begin(), roots_.end(), [](const ImplicitRoot& a, const ImplicitRoot& b) { return a.t < b.t; });
+        std::vector<ImplicitRoot> roots;
+        for (const ImplicitRoot& root : roots_)
+            if (roots.empty() || root.t - roots.back().t > e_) roots.push_back(root);
+        if (!all_ && roots.size() > 1) roots.erase(roots.begin() + 1, roots.end());
+        return roots;
     }
 
 private:
@@ -162,7 +170,6 @@ private:
             } else if (kind) {
                 report(polished, *kind);
             }
-            if (done()) return;
         }
     }
 
@@ -222,7 +229,7 @@ private:
     }
 
     const ImplicitSurface& f_;
-    const LocalRay& r_;
+    const ImplicitRay& r_;
     double s0_, s1_, t_min_, t_max_, e_;
     bool all_;
     std::vector<ImplicitRoot> roots_;
@@ -246,7 +253,7 @@ std::vector<ImplicitRoot> roots_along(const ImplicitSurface& f, const Ray& ray, 
     }
     if (!(t0 <= t1) || !std::isfinite(t0) || !std::isfinite(t1)) return {};
     const double e = kRootBound * glm::length(f.box_hi - f.box_lo) / glm::length(d);
-    const LocalRay r{o + t0 * d, d, t0};
+    const ImplicitRay r{o + t0 * d, d, t0};
     return RootFinder(f, r, 0.0, t1 - t0, t_min, t_max, e, all).run();
 }
 

@@ -16,12 +16,14 @@
 // This shares nothing with the GPU's intersector beyond the surface's evaluation.
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
 #include "cpu/shapes/parametric_tree.hpp"
+#include "cpu/shapes/ray_planes.hpp"
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
@@ -33,7 +35,6 @@ using surface::Interval;
 constexpr double kInflation = 0.01;       // of a box's width, for the Krawczyk test
 constexpr double kTinyFraction = 1e-10;   // of the surface's size: a box this small is a root
 constexpr double kNearMiss = 1e-12;       // of the surface's size: closer than this is a hit
-constexpr double kPlaneAngle = 0.7137;    // turns the plane pair off axis-aligned iso-curves
 
 thread_local int last_boxes = 0;
 
@@ -42,24 +43,17 @@ struct Root {
 };
 
 // The ray in the surface's frame, and two planes that contain it.
-struct LocalRay {
+struct ParametricRay {
     dvec3 o, d, n1, n2;
     double dd;  // |d|^2
 };
 
-LocalRay local_ray(const ParametricTree& tree, const Ray& ray) {
-    LocalRay r;
+ParametricRay parametric_ray(const ParametricTree& tree, const Ray& ray) {
+    ParametricRay r;
     r.o = dvec3(tree.to_local * glm::dvec4(ray.origin, 1.0));
     r.d = glm::dmat3(tree.to_local) * ray.dir;
     r.dd = glm::dot(r.d, r.d);
-    dvec3 dn = r.d / std::sqrt(r.dd);
-    dvec3 a = std::abs(dn.x) <= std::abs(dn.y) && std::abs(dn.x) <= std::abs(dn.z) ? dvec3(1, 0, 0)
-              : std::abs(dn.y) <= std::abs(dn.z)                               ? dvec3(0, 1, 0)
-                                                                                : dvec3(0, 0, 1);
-    dvec3 e1 = glm::normalize(glm::cross(dn, a));
-    dvec3 e2 = glm::cross(dn, e1);
-    r.n1 = std::cos(kPlaneAngle) * e1 + std::sin(kPlaneAngle) * e2;
-    r.n2 = glm::cross(dn, r.n1);
+    std::tie(r.n1, r.n2) = ray_planes(r.d / std::sqrt(r.dd));
     return r;
 }
 
@@ -76,7 +70,7 @@ struct Item {
 
 class Search {
 public:
-    Search(const ParametricTree& tree, const LocalRay& ray, double t_min, double t_max)
+    Search(const ParametricTree& tree, const ParametricRay& ray, double t_min, double t_max)
         : tree_(tree), r_(ray), t_min_(t_min), t_best_(t_max), heap_(scratch_heap()) {
         heap_.clear();
         du_ = tree.u1 - tree.u0;
@@ -310,7 +304,7 @@ private:
     }
 
     const ParametricTree& tree_;
-    const LocalRay& r_;
+    const ParametricRay& r_;
     double t_min_, t_best_;
     double du_, dv_;
     std::vector<Item>& heap_;
@@ -325,7 +319,7 @@ std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const R
     last_boxes = 0;
     const ParametricTree& tree = parametric_tree(s);
     if (!tree.invertible || tree.nodes.empty()) return std::nullopt;
-    LocalRay r = local_ray(tree, ray);
+    ParametricRay r = parametric_ray(tree, ray);
     if (!(r.dd > 0.0) || !std::isfinite(r.dd) || !std::isfinite(r.o.x + r.o.y + r.o.z)) return std::nullopt;
     auto root = Search(tree, r, t_min, t_max).run();
     if (!root) return std::nullopt;

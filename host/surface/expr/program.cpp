@@ -101,17 +101,21 @@ int count_operations(const Program& program) {
 }
 
 template <class T>
-const T* evaluate_all_nodes(const Program& program, const T& u, const T& v) {
-    const T uv[] = {u, v};
+const T* evaluate_all_nodes(const Program& program, std::span<const T> variables) {
     T* values = scratch_values<T>(program.nodes.size());
-    evaluate_nodes(program.nodes.data(), static_cast<int>(program.nodes.size()), uv, values);
+    evaluate_nodes(program.nodes.data(), static_cast<int>(program.nodes.size()), variables.data(), values);
     return values;
 }
 
 template <class T>
+const T* evaluate_all_nodes(const Program& program, const T& u, const T& v) {
+    const T uv[] = {u, v};
+    return evaluate_all_nodes<T>(program, std::span<const T>(uv));
+}
+
+template <class T>
 void evaluate_program(const Program& program, std::span<const T> variables, T* out) {
-    T* values = scratch_values<T>(program.nodes.size());
-    evaluate_nodes(program.nodes.data(), static_cast<int>(program.nodes.size()), variables.data(), values);
+    const T* values = evaluate_all_nodes<T>(program, variables);
     for (std::size_t i = 0; i < program.outputs.size(); ++i) out[i] = values[program.outputs[i]];
 }
 
@@ -181,5 +185,7 @@ template const double* evaluate_all_nodes(const Program&, const double&, const d
 template const Interval* evaluate_all_nodes(const Program&, const Interval&, const Interval&);
 template const Dual<double>* evaluate_all_nodes(const Program&, const Dual<double>&, const Dual<double>&);
 template const Dual<GpuFloat>* evaluate_all_nodes(const Program&, const Dual<GpuFloat>&, const Dual<GpuFloat>&);
+template const Dual<double>* evaluate_all_nodes(const Program&, std::span<const Dual<double>>);
+template const Dual<GpuFloat>* evaluate_all_nodes(const Program&, std::span<const Dual<GpuFloat>>);
 
 }  // namespace lancer::surface

@@ -48,6 +48,8 @@ extern template void evaluate_program(const Program&, const Dual<GpuFloat>&, con
 // thread, valid until the next evaluation of this type).
 template <class T>
 const T* evaluate_all_nodes(const Program& program, const T& u, const T& v);
+template <class T>
+const T* evaluate_all_nodes(const Program& program, std::span<const T> variables);
 
 // Dual<Interval> evaluation over a box that also reports whether every operation is proved
 // defined, continuous and differentiable on the whole box: the condition under which the

@@ -1,0 +1,132 @@
+// The disk cache of specialised tracer modules: a hit is used as it is, anything else (no entry,
+// a damaged or foreign one, an unwritable directory, the cache switched off) gives exactly what
+// specialising gives.
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <gtest/gtest.h>
+
+#include "gpu/embedded_shaders.hpp"
+#include "gpu/spirv_cache.hpp"
+#include "gpu/spirv_specialize.hpp"
+#include "support/test_support.hpp"
+
+namespace lancer {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SpirvCache : public ::testing::Test {
+protected:
+    void SetUp() override {
+        // ctest runs each test in its own process, in parallel: one directory per test.
+        const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        dir_ = test::fresh_dir("spirv-cache-" + name);
+        ::setenv("LANCER_CACHE_DIR", dir_.c_str(), 1);
+        ::unsetenv("LANCER_CACHE_DISABLE");
+        features_.has_sphere = true;
+        features_.has_plane = true;
+    }
+    void TearDown() override { ::unsetenv("LANCER_CACHE_DIR"); }
+
+    std::vector<fs::path> entries() const {
+        std::vector<fs::path> found;
+        for (const auto& e : fs::directory_iterator(dir_)) found.push_back(e.path());
+        return found;
+    }
+
+    std::string dir_;
+    gpu::ShaderFeatures features_;
+    const std::vector<std::uint32_t> spirv_ = gpu::embedded_trace_spirv();
+};
+
+TEST_F(SpirvCache, AMissIsSpecialisedAndStoredAHitIsReadBack) {
+    const std::vector<std::uint32_t> fresh = gpu::specialize_spirv(spirv_, features_);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+    ASSERT_EQ(entries().size(), 1u);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+    EXPECT_EQ(entries().size(), 1u);
+    gpu::ShaderFeatures other = features_;
+    other.has_box = true;
+    EXPECT_EQ(gpu::cached_specialization(spirv_, other), gpu::specialize_spirv(spirv_, other));
+    EXPECT_EQ(entries().size(), 2u) << "one entry per feature set";
+}
+
+// A hit is not specialised again: an entry whose words were swapped for other (valid) ones, with
+// its checksum made to match, is what comes back.
+TEST_F(SpirvCache, AMatchingEntryIsUsedAsItIs) {
+    gpu::cached_specialization(spirv_, features_);
+    ASSERT_EQ(entries().size(), 1u);
+    gpu::ShaderFeatures other = features_;
+    other.has_box = true;
+    const std::vector<std::uint32_t> stand_in = gpu::specialize_spirv(spirv_, other);
+    ASSERT_NE(stand_in, gpu::specialize_spirv(spirv_, features_));
+    // Rewrite the entry with the stand-in's words: the header's first 24 bytes (magic, input
+    // hash, features) stay; length and checksum are the stand-in's, taken from its own entry.
+    const fs::path entry = entries()[0];
+    fs::remove_all(dir_ + "/other");
+    ::setenv("LANCER_CACHE_DIR", (dir_ + "/other").c_str(), 1);
+    gpu::cached_specialization(spirv_, other);
+    ASSERT_FALSE(fs::is_empty(dir_ + "/other"));
+    const fs::path other_entry = fs::directory_iterator(dir_ + "/other")->path();
+    std::ifstream a(entry, std::ios::binary), b(other_entry, std::ios::binary);
+    std::vector<char> mine((std::istreambuf_iterator<char>(a)), {}), theirs((std::istreambuf_iterator<char>(b)), {});
+    std::copy(mine.begin(), mine.begin() + 24, theirs.begin());
+    std::ofstream(entry, std::ios::binary | std::ios::trunc).write(theirs.data(), std::streamsize(theirs.size()));
+    ::setenv("LANCER_CACHE_DIR", dir_.c_str(), 1);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), stand_in);
+}
+
+TEST_F(SpirvCache, DamagedOrTruncatedEntriesAreSpecialisedAgain) {
+    const std::vector<std::uint32_t> fresh = gpu::specialize_spirv(spirv_, features_);
+    gpu::cached_specialization(spirv_, features_);
+    const fs::path entry = entries().at(0);
+    const auto size = fs::file_size(entry);
+    {
+        std::fstream f(entry, std::ios::binary | std::ios::in | std::ios::out);
+        f.seekp(std::streamoff(size - 7));
+        f.put('\x5a');  // one byte of the module
+    }
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+    fs::resize_file(entry, size / 2);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+    fs::resize_file(entry, 3);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+    EXPECT_EQ(fs::file_size(entry), size) << "written back whole";
+}
+
+// Editing shaders makes an entry per edit: the oldest go once there are 256.
+TEST_F(SpirvCache, KeepsAtMost256EntriesTheNewestOnes) {
+    const auto long_ago = fs::file_time_type::clock::now() - std::chrono::hours(24);
+    for (int i = 0; i < 300; ++i) {
+        const std::string old = dir_ + "/tracer-old-" + std::to_string(i) + ".spv";
+        std::ofstream(old) << "an entry of another module";
+        fs::last_write_time(old, long_ago + std::chrono::seconds(i));
+    }
+    gpu::cached_specialization(spirv_, features_);
+    const std::vector<fs::path> kept = entries();
+    EXPECT_EQ(kept.size(), 256u);
+    EXPECT_FALSE(fs::exists(dir_ + "/tracer-old-44.spv"));
+    EXPECT_TRUE(fs::exists(dir_ + "/tracer-old-45.spv"));
+    EXPECT_EQ(std::count_if(kept.begin(), kept.end(), [](const fs::path& p) { return p.filename().string().rfind("tracer-old-", 0) != 0; }), 1);
+}
+
+TEST_F(SpirvCache, SwitchedOffOrUnwritableItStillSpecialises) {
+    const std::vector<std::uint32_t> fresh = gpu::specialize_spirv(spirv_, features_);
+    ::setenv("LANCER_CACHE_DISABLE", "1", 1);
+    EXPECT_FALSE(gpu::spirv_cache_directory());
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+    EXPECT_TRUE(entries().empty());
+    ::unsetenv("LANCER_CACHE_DISABLE");
+    const std::string file = dir_ + "/a-file";
+    std::ofstream(file) << "not a directory";
+    ::setenv("LANCER_CACHE_DIR", (file + "/cache").c_str(), 1);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+}
+
+}  // namespace
+}  // namespace lancer
