@@ -240,10 +240,12 @@ LANCER_CONST GRID_SCATTER = 5;
 // With refine_count > 0 the band is a compact list of pixels instead (adaptive anti-aliasing):
 // entry i = y * width + x of the `rows` rows covers the pixel refined_pixel_at(i), for
 // i < refine_count, and writes pixels[i]; y0 is unused. Every lane of the band but the last
-// row's tail has a pixel to trace.
+// row's tail has a pixel to trace. With spread = 1 it also writes the per-channel smallest and
+// largest of the pixel's sample colours to pixels[refine_count + i] and pixels[2 refine_count + i]
+// (adaptive anti-aliasing by the spread of a pixel's samples: render/adaptive_render.hpp).
 #define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS)                      \
     SCALARS(uint, y0, uint, rows, uint, sample_first, uint, sample_count) \
-    SCALARS(uint, refine_count, uint, reserved0, uint, reserved1, uint, reserved2)
+    SCALARS(uint, refine_count, uint, spread, uint, reserved1, uint, reserved2)
 
 // The structs themselves, and their size in rows (Name_ROWS), from the lists above.
 #define LANCER_MEMBER_VEC4(name) vec4 name;

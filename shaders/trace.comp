@@ -253,19 +253,33 @@ void main() {
     uint last = min(band.sample_first + band.sample_count, total);
     vec3 sum = vec3(0.0);
     float rays = 0.0;
+    bool spread = band.spread != 0u;  // only with a list (see BandParams)
+    uint lo_index = band.refine_count + out_index, hi_index = 2u * band.refine_count + out_index;
+    vec3 hi = vec3(-uintBitsToFloat(0x7f800000u)), lo = -hi;  // -inf, +inf
     if (band.sample_first > 0u) {  // continue the sums of the passes before (see BandParams)
         sum = pixels[out_index].rgb;
         rays = pixels[out_index].a;
+        if (spread) {
+            lo = pixels[lo_index].rgb;
+            hi = pixels[hi_index].rgb;
+        }
     }
     bool marked = rays < 0.0;  // an earlier pass was cut short
     for (uint k = band.sample_first; k < last; ++k) {
         uvec2 ij = uvec2(k % frame.samples, k / frame.samples);
         uint seed = hash_u32(hash_u32(hash_u32(pixel.x) ^ pixel.y) ^ k);
-        sum += trace(camera_ray(vec2(pixel) + (vec2(ij) + 0.5) / n), seed, rays);
+        vec3 c = trace(camera_ray(vec2(pixel) + (vec2(ij) + 0.5) / n), seed, rays);
+        sum += c;
+        lo = min(lo, c);
+        hi = max(hi, c);
     }
     if (marked || (CHECK_LOOP_LIMIT && loop_limit_reached())) {
         pixels[out_index] = vec4(0.0, 0.0, 0.0, -1.0);
         return;
     }
     pixels[out_index] = last == total ? vec4(sum / (n * n), rays) : vec4(sum, rays);
+    if (spread) {
+        pixels[lo_index] = vec4(lo, 0.0);
+        pixels[hi_index] = vec4(hi, 0.0);
+    }
 }

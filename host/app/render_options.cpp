@@ -62,9 +62,16 @@ void add_render_options(CLI::App& cmd, RenderOptions& o) {
     cmd.add_option("--samples", o.samples, "N: an N x N grid of rays per pixel (default 3 = 9 rays)")
         ->check(CLI::Range(1, limits::kMaxSamples));
     cmd.add_option("--aa-threshold", o.aa_threshold,
-                   "T: adaptive anti-aliasing as POV-Ray's +AM1 +A<T>: one ray per pixel, the full N x N grid where a "
+                   "T: adaptive anti-aliasing as POV-Ray's +A<T>: one ray per pixel, finer grids up to N x N where a "
                    "pixel differs from a neighbour by more than T (|dr|+|dg|+|db| of the sRGB colours, 0..3; POV-Ray's default 0.3)")
         ->check(CLI::Validator(check_aa_threshold, "T in [0, 3]"));
+    cmd.add_option("--aa-depth", o.aa_depth,
+                   "R: adaptive refinements, each on a finer grid up to N x N (default 1: straight to N x N, POV-Ray's +AM1)")
+        ->check(CLI::Range(1, limits::kMaxSamples - 1));
+    cmd.add_option("--aa-method", o.aa_method,
+                   "What sends a refined pixel on to the next grid: neighbours (default; its colour against its "
+                   "neighbours') or spread (its own samples', as POV-Ray's +AM2)")
+        ->check(CLI::IsMember({"neighbours", "spread"}));
     cmd.add_option("--max-depth", o.max_depth, "Levels of reflection and refraction (default 5)")->check(CLI::Range(0, limits::kMaxDepth));
     cmd.add_option("--exposure", o.exposure, "Stops: the PNG shows the image times 2^EV (overrides [render] exposure)")
         ->check(CLI::Range(-64.0, 64.0));
@@ -114,6 +121,11 @@ Scene load_scene_with_overrides(const RenderOptions& o) {
     }
     if (scene.photons) check_photon_lights(scene);  // --photons on a scene whose lights have no power
     if (o.aa_threshold) r.aa_threshold = *o.aa_threshold;
+    if (o.aa_depth) r.aa_depth = *o.aa_depth;
+    if (!o.aa_method.empty()) r.aa_method = o.aa_method == "spread" ? AaMethod::Spread : AaMethod::Neighbours;
+    if (o.samples || o.aa_threshold || o.aa_depth || !o.aa_method.empty())
+        if (auto problem = adaptive_settings_problem(r, o.aa_depth.has_value(), !o.aa_method.empty()))
+            throw UserError(problem->message + " (the scene's [render] with the command line's options)");
     if (scene.photons && r.aa_threshold)
         throw UserError("adaptive anti-aliasing (--aa-threshold, [render] aa_threshold) does not combine with photon "
                         "mapping, which traces one camera ray per pixel per pass");
@@ -177,12 +189,12 @@ long peak_rss_mib() {
     return usage.ru_maxrss / 1024;  // KiB on Linux
 }
 
-std::string camera_rays_summary(int samples, long long pixels, long long refined) {
+std::string camera_rays_summary(int samples, long long pixels, long long refined, long long camera_rays) {
     const int grid = samples * samples;
     if (refined < 0) return fmt::format("{} rays/pixel", grid);
     const double share = pixels > 0 ? double(refined) / double(pixels) : 0.0;
-    return fmt::format("{:.2f} rays/pixel on average ({:.1f}% of pixels refined to {})", 1.0 + share * grid,
-                       100.0 * share, grid);
+    const double per_pixel = pixels > 0 ? double(camera_rays) / double(pixels) : 0.0;
+    return fmt::format("{:.2f} rays/pixel on average ({:.1f}% of pixels refined, up to {})", per_pixel, 100.0 * share, grid);
 }
 
 }  // namespace lancer

@@ -22,6 +22,8 @@ struct RenderOptions {
     std::optional<int> photons, passes;
     std::string pass_range;
     std::optional<double> aa_threshold;
+    std::optional<int> aa_depth;
+    std::string aa_method;
     std::string backend = "gpu";
     std::string device;
     std::string shader_dir;  // compile the tracer from these sources at run time (development)
@@ -48,8 +50,8 @@ std::unique_ptr<Renderer> make_renderer(const RenderOptions& o);
 long peak_rss_mib();
 
 // The summary line's camera rays: "9 rays/pixel", or for adaptive anti-aliasing (refined >= 0:
-// how many of the `pixels` got the full grid) "1.84 rays/pixel on average (10.5% of pixels
-// refined to 9)": one ray per pixel, plus N x N for each refined one.
-std::string camera_rays_summary(int samples, long long pixels, long long refined);
+// how many of the `pixels` were refined at least once, camera_rays: how many rays they all got)
+// "1.84 rays/pixel on average (10.5% of pixels refined, up to 9)".
+std::string camera_rays_summary(int samples, long long pixels, long long refined, long long camera_rays);
 
 }  // namespace lancer

@@ -131,7 +131,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
         std::vector<double> times;
         std::vector<int> written;
         double rays = 0.0;
-        long long pixels = 0, refined = -1;  // refined: -1 unless adaptive (camera_rays_summary)
+        long long pixels = 0, refined = -1, camera_rays = 0;  // refined: -1 unless adaptive (camera_rays_summary)
         // Frames are written whole (write_png is atomic) or not at all: an interrupt stops the
         // frame in progress, and the frames before it stay as they are, to be resumed.
         auto stop = [&](int k, const std::string& path) {
@@ -163,7 +163,10 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
             times.push_back(seconds_since(frame_start));
             rays += image.total_rays();
             pixels += static_cast<long long>(image.pixels.size());
-            if (image.refined_pixels >= 0) refined = std::max(0LL, refined) + image.refined_pixels;
+            if (image.refined_pixels >= 0) {
+                refined = std::max(0LL, refined) + image.refined_pixels;
+                camera_rays += image.camera_rays;
+            }
             progress.end(times.back());
         }
         double total = std::accumulate(times.begin(), times.end(), 0.0);
@@ -172,7 +175,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
             "{}: rendered {} frame(s): {}, {}x{}, {}, {}: start-up {:.3f} s, first frame {:.3f} s, "
             "then {:.3f} s/frame, {:.2f} Mrays/s, peak RSS {} MiB",
             pattern->text(), todo.size(), format_frame_list(todo), r.width, r.height,
-            camera_rays_summary(r.samples, pixels, refined),
+            camera_rays_summary(r.samples, pixels, refined, camera_rays),
             renderer->description(), startup, times.front(), later, rays / total / 1e6, peak_rss_mib()));
         renderer.reset();  // tear Vulkan down before counting validation messages
         if (int code = gpu::exit_code_after_validation(0)) return code;

@@ -37,7 +37,8 @@ int render_still(const RenderOptions& options, const Scene& scene, const std::st
     double rays = image.total_rays();
     std::string per_pixel =
         scene.photons ? fmt::format("{} passes of {} photons and 1 camera ray/pixel", info.passes, scene.photons->count)
-                      : camera_rays_summary(r.samples, static_cast<long long>(image.pixels.size()), image.refined_pixels);
+                      : camera_rays_summary(r.samples, static_cast<long long>(image.pixels.size()), image.refined_pixels,
+                                            image.camera_rays);
     progress.finish(fmt::format("{}: {}x{}, {}, {}: {:.3f} s, {:.2f} Mrays/s ({:.1f} M rays), peak RSS {} MiB", output,
                                 r.width, r.height, per_pixel, renderer->description(), seconds, rays / seconds / 1e6,
                                 rays / 1e6, peak_rss_mib()));

@@ -15,7 +15,7 @@
 #include "cpu/lights.hpp"
 #include "cpu/photon_tracer.hpp"
 #include "cpu/tracer.hpp"
-#include "image/adaptive.hpp"
+#include "render/adaptive_render.hpp"
 #include "scene/camera.hpp"
 
 namespace lancer {
@@ -31,61 +31,59 @@ std::string CpuRenderer::description() const {
 
 FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     if (scene.photons) return render_photons(scene, progress);
-    if (!scene.render.aa_threshold) return render_grid(scene, {}, progress);
-    // Adaptive: one ray per pixel (exactly a one-sample render), then the full grid of the
-    // pixels that differ from a neighbour (exactly those pixels of a full render).
-    Scene one_ray = scene;
-    one_ray.render.samples = 1;
-    const double first_share = 0.1;
-    FloatImage image = render_grid(one_ray, {}, [&](double f) { return !progress || progress(f * first_share); });
-    const std::vector<std::uint32_t> pixels = pixels_to_refine(image, *scene.render.aa_threshold);
-    std::vector<char> selected(image.pixels.size(), 0);
-    for (std::uint32_t p : pixels) selected[p] = 1;
-    FloatImage grid = render_grid(scene, selected, [&](double f) {
-        return !progress || progress(first_share + f * (1.0 - first_share));
-    });
-    std::vector<glm::vec4> refined;
-    refined.reserve(pixels.size());
-    for (std::uint32_t p : pixels) refined.push_back(grid.pixels[p]);
-    merge_refined(image, pixels, refined);
-    image.refined_pixels = static_cast<long long>(pixels.size());
-    return image;
+    if (!scene.render.aa_threshold) return render_grid(scene, progress);
+    return render_adaptive(
+        scene, [&](const Scene& s, const ProgressFn& p) { return render_grid(s, p); },
+        [&](const Scene& s, const std::vector<std::uint32_t>& pixels, bool spread, const ProgressFn& p) {
+            return render_listed(s, pixels, spread, p);
+        },
+        progress);
 }
 
-FloatImage CpuRenderer::render_grid(const Scene& scene, const std::vector<char>& selected, const ProgressFn& progress) {
-    const RenderSettings& rs = scene.render;
-    const cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
-    const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
-    FloatImage image(rs.width, rs.height);
+namespace {
 
-    std::atomic<int> next_row{0};
-    std::atomic<int> rows_done{0};
+// The pixel's N x N grid of samples, in the order every backend traces them; rgb = their mean,
+// a = the rays traced. With `spread`, also the per-channel extremes of the samples' colours.
+glm::vec4 trace_pixel(const cpu::Tracer& tracer, const CameraBasis& cam, const RenderSettings& rs, int x, int y,
+                      ListedPixel* spread = nullptr) {
+    const int n = rs.samples;
+    dvec3 sum(0.0), lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    double rays = 0.0;
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            double sx = x + (i + 0.5) / n;
+            double sy = y + (j + 0.5) / n;
+            dvec3 dir = glm::normalize(camera_ray_direction(cam, sx, sy, rs.width, rs.height));
+            auto seed = cpu::camera_sample_seed(x, y, std::uint32_t(j * n + i));
+            const dvec3 c = tracer.trace({cam.eye, dir}, seed, rays);
+            sum += c;
+            lo = glm::min(lo, c);
+            hi = glm::max(hi, c);
+        }
+    }
+    if (spread) {
+        spread->lo = glm::vec3(lo);
+        spread->hi = glm::vec3(hi);
+    }
+    dvec3 c = sum / double(n * n);
+    return glm::vec4(float(c.r), float(c.g), float(c.b), float(rays));
+}
+
+}  // namespace
+
+void CpuRenderer::run_parallel(std::size_t count, std::size_t chunk, const std::function<void(std::size_t)>& work,
+                               const ProgressFn& progress) const {
+    const std::size_t chunks = (count + chunk - 1) / chunk;
+    std::atomic<std::size_t> next{0}, done{0};
     std::atomic<bool> cancelled{false};
     std::mutex progress_mutex;
-    const int n = rs.samples;
-
     auto worker = [&] {
-        for (int y; (y = next_row.fetch_add(1)) < rs.height && !cancelled;) {
-            for (int x = 0; x < rs.width; ++x) {
-                if (!selected.empty() && !selected[std::size_t(y) * rs.width + x]) continue;
-                dvec3 sum(0.0);
-                double rays = 0.0;
-                for (int j = 0; j < n; ++j) {
-                    for (int i = 0; i < n; ++i) {
-                        double sx = x + (i + 0.5) / n;
-                        double sy = y + (j + 0.5) / n;
-                        dvec3 dir = glm::normalize(camera_ray_direction(cam, sx, sy, rs.width, rs.height));
-                        auto seed = cpu::camera_sample_seed(x, y, std::uint32_t(j * n + i));
-                        sum += tracer.trace({cam.eye, dir}, seed, rays);
-                    }
-                }
-                dvec3 c = sum / double(n * n);
-                image.at(x, y) = glm::vec4(float(c.r), float(c.g), float(c.b), float(rays));
-            }
-            int done = ++rows_done;
+        for (std::size_t c; (c = next.fetch_add(1)) < chunks && !cancelled;) {
+            for (std::size_t i = c * chunk; i < std::min(count, (c + 1) * chunk); ++i) work(i);
+            const std::size_t finished = ++done;
             if (progress) {
                 std::lock_guard lock(progress_mutex);
-                if (!cancelled && !progress(double(done) / rs.height)) cancelled = true;
+                if (!cancelled && !progress(double(finished) / double(chunks))) cancelled = true;
             }
         }
     };
@@ -94,7 +92,37 @@ FloatImage CpuRenderer::render_grid(const Scene& scene, const std::vector<char>&
     worker();
     for (auto& t : pool) t.join();
     if (cancelled) throw RenderCancelled();
+}
+
+FloatImage CpuRenderer::render_grid(const Scene& scene, const ProgressFn& progress) {
+    const RenderSettings& rs = scene.render;
+    const cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
+    const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
+    FloatImage image(rs.width, rs.height);
+    run_parallel(
+        std::size_t(rs.height), 1,
+        [&](std::size_t y) {
+            for (int x = 0; x < rs.width; ++x) image.at(x, int(y)) = trace_pixel(tracer, cam, rs, x, int(y));
+        },
+        progress);
     return image;
+}
+
+std::vector<ListedPixel> CpuRenderer::render_listed(const Scene& scene, const std::vector<std::uint32_t>& pixels,
+                                                    bool spread, const ProgressFn& progress) {
+    const RenderSettings& rs = scene.render;
+    const cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
+    const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
+    std::vector<ListedPixel> listed(pixels.size());
+    // Chunks of a row's length: as many progress reports as a full render's rows.
+    run_parallel(
+        pixels.size(), std::size_t(rs.width),
+        [&](std::size_t i) {
+            const int x = int(pixels[i] % std::uint32_t(rs.width)), y = int(pixels[i] / std::uint32_t(rs.width));
+            listed[i].colour = trace_pixel(tracer, cam, rs, x, y, spread ? &listed[i] : nullptr);
+        },
+        progress);
+    return listed;
 }
 
 FloatImage CpuRenderer::render_photons(const Scene& scene, const ProgressFn& progress) {
@@ -113,9 +141,10 @@ FloatImage CpuRenderer::render_photons(const Scene& scene, const ProgressFn& pro
                                    photon_radius(ps.caustic_radius, ps.alpha, pass),
                                    photon_radius(ps.global_radius, ps.alpha, pass));
         tracer.use_photons(&maps);
-        std::atomic<int> next_row{0};
-        auto worker = [&] {
-            for (int y; (y = next_row.fetch_add(1)) < rs.height;) {
+        run_parallel(
+            std::size_t(rs.height), 1,
+            [&](std::size_t row) {
+                const int y = int(row);
                 for (int x = 0; x < rs.width; ++x) {
                     cpu::PassSample s = cpu::photon_pass_sample(x, y, n, static_cast<std::uint32_t>(pass));
                     dvec3 dir = glm::normalize(camera_ray_direction(cam, x + s.dx, y + s.dy, rs.width, rs.height));
@@ -123,12 +152,8 @@ FloatImage CpuRenderer::render_photons(const Scene& scene, const ProgressFn& pro
                     sum[std::size_t(y) * rs.width + x] += tracer.trace({cam.eye, dir}, s.seed, rays);
                     image.at(x, y).a += float(rays);
                 }
-            }
-        };
-        std::vector<std::thread> pool;
-        for (unsigned t = 1; t < threads_; ++t) pool.emplace_back(worker);
-        worker();
-        for (auto& t : pool) t.join();
+            },
+            {});
         tracer.use_photons(nullptr);
         if (progress && !progress(double(pass + 1 - first) / (last - first))) throw RenderCancelled();
     }

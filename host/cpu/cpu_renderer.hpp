@@ -2,6 +2,7 @@
 #include <vector>
 
 #include "accel/bvh.hpp"
+#include "render/adaptive_render.hpp"
 #include "render/renderer.hpp"
 
 namespace lancer {
@@ -21,9 +22,15 @@ private:
     // Photon mapping: per pass, a photon map and one camera sample per pixel; the image is the
     // mean of the passes (docs/scene-format.md, "Photon mapping").
     FloatImage render_photons(const Scene& scene, const ProgressFn& progress);
-    // The full N x N grid of the pixels where `selected` is nonzero (all when it is empty); the
-    // others are left zero.
-    FloatImage render_grid(const Scene& scene, const std::vector<char>& selected, const ProgressFn& progress);
+    // Every pixel's N x N grid.
+    FloatImage render_grid(const Scene& scene, const ProgressFn& progress);
+    // The listed pixels' N x N grids (adaptive anti-aliasing: render/adaptive_render.hpp).
+    std::vector<ListedPixel> render_listed(const Scene& scene, const std::vector<std::uint32_t>& pixels, bool spread,
+                                           const ProgressFn& progress);
+    // work(i) for i < count on every thread, `chunk` at a time in order of i; progress after
+    // each chunk, and RenderCancelled once a chunk's report has cancelled.
+    void run_parallel(std::size_t count, std::size_t chunk, const std::function<void(std::size_t)>& work,
+                      const ProgressFn& progress) const;
 
     unsigned threads_;
     Acceleration acceleration_;

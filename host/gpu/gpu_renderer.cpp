@@ -14,7 +14,7 @@
 #include "gpu/submit.hpp"
 #include "gpu/surface_codegen.hpp"
 #include "gpu/vk_check.hpp"
-#include "image/adaptive.hpp"
+#include "render/adaptive_render.hpp"
 
 namespace lancer {
 namespace {
@@ -191,22 +191,21 @@ FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
         render_with(scene, false, {0, all}, image, progress);
         return image;
     }
-    // Adaptive: one ray per pixel (exactly a one-sample render), then the full grid of the
-    // pixels that differ from a neighbour (exactly those pixels of a full render), dispatched
-    // over the compact list of them. The list is made on the host: the one-ray picture comes
-    // back to the host anyway (band by band), and choosing from it costs a few comparisons
-    // per pixel, nothing beside tracing; the choice is then one function for both backends.
-    Scene one_ray = scene;
-    one_ray.render.samples = 1;
-    const double first_share = 0.1;
-    render_with(one_ray, false, {0, 1}, image, [&](double f) { return !progress || progress(f * first_share); });
-    const std::vector<std::uint32_t> pixels = pixels_to_refine(image, *scene.render.aa_threshold);
-    const std::vector<glm::vec4> refined = render_list(scene, pixels, [&](double f) {
-        return !progress || progress(first_share + f * (1.0 - first_share));
-    });
-    merge_refined(image, pixels, refined);
-    image.refined_pixels = static_cast<long long>(pixels.size());
-    return image;
+    // Adaptive: each refinement is dispatched over the compact list of its pixels. The list is
+    // made on the host: the picture comes back to the host anyway (band by band), and choosing
+    // from it costs a few comparisons per pixel, nothing beside tracing; the choice is then one
+    // function for both backends.
+    return render_adaptive(
+        scene,
+        [&](const Scene& one_ray, const ProgressFn& p) {
+            FloatImage every_pixel;
+            render_with(one_ray, false, {0, 1}, every_pixel, p);
+            return every_pixel;
+        },
+        [&](const Scene& grid, const std::vector<std::uint32_t>& pixels, bool spread, const ProgressFn& p) {
+            return render_list(grid, pixels, spread, p);
+        },
+        progress);
 }
 
 void GpuRenderer::render_passes(const Scene& scene, int first, int last, FloatImage& sums, const ProgressFn& progress) {
@@ -323,23 +322,33 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
     }
 }
 
-std::vector<glm::vec4> GpuRenderer::render_list(const Scene& scene, const std::vector<std::uint32_t>& pixels,
-                                                const ProgressFn& progress) {
+std::vector<ListedPixel> GpuRenderer::render_list(const Scene& scene, const std::vector<std::uint32_t>& pixels,
+                                                  bool spread, const ProgressFn& progress) {
     const RenderSettings& rs = scene.render;
     const auto width = static_cast<std::uint32_t>(rs.width);
     const auto all = static_cast<std::uint32_t>(rs.samples * rs.samples);
     const std::size_t rows = band_rows(rs, all);
     const gpu::ShaderFeatures features = prepare_band_output(scene, false, rows, progress);
-    std::vector<glm::vec4> refined(pixels.size());
-    const std::size_t per_band = rows * width;
+    std::vector<ListedPixel> refined(pixels.size());
+    // With the spread, each pixel's colour is followed by its samples' extremes (BandParams):
+    // a third as many pixels per band, in the same output buffer.
+    const std::size_t per_band = std::max<std::size_t>(1, rows * width / (spread ? 3 : 1));
     for (std::size_t first = 0; first < pixels.size(); first += per_band) {
         const std::size_t entries = std::min(per_band, pixels.size() - first);
         const auto rows_here = static_cast<std::uint32_t>((entries + width - 1) / width);
         resources_.write_refine_list(pixels.data() + first, entries);
-        const gpu::BandParams params{0, rows_here, 0, all, static_cast<std::uint32_t>(entries), 0, 0, 0};
+        const gpu::BandParams params{0, rows_here, 0, all, static_cast<std::uint32_t>(entries), spread ? 1u : 0u, 0, 0};
         const double done = double(first) / double(pixels.size());
         dispatch_checked(params, width, entries, nullptr, features.check_loop_limit, done, progress);
-        std::memcpy(&refined[first], resources_.output(0).data(), entries * sizeof(gpu::vec4));
+        const auto* out = static_cast<const glm::vec4*>(resources_.output(0).data());
+        for (std::size_t i = 0; i < entries; ++i) {
+            ListedPixel& p = refined[first + i];
+            p.colour = out[i];
+            if (spread) {
+                p.lo = glm::vec3(out[entries + i]);
+                p.hi = glm::vec3(out[2 * entries + i]);
+            }
+        }
         if (progress && !progress(double(first + entries) / double(pixels.size()))) throw RenderCancelled();
     }
     return refined;

@@ -13,6 +13,7 @@
 #include "gpu/pipeline.hpp"
 #include "gpu/shader_compiler.hpp"
 #include "gpu/trace_resources.hpp"
+#include "render/adaptive_render.hpp"
 #include "render/renderer.hpp"
 
 namespace lancer {
@@ -80,10 +81,11 @@ private:
     // Photon mapping: passes [first, last) of the scene's render into `sums` (which holds the
     // passes before `first`); the render's last pass leaves the mean of all of them.
     void render_passes(const Scene& scene, int first, int last, FloatImage& sums, const ProgressFn& progress);
-    // The full grid of each pixel in `pixels` (y * width + x), in that order: bands of the
-    // compact list, every lane with a pixel (BandParams::refine_count).
-    std::vector<glm::vec4> render_list(const Scene& scene, const std::vector<std::uint32_t>& pixels,
-                                       const ProgressFn& progress);
+    // The full grid of each pixel in `pixels` (y * width + x), in that order, and with `spread`
+    // its samples' extremes: bands of the compact list, every lane with a pixel
+    // (BandParams::refine_count).
+    std::vector<ListedPixel> render_list(const Scene& scene, const std::vector<std::uint32_t>& pixels, bool spread,
+                                         const ProgressFn& progress);
     // Rows per band for dispatches of `samples_per_dispatch` samples per pixel.
     std::size_t band_rows(const RenderSettings& rs, std::uint32_t samples_per_dispatch) const;
     // Uploads the scene, selects its pipeline (and runs a photon pass when `photon_pass` >= 0)

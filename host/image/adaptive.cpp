@@ -4,8 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <glm/vec3.hpp>
-
 namespace lancer {
 
 double color_difference(const glm::vec4& a, const glm::vec4& b) {
@@ -14,18 +12,43 @@ double color_difference(const glm::vec4& a, const glm::vec4& b) {
     return d;
 }
 
-std::vector<std::uint32_t> pixels_to_refine(const FloatImage& one_ray, double threshold) {
-    const int w = one_ray.width, h = one_ray.height;
-    std::vector<char> refine(std::size_t(w) * h, threshold <= 0.0);
-    if (threshold > 0.0) {
-        // Each pair of neighbours once: to the right and below.
-        for (int y = 0; y < h; ++y) {
-            for (int x = 0; x < w; ++x) {
-                const std::size_t i = std::size_t(y) * w + x;
-                if (x + 1 < w && color_difference(one_ray.pixels[i], one_ray.pixels[i + 1]) > threshold)
-                    refine[i] = refine[i + 1] = 1;
-                if (y + 1 < h && color_difference(one_ray.pixels[i], one_ray.pixels[i + w]) > threshold)
-                    refine[i] = refine[i + w] = 1;
+double sample_spread(const glm::vec3& lo, const glm::vec3& hi) {
+    return color_difference(glm::vec4(lo, 0.0f), glm::vec4(hi, 0.0f));
+}
+
+int max_aa_depth(int samples) { return std::max(1, samples - 1); }
+
+std::vector<int> aa_grid_levels(int samples, int depth) {
+    if (samples <= 1) return {1};
+    depth = std::clamp(depth, 1, max_aa_depth(samples));
+    std::vector<int> grids{1};
+    for (int k = 1; k <= depth; ++k) {
+        // Evenly in log(grid), but each larger than the last and leaving room for the ones after.
+        const int ideal = int(std::lround(std::pow(double(samples), double(k) / depth)));
+        grids.push_back(std::clamp(ideal, grids.back() + 1, samples - (depth - k)));
+    }
+    return grids;
+}
+
+std::vector<std::uint32_t> pixels_to_refine(const FloatImage& image, double threshold,
+                                            const std::vector<char>& candidates) {
+    const int w = image.width, h = image.height;
+    auto candidate = [&](std::size_t i) { return candidates.empty() || candidates[i]; };
+    std::vector<char> refine(std::size_t(w) * h, 0);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * w + x;
+            if (threshold <= 0.0) {
+                refine[i] = candidate(i);
+                continue;
+            }
+            // Each pair of neighbours once: to the right and below.
+            for (std::size_t j : {x + 1 < w ? i + 1 : i, y + 1 < h ? i + w : i}) {
+                if (j == i || !(candidate(i) || candidate(j))) continue;
+                if (color_difference(image.pixels[i], image.pixels[j]) > threshold) {
+                    refine[i] |= candidate(i);
+                    refine[j] |= candidate(j);
+                }
             }
         }
     }
@@ -35,10 +58,10 @@ std::vector<std::uint32_t> pixels_to_refine(const FloatImage& one_ray, double th
     return pixels;
 }
 
-void merge_refined(FloatImage& one_ray, const std::vector<std::uint32_t>& pixels, const std::vector<glm::vec4>& refined) {
+void merge_refined(FloatImage& image, const std::vector<std::uint32_t>& pixels, const std::vector<glm::vec4>& refined) {
     if (pixels.size() != refined.size()) throw std::logic_error("merge_refined: one colour per refined pixel");
     for (std::size_t i = 0; i < pixels.size(); ++i) {
-        glm::vec4& p = one_ray.pixels[pixels[i]];
+        glm::vec4& p = image.pixels[pixels[i]];
         p = glm::vec4(glm::vec3(refined[i]), p.a + refined[i].a);
     }
 }

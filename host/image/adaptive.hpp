@@ -1,8 +1,11 @@
 #pragma once
-// Adaptive anti-aliasing (POV-Ray's +AM1), the part both renderers share: which pixels of a
-// one-ray-per-pixel picture get the full N x N grid, and how the two pictures are combined.
+// Adaptive anti-aliasing, the part both renderers share: the grids of the refinements, which
+// pixels of a picture go on to the next grid, and how the pictures are combined. The order of
+// the passes is render/adaptive_render.hpp's.
 #include <cstdint>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "image/image.hpp"
 
@@ -13,13 +16,29 @@ namespace lancer {
 // dark (a checker line in shadow) differs by a few hundredths and would never be refined.
 double color_difference(const glm::vec4& a, const glm::vec4& b);
 
-// The pixels (y * width + x, ascending) of `one_ray` that differ from one of their four
-// neighbours by more than `threshold`: both pixels of such a pair, as POV-Ray refines both.
-// A threshold of 0 selects every pixel, so that T = 0 gives the full grid everywhere.
-std::vector<std::uint32_t> pixels_to_refine(const FloatImage& one_ray, double threshold);
+// How far a pixel's samples spread: POV-Ray's difference between the per-channel smallest and
+// largest of their linear colours `lo` and `hi`, sRGB-encoded as color_difference() measures.
+// It is at least the largest difference between two of the samples, and equals it when one
+// sample is the darkest in every channel and another the brightest (the usual case: an edge).
+double sample_spread(const glm::vec3& lo, const glm::vec3& hi);
 
-// Writes the refined pixels' colours (refined[i] for pixel pixels[i]) into `one_ray`; a pixel's
-// ray count becomes its first ray's plus its grid's, so the counts say what was traced.
-void merge_refined(FloatImage& one_ray, const std::vector<std::uint32_t>& pixels, const std::vector<glm::vec4>& refined);
+// The grid sizes a pixel goes through, 1 x 1 first and `samples` x `samples` last: depth + 1 of
+// them (fewer when `samples` has too few grids between), spread evenly in log(grid), e.g.
+// samples 3: depth 1 -> 1, 3; depth 2 -> 1, 2, 3. samples 8, depth 3 -> 1, 2, 4, 8.
+std::vector<int> aa_grid_levels(int samples, int depth);
+
+// The most refinements `samples` allows: one grid size per refinement, each larger than the last.
+int max_aa_depth(int samples);
+
+// The pixels (y * width + x, ascending) among `candidates` (all when empty) that differ from one
+// of their four neighbours by more than `threshold`: both pixels of such a pair when both are
+// candidates, as POV-Ray refines both. A threshold of 0 selects every candidate, so that T = 0
+// ends with the full grid everywhere.
+std::vector<std::uint32_t> pixels_to_refine(const FloatImage& image, double threshold,
+                                            const std::vector<char>& candidates = {});
+
+// Writes the refined pixels' colours (refined[i] for pixel pixels[i]) into `image`; a pixel's
+// ray count becomes its earlier rays' plus these, so the counts say what was traced.
+void merge_refined(FloatImage& image, const std::vector<std::uint32_t>& pixels, const std::vector<glm::vec4>& refined);
 
 }  // namespace lancer

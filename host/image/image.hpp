@@ -18,9 +18,11 @@ struct FloatImage {
     int width = 0;
     int height = 0;
     std::vector<glm::vec4> pixels;  // row-major, row 0 at the top
-    // Adaptive anti-aliasing (image/adaptive.hpp): the pixels that got the full N x N grid, the
-    // others having one ray; -1 when the render was not adaptive (every pixel got the grid).
+    // Adaptive anti-aliasing (render/adaptive_render.hpp): the pixels refined at least once,
+    // and the camera rays traced in all (the first ray of every pixel and every refinement's
+    // grids); -1 when the render was not adaptive (every pixel got the full grid).
     long long refined_pixels = -1;
+    long long camera_rays = -1;
 
     FloatImage() = default;
     FloatImage(int w, int h) : width(w), height(h), pixels(static_cast<std::size_t>(w) * h, glm::vec4(0.0f)) {}

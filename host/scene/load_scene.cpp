@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/file_reading.hpp"
+#include "image/adaptive.hpp"
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
 #include "scene/parse_animation.hpp"
@@ -33,6 +34,10 @@ void read_render(TableReader& t, RenderSettings& r) {
     r.samples = check_int_range(t, "samples", t.integer("samples", r.samples), 1, limits::kMaxSamples);
     if (t.has("aa_threshold"))
         r.aa_threshold = check_range(t, "aa_threshold", t.number("aa_threshold", 0.0), 0.0, 3.0);
+    r.aa_depth = check_int_range(t, "aa_depth", t.integer("aa_depth", r.aa_depth), 1, limits::kMaxSamples - 1);
+    r.aa_method = static_cast<AaMethod>(one_of(t, "aa_method", "adaptive anti-aliasing method", {"neighbours", "spread"}, "neighbours"));
+    if (auto problem = adaptive_settings_problem(r, t.has("aa_depth"), t.has("aa_method")))
+        t.fail(problem->key, problem->message);
     r.max_depth = check_int_range(t, "max_depth", t.integer("max_depth", r.max_depth), 0, limits::kMaxDepth);
     r.background = check_color(t, "background", t.vec3("background", r.background));
     r.tone.exposure = check_range(t, "exposure", t.number("exposure", r.tone.exposure), -64.0, 64.0);
@@ -182,6 +187,24 @@ void for_each_table(const toml::array& array, const std::string& file, const std
 }
 
 }  // namespace
+
+std::optional<SettingProblem> adaptive_settings_problem(const RenderSettings& r, bool depth_given, bool method_given) {
+    if (!r.aa_threshold) {
+        if (depth_given) return SettingProblem{"aa_depth", "aa_depth needs aa_threshold: without a threshold every pixel gets the full grid"};
+        if (method_given) return SettingProblem{"aa_method", "aa_method needs aa_threshold: without a threshold every pixel gets the full grid"};
+        return std::nullopt;
+    }
+    const std::vector<int> grids = aa_grid_levels(r.samples, r.aa_depth);
+    if (r.aa_depth > int(grids.size()) - 1 && r.samples > 1)
+        return SettingProblem{"aa_depth", fmt::format("aa_depth {}: samples {} has grids for at most {} refinement{}, each "
+                                                      "finer than the last; raise samples or lower aa_depth",
+                                                      r.aa_depth, r.samples, max_aa_depth(r.samples),
+                                                      max_aa_depth(r.samples) == 1 ? "" : "s")};
+    if (r.aa_method == AaMethod::Spread && r.aa_depth < 2)
+        return SettingProblem{"aa_method", "aa_method = \"spread\" needs aa_depth of at least 2: a pixel's first ray has "
+                                           "no spread, so its first refinement is chosen by its neighbours alone"};
+    return std::nullopt;
+}
 
 PhotonSettings photon_defaults(const CameraSpec& camera) {
     // The radii are fractions of the distance the camera looks at, a scale of the picture: the

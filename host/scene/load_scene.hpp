@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -16,5 +17,14 @@ Scene parse_scene(std::string_view text, const std::string& path);
 // Photon mapping's settings where a scene gives none ([photons] keys left out, or --photons on
 // a scene without the table): radii scaled to the distance from the camera to what it looks at.
 PhotonSettings photon_defaults(const CameraSpec& camera);
+
+// Why adaptive anti-aliasing cannot run as these settings ask ("" when it can); `depth_given`
+// and `method_given`: whether aa_depth and aa_method were set, which means nothing without
+// aa_threshold. The scene loader reports it at the key, the command line after its overrides.
+struct SettingProblem {
+    std::string key;  // the [render] key at fault
+    std::string message;
+};
+std::optional<SettingProblem> adaptive_settings_problem(const RenderSettings& r, bool depth_given, bool method_given);
 
 }  // namespace lancer

@@ -23,14 +23,22 @@ namespace lancer {
 
 using glm::dvec3;
 
+// What makes adaptive anti-aliasing refine a pixel again after a grid (after its first ray it is
+// always judged by its neighbours): its colour against its neighbours' (POV-Ray's +AM1), or
+// that and also the spread of its own samples (as POV-Ray's +AM2 judges a pixel by its corners).
+enum class AaMethod { Neighbours, Spread };
+
 struct RenderSettings {
     int width = 640;
     int height = 480;
     int samples = 3;    // an N x N grid of rays per pixel (with aa_threshold: the most a pixel gets)
-    // Adaptive anti-aliasing (POV-Ray's +AM1): one ray per pixel, then the full N x N grid for
-    // the pixels whose colour differs from a neighbour's by more than this (|dr| + |dg| + |db|,
-    // colours in 0..1; 0 refines every pixel). Unset: every pixel gets the full grid.
+    // Adaptive anti-aliasing (render/adaptive_render.hpp): one ray per pixel, then finer grids
+    // up to N x N for the pixels whose colour differs by more than this (|dr| + |dg| + |db|,
+    // sRGB colours in 0..1; 0 refines every pixel) from a neighbour's or, with AaMethod::Spread,
+    // also among the pixel's own samples. Unset: every pixel gets the full grid.
     std::optional<double> aa_threshold;
+    int aa_depth = 1;  // refinements: grids 1 x 1, ..., N x N (1: straight to N x N, POV-Ray's +AM1)
+    AaMethod aa_method = AaMethod::Neighbours;
     int max_depth = 5;  // levels of reflection and refraction after the camera ray
     dvec3 background{0.0, 0.0, 0.0};
     // How linear radiance becomes the PNG's 8 bits (image/tone.hpp): exposure in stops, tone curve.

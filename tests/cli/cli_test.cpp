@@ -104,13 +104,38 @@ TEST(Cli, AaThresholdOptionIsTheRenderKeyAndReportsItsRays) {
     EXPECT_EQ(read_png(by_option).bytes, read_png(by_file).bytes);
     EXPECT_NE(read_png(by_option).bytes, read_png(full).bytes);
     EXPECT_NE(o.err.find(" rays/pixel on average ("), std::string::npos) << o.err;
-    EXPECT_NE(o.err.find("% of pixels refined to 9)"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("% of pixels refined, up to 9)"), std::string::npos) << o.err;
     // T = 0 refines everything: the full grid's bytes, and 1 + 9 camera rays per pixel.
     std::string zero = out_path("aa-zero");
     auto z = test::run_lancer("render " + test::source_path("scenes/seed.toml") + " --aa-threshold 0" + size + zero);
     ASSERT_EQ(z.exit_code, 0) << z.err;
     EXPECT_EQ(read_png(zero).bytes, read_png(full).bytes);
-    EXPECT_NE(z.err.find("10.00 rays/pixel on average (100.0% of pixels refined to 9)"), std::string::npos) << z.err;
+    EXPECT_NE(z.err.find("10.00 rays/pixel on average (100.0% of pixels refined, up to 9)"), std::string::npos) << z.err;
+    // In steps (1, 2 x 2, 3 x 3) by the spread too: the same bytes, 1 + 4 + 9 rays per pixel.
+    std::string steps = out_path("aa-steps");
+    auto d = test::run_lancer("render " + test::source_path("scenes/seed.toml") +
+                              " --aa-threshold 0 --aa-depth 2 --aa-method spread" + size + steps);
+    ASSERT_EQ(d.exit_code, 0) << d.err;
+    EXPECT_EQ(read_png(steps).bytes, read_png(full).bytes);
+    EXPECT_NE(d.err.find("14.00 rays/pixel on average (100.0% of pixels refined, up to 9)"), std::string::npos) << d.err;
+}
+
+// The settings of adaptive anti-aliasing that mean nothing, or cannot be met, are errors, after
+// the command line's overrides of the scene's [render] too.
+TEST(Cli, AdaptiveSettingsThatCannotRunAreErrors) {
+    const std::string seed = test::source_path("scenes/seed.toml") + " --width 8 --height 8 -o " + out_path("aa-refused");
+    const std::pair<const char*, const char*> cases[] = {
+        {" --aa-depth 2", "aa_depth needs aa_threshold"},
+        {" --aa-method spread", "aa_method needs aa_threshold"},
+        {" --aa-threshold 0.3 --aa-depth 3", "aa_depth 3: samples 3 has grids for at most 2 refinements"},
+        {" --aa-threshold 0.3 --aa-depth 2 --samples 2", "aa_depth 2: samples 2 has grids for at most 1 refinement,"},
+        {" --aa-threshold 0.3 --aa-method spread", "aa_method = \"spread\" needs aa_depth of at least 2"},
+    };
+    for (const auto& [args, message] : cases) {
+        auto r = test::run_lancer("render " + seed + args);
+        EXPECT_EQ(r.exit_code, 2) << args;
+        EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+    }
 }
 
 TEST(Cli, HelpVersionAndDevices) {

@@ -1,5 +1,5 @@
-// Adaptive anti-aliasing (POV-Ray's +AM1): one ray per pixel, the full N x N grid where a pixel
-// differs from a neighbour by more than the threshold. A refined pixel is exactly that pixel of a
+// Adaptive anti-aliasing: one ray per pixel, the full N x N grid (or finer grids in steps) where
+// a pixel differs from a neighbour, or its samples among themselves, by more than the threshold. A refined pixel is exactly that pixel of a
 // full render and an unrefined one exactly that pixel of a one-sample render, so both are checked
 // bit for bit; which pixels are refined is checked against the scene's geometry, found with the
 // reference tracer's own ray queries.
@@ -159,6 +159,106 @@ TEST_P(Adaptive, EdgeThresholdLooksLikeTheFullGrid) {
     test::expect_same_picture(std::string("adaptive_") + test::backend_name(GetParam()), adaptive, full);
     const ImageDiff at_default = compare_images(to_srgb8(test::render_on(GetParam(), seed(3, 0.3))), full, 4);
     EXPECT_GT(at_default.psnr_db, 40.0);
+}
+
+Scene deeper(int depth, AaMethod method, double threshold) {
+    Scene scene = seed(3, threshold);
+    scene.render.aa_depth = depth;
+    scene.render.aa_method = method;
+    return scene;
+}
+
+// Refining in steps (1, then 2 x 2, then 3 x 3) still ends on the full grid at T = 0, in either
+// method, every pixel having traced all three.
+TEST_P(Adaptive, ZeroThresholdInStepsIsTheFullGridBitForBit) {
+    const FloatImage full = test::render_on(GetParam(), seed(3, std::nullopt));
+    const FloatImage two = test::render_on(GetParam(), seed(2, std::nullopt));
+    const FloatImage one = test::render_on(GetParam(), seed(1, std::nullopt));
+    for (AaMethod method : {AaMethod::Neighbours, AaMethod::Spread}) {
+        const FloatImage adaptive = test::render_on(GetParam(), deeper(2, method, 0.0));
+        const auto pixels = static_cast<long long>(full.pixels.size());
+        EXPECT_EQ(adaptive.refined_pixels, pixels);
+        EXPECT_EQ(adaptive.camera_rays, pixels * (1 + 4 + 9));
+        for (std::size_t i = 0; i < full.pixels.size(); ++i) {
+            ASSERT_TRUE(same_rgb(adaptive.pixels[i], full.pixels[i])) << "pixel " << i;
+            ASSERT_EQ(adaptive.pixels[i].a, one.pixels[i].a + two.pixels[i].a + full.pixels[i].a) << "pixel " << i;
+        }
+    }
+}
+
+// The sRGB channel-wise spread of the 2 x 2 grid's samples of each pixel: the samples of pixel
+// (x, y) are the pixel centres (2x + i, 2y + j) of a one-ray render twice the size.
+std::vector<double> spread_of_two_by_two(const FloatImage& doubled) {
+    const int w = doubled.width / 2, h = doubled.height / 2;
+    std::vector<double> spread(std::size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            glm::vec3 lo(1e30f), hi(-1e30f);
+            for (int j = 0; j < 2; ++j)
+                for (int i = 0; i < 2; ++i) {
+                    const glm::vec3 c(doubled.at(2 * x + i, 2 * y + j));
+                    lo = glm::min(lo, c);
+                    hi = glm::max(hi, c);
+                }
+            spread[std::size_t(y) * w + x] = sample_spread(lo, hi);
+        }
+    return spread;
+}
+
+// In steps at POV-Ray's 0.3: each pixel is exactly the one-ray, the 2 x 2 or the 3 x 3 render's
+// pixel (its ray count says which), and it went on exactly when the rule says: after the first
+// ray by its neighbours; after the 2 x 2 grid by its neighbours in the picture as it then was
+// and, in the spread method, also by its own samples' spread.
+TEST_P(Adaptive, EachStepRefinesThePixelsItsRuleChooses) {
+    const double threshold = 0.3;
+    const FloatImage full = test::render_on(GetParam(), seed(3, std::nullopt));
+    const FloatImage two = test::render_on(GetParam(), seed(2, std::nullopt));
+    const FloatImage one = test::render_on(GetParam(), seed(1, std::nullopt));
+    Scene twice = seed(1, std::nullopt);
+    twice.render.width *= 2;
+    twice.render.height *= 2;
+    const std::vector<double> spread = spread_of_two_by_two(test::render_on(GetParam(), twice));
+
+    const std::vector<std::uint32_t> first = pixels_to_refine(one, threshold);
+    std::vector<char> after_first(one.pixels.size(), 0);
+    FloatImage between = one;  // the picture after the 2 x 2 step, before the last
+    for (std::uint32_t p : first) {
+        after_first[p] = 1;
+        between.pixels[p] = two.pixels[p];
+    }
+    std::vector<char> by_neighbours(one.pixels.size(), 0);
+    for (std::uint32_t p : pixels_to_refine(between, threshold, after_first)) by_neighbours[p] = 1;
+
+    for (AaMethod method : {AaMethod::Neighbours, AaMethod::Spread}) {
+        SCOPED_TRACE(method == AaMethod::Spread ? "spread" : "neighbours");
+        const FloatImage adaptive = test::render_on(GetParam(), deeper(2, method, threshold));
+        ASSERT_EQ(adaptive.refined_pixels, static_cast<long long>(first.size()));
+        long long rays = 0;
+        int by_spread_alone = 0;
+        for (std::size_t i = 0; i < one.pixels.size(); ++i) {
+            const float a = adaptive.pixels[i].a;
+            if (!after_first[i]) {
+                ASSERT_EQ(std::memcmp(&adaptive.pixels[i], &one.pixels[i], sizeof(glm::vec4)), 0) << "pixel " << i;
+                rays += 1;
+                continue;
+            }
+            const bool last_step = a == one.pixels[i].a + two.pixels[i].a + full.pixels[i].a;
+            ASSERT_TRUE(last_step || a == one.pixels[i].a + two.pixels[i].a) << "pixel " << i;
+            ASSERT_TRUE(same_rgb(adaptive.pixels[i], last_step ? full.pixels[i] : two.pixels[i])) << "pixel " << i;
+            rays += last_step ? 1 + 4 + 9 : 1 + 4;
+            // The spread is computed here from another render's rays: where it is within a
+            // level of the threshold, rounding may decide either way.
+            const bool spread_says = spread[i] > threshold + 1.5 / 255, spread_stops = spread[i] < threshold - 1.5 / 255;
+            if (method == AaMethod::Neighbours || (!spread_says && spread_stops)) {
+                EXPECT_EQ(last_step, bool(by_neighbours[i])) << "pixel " << i << ", spread " << spread[i];
+            } else if (spread_says) {
+                EXPECT_TRUE(last_step) << "pixel " << i << ", spread " << spread[i];
+                by_spread_alone += !by_neighbours[i];
+            }
+        }
+        EXPECT_EQ(adaptive.camera_rays, rays);
+        if (method == AaMethod::Spread) EXPECT_GT(by_spread_alone, 0) << "no pixel tested the spread";
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, Adaptive, ::testing::Values(test::Backend::Gpu, test::Backend::Cpu),
