@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # lancer's benchmark suite against POV-Ray 3.7 (a benchmark, never a test: speed is not asserted).
 #
-#   bench/run.sh [runs=3] [all|classic|implicit]
+#   bench/run.sh [runs=3] [all|classic|implicit|quality]
 #
 # For each suite scene, in one run so the ratios mean something on a shared, noisy machine:
 # lancer on the GPU path (lavapipe here), lancer's CPU reference, and POV-Ray rendering the same
@@ -17,6 +17,12 @@
 # sequences, clipped to the same box) where the function is a polynomial, and the `isosurface`
 # (Lipschitz subdivision: accuracy, and max_gradient measured over the box by the converter),
 # with PSNRs against the exact picture (POV's polynomial; for the gyroid, lancer's CPU reference).
+#
+# Quality per time (suite `quality`): for seed, many, teapot and glass, each renderer's long
+# reference (an 8 x 8 grid per pixel), then its full 3 x 3 grid and its adaptive anti-aliasing at
+# POV-Ray's default threshold (+A0.3 +AM1 +R3; lancer --aa-threshold 0.3), each with its wall
+# time, camera rays per pixel and PSNR against its own reference: what the picture costs to
+# within a given quality, whatever the two renderers' small differences of picture.
 #
 # Installs POV-Ray (and GNU time) with apt-get when missing: the benchmark's own setup, not the
 # main one.
@@ -69,6 +75,28 @@ run_pov() {  # pov width height name
   rm -f "$log" "$log.time"
 }
 
+# One timed run of lancer with options, the image to $out/NAME.png: "wall camera_rays_per_pixel".
+run_lancer_as() {  # name scene width height options...
+  local name=$1 scene=$2 w=$3 h=$4 log; log=$(mktemp)
+  shift 4
+  /usr/bin/time -f "%e" -o "$log.time" build/lancer render "$scene" --width "$w" --height "$h" "$@" \
+    -o "$out/$name.png" 2>"$log"
+  local spp; spp=$(grep "Mrays/s" "$log" | tail -n 1 | sed -E 's/.*, ([0-9.]+) rays\/pixel.*/\1/')
+  echo "$(cat "$log.time") $spp"
+  rm -f "$log" "$log.time"
+}
+
+# The same for POV-Ray: "wall samples_per_pixel" (its Smpls/Pxl).
+run_pov_as() {  # name pov width height options...
+  local name=$1 pov=$2 w=$3 h=$4 log; log=$(mktemp)
+  shift 4
+  /usr/bin/time -f "%e" -o "$log.time" povray +I"$pov" +O"$out/$name.png" +W"$w" +H"$h" "$@" -J +WT2 -D +FN \
+    >"$log" 2>&1
+  local spp; spp=$(sed -nE 's/.*Smpls\/Pxl: *([0-9.]+).*/\1/p' "$log" | tail -n 1)
+  echo "$(cat "$log.time") ${spp:-1}"
+  rm -f "$log" "$log.time"
+}
+
 # Median over `runs` of a runner's lines, column by column.
 measure() {
   local lines=()
@@ -78,8 +106,6 @@ measure() {
   echo "${cols[*]}"
 }
 
-printf '| scene | size | rays/pixel | renderer | wall s | render s | Mrays/s | peak MiB | POV wall / this |\n'
-printf '|---|---|---|---|---|---|---|---|---|\n'
 row() {  # scene size spp name "wall render rays mib" pov_wall
   read -r wall render rays mib <<<"$5"
   local mrays ratio
@@ -133,6 +159,47 @@ bench_scene() {  # scene width height cpu_width cpu_height [pov_variant]
   fi
 }
 
+# One scene's rows of the quality-per-time table; pov may be "" (no twin: only lancer's rows).
+bench_quality() {  # scene width height pov [why there is no twin]
+  local name=$1 w=$2 h=$3 pov=$4 toml=scenes/$1.toml
+  build/lancer render "$toml" --width 64 --height 36 -q -o "$out/warm.png"  # warm-up: Mesa's shader cache
+  quality_row() {  # renderer aa "wall spp" image reference
+    read -r wall spp <<<"$3"
+    local metric; metric=$(build/lancer diff "$4" "$5" | head -n 1)
+    local db; db=$(sed -nE 's/.*PSNR ([0-9.inf]+) dB.*/\1/p' <<<"$metric")
+    local off; off=$(sed -nE 's/.*dB, ([0-9.]+%) of pixels.*/\1/p' <<<"$metric")
+    printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "$name" "${w}x$h" "$1" "$2" "$wall" "$spp" "${db:-inf}" "${off:-0%}"
+  }
+  local ref full adaptive
+  ref=$(run_lancer_as "$name-q-lancer-ref" "$toml" "$w" "$h" --samples 8)
+  full=$(measure_q run_lancer_as "$name-q-lancer-full" "$toml" "$w" "$h")
+  adaptive=$(measure_q run_lancer_as "$name-q-lancer-adaptive" "$toml" "$w" "$h" --aa-threshold 0.3)
+  quality_row "lancer gpu" "8 x 8 (reference)" "$ref" "$out/$name-q-lancer-ref.png" "$out/$name-q-lancer-ref.png"
+  quality_row "lancer gpu" "3 x 3" "$full" "$out/$name-q-lancer-full.png" "$out/$name-q-lancer-ref.png"
+  quality_row "lancer gpu" "--aa-threshold 0.3" "$adaptive" "$out/$name-q-lancer-adaptive.png" "$out/$name-q-lancer-ref.png"
+  if [ -z "$pov" ]; then
+    printf '| %s | %s | POV-Ray | no twin: %s | - | - | - | - |\n' "$name" "${w}x$h" "$5"
+    return
+  fi
+  povray +I"$pov" +O"$out/warm.png" +W64 +H36 -D +FN >/dev/null 2>&1 || true
+  ref=$(run_pov_as "$name-q-pov-ref" "$pov" "$w" "$h" +A0.0 +AM1 +R8)
+  full=$(measure_q run_pov_as "$name-q-pov-full" "$pov" "$w" "$h" +A0.0 +AM1 +R3)
+  adaptive=$(measure_q run_pov_as "$name-q-pov-adaptive" "$pov" "$w" "$h" +A0.3 +AM1 +R3)
+  quality_row "POV-Ray 3.7, 2 threads" "+A0.0 +R8 (reference)" "$ref" "$out/$name-q-pov-ref.png" "$out/$name-q-pov-ref.png"
+  quality_row "POV-Ray 3.7, 2 threads" "+A0.0 +R3" "$full" "$out/$name-q-pov-full.png" "$out/$name-q-pov-ref.png"
+  quality_row "POV-Ray 3.7, 2 threads" "+A0.3 +AM1 +R3" "$adaptive" "$out/$name-q-pov-adaptive.png" "$out/$name-q-pov-ref.png"
+}
+# Median over `runs` of "wall spp" lines (the rays per pixel are the same every run).
+measure_q() {
+  local walls=() spp=""
+  for _ in $(seq 1 "$runs"); do
+    local line; line=$("$@")
+    walls+=("${line%% *}")
+    spp=${line##* }
+  done
+  echo "$(printf '%s\n' "${walls[@]}" | median) $spp"
+}
+
 psnr() {  # a b label: one line of lancer diff's metric
   echo "    $3: $(build/lancer diff "$1" "$2" | head -n 1)" >>"$out/psnr.txt"
 }
@@ -179,7 +246,9 @@ bench_implicit() {  # scene width height accuracy
 }
 
 : >"$out/psnr.txt"
-if [ "$suite" != implicit ]; then
+if [ "$suite" = all ] || [ "$suite" = classic ]; then
+  printf '| scene | size | rays/pixel | renderer | wall s | render s | Mrays/s | peak MiB | POV wall / this |\n'
+  printf '|---|---|---|---|---|---|---|---|---|\n'
   bench_scene seed 1280 720 1280 720
   bench_scene many 1280 720 1280 720
   bench_scene teapot 1280 720 320 180
@@ -187,6 +256,18 @@ if [ "$suite" != implicit ]; then
   # POV-Ray's parametric (Lipschitz subdivision) needs minutes for even a small torus image.
   bench_scene torus 160 90 160 90 parametric
 fi
+if [ "$suite" = all ] || [ "$suite" = quality ]; then
+  echo
+  echo "Quality per time (each renderer against its own 8 x 8 reference; wall time, median of $runs):"
+  echo
+  printf '| scene | size | renderer | anti-aliasing | wall s | camera rays/pixel | PSNR dB | pixels > 4/255 off |\n'
+  printf '|---|---|---|---|---|---|---|---|\n'
+  for scene in seed many teapot; do
+    bench_quality "$scene" 640 360 "$(pov_twin "$scene" parametric)"
+  done
+  bench_quality glass 640 360 "" "transmission and parametric surfaces of revolution are not translated"
+fi
+if [ "$suite" = quality ]; then exit 0; fi
 if [ "$suite" != classic ]; then
   echo
   printf '| scene | size | rays/pixel | renderer | wall s | render s | Mrays/s | peak MiB | POV isosurface wall / this |\n'

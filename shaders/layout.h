@@ -238,9 +238,10 @@ LANCER_CONST GRID_SCATTER = 5;
 // the pass that ends at sample N * N divides by N * N: passes add the same floats in the same
 // order as one full render, so progressive refinement ends on exactly that image.
 // With refine_count > 0 the band is a compact list of pixels instead (adaptive anti-aliasing):
-// entry i = y * width + x of the `rows` rows covers the pixel refined_pixel_at(i), for
-// i < refine_count, and writes pixels[i]; y0 is unused. Every lane of the band but the last
-// row's tail has a pixel to trace. With spread = 1 it also writes the per-channel smallest and
+// the dispatch of `rows` rows has an invocation for each entry i < refine_count, workgroup by
+// workgroup in order (entries [64 g, 64 g + 64) in workgroup g, counted row by row), which traces
+// the pixel refined_pixel_at(i) and writes pixels[i]; y0 is unused. Every lane but the last
+// workgroup's tail has a pixel to trace. With spread = 1 it also writes the per-channel smallest and
 // largest of the pixel's sample colours to pixels[refine_count + i] and pixels[2 refine_count + i]
 // (adaptive anti-aliasing by the spread of a pixel's samples: render/adaptive_render.hpp).
 #define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS)                      \

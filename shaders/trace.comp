@@ -227,15 +227,22 @@ bool loop_limit_reached() {
 }
 
 void main() {
-    if (gl_GlobalInvocationID.x >= frame.width || gl_GlobalInvocationID.y >= band.rows) return;
-    uint out_index = gl_GlobalInvocationID.y * frame.width + gl_GlobalInvocationID.x;
-    uvec2 pixel = uvec2(gl_GlobalInvocationID.x, band.y0 + gl_GlobalInvocationID.y);
-    if (band.refine_count > 0u) {  // a compact list of pixels (see BandParams)
+    uint out_index;
+    uvec2 pixel;
+    if (band.refine_count > 0u) {
+        // A compact list of pixels (see BandParams). A workgroup takes consecutive entries, which
+        // lie along the same edge: SIMD lanes then trace neighbouring pixels, as in a full band,
+        // where a workgroup's 8 x 8 tile of the list would take 8 pieces of edge far apart.
+        uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+        out_index = group * uint(WORKGROUP_X * WORKGROUP_Y) + gl_LocalInvocationIndex;
         if (out_index >= band.refine_count) return;
         uint p = refined_pixel_at(out_index);
         pixel = uvec2(p % frame.width, p / frame.width);
-    } else if (pixel.y >= frame.height) {
-        return;
+    } else {
+        if (gl_GlobalInvocationID.x >= frame.width || gl_GlobalInvocationID.y >= band.rows) return;
+        out_index = gl_GlobalInvocationID.y * frame.width + gl_GlobalInvocationID.x;
+        pixel = uvec2(gl_GlobalInvocationID.x, band.y0 + gl_GlobalInvocationID.y);
+        if (pixel.y >= frame.height) return;
     }
     if (OUTPUT_HITS) {
         vec4 hit = first_hit(vec2(pixel) + 0.5);

@@ -189,12 +189,5 @@ long peak_rss_mib() {
     return usage.ru_maxrss / 1024;  // KiB on Linux
 }
 
-std::string camera_rays_summary(int samples, long long pixels, long long refined, long long camera_rays) {
-    const int grid = samples * samples;
-    if (refined < 0) return fmt::format("{} rays/pixel", grid);
-    const double share = pixels > 0 ? double(refined) / double(pixels) : 0.0;
-    const double per_pixel = pixels > 0 ? double(camera_rays) / double(pixels) : 0.0;
-    return fmt::format("{:.2f} rays/pixel on average ({:.1f}% of pixels refined, up to {})", per_pixel, 100.0 * share, grid);
-}
 
 }  // namespace lancer

@@ -49,9 +49,5 @@ std::unique_ptr<Renderer> make_renderer(const RenderOptions& o);
 
 long peak_rss_mib();
 
-// The summary line's camera rays: "9 rays/pixel", or for adaptive anti-aliasing (refined >= 0:
-// how many of the `pixels` were refined at least once, camera_rays: how many rays they all got)
-// "1.84 rays/pixel on average (10.5% of pixels refined, up to 9)".
-std::string camera_rays_summary(int samples, long long pixels, long long refined, long long camera_rays);
 
 }  // namespace lancer

@@ -17,6 +17,7 @@
 #include "app/video.hpp"
 #include "gpu/context.hpp"
 #include "image/image.hpp"
+#include "render/adaptive_render.hpp"
 #include "scene/animation.hpp"
 
 namespace lancer {

@@ -9,6 +9,7 @@
 #include "app/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "gpu/context.hpp"
+#include "render/adaptive_render.hpp"
 
 namespace lancer {
 

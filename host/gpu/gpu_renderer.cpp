@@ -180,7 +180,9 @@ void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_p
     gpu::submit_and_wait(*context_, command_buffer_, fence_, progress, done);
 }
 
-FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
+FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) { return render_in_steps(scene, progress, {}); }
+
+FloatImage GpuRenderer::render_in_steps(const Scene& scene, const ProgressFn& progress, const AdaptiveStepFn& step) {
     FloatImage image;
     if (scene.photons) {
         render_passes(scene, scene.photons->first_pass, scene.photons->last_pass(), image, progress);
@@ -205,7 +207,7 @@ FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
         [&](const Scene& grid, const std::vector<std::uint32_t>& pixels, bool spread, const ProgressFn& p) {
             return render_list(grid, pixels, spread, p);
         },
-        progress);
+        progress, step);
 }
 
 void GpuRenderer::render_passes(const Scene& scene, int first, int last, FloatImage& sums, const ProgressFn& progress) {

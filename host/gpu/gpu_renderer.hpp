@@ -25,6 +25,9 @@ public:
 
     std::string description() const override;
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
+    // render(), and with adaptive anti-aliasing the picture after each of its steps to `step`
+    // (render/adaptive_render.hpp): the viewer shows them as they come.
+    FloatImage render_in_steps(const Scene& scene, const ProgressFn& progress, const AdaptiveStepFn& step);
     FloatImage render_hits(const Scene& scene) override;
     void prepare(const Scene& scene, const ProgressFn& progress) override;
     std::vector<std::string> notes() const override;

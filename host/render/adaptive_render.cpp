@@ -1,11 +1,13 @@
 #include "render/adaptive_render.hpp"
 
+#include <fmt/format.h>
+
 #include "image/adaptive.hpp"
 
 namespace lancer {
 
 FloatImage render_adaptive(const Scene& scene, const RenderEveryPixel& every_pixel, const RenderListedPixels& listed,
-                           const ProgressFn& progress) {
+                           const ProgressFn& progress, const AdaptiveStepFn& step) {
     const RenderSettings& rs = scene.render;
     const double threshold = *rs.aa_threshold;
     const std::vector<int> grids = aa_grid_levels(rs.samples, rs.aa_depth);
@@ -24,6 +26,8 @@ FloatImage render_adaptive(const Scene& scene, const RenderEveryPixel& every_pix
 
     std::vector<std::uint32_t> pixels;  // those the last pass traced (after the first: all)
     std::vector<ListedPixel> last;
+    const int steps = int(grids.size()) - 1;
+    int done = 0;
     for (std::size_t k = 1; k < grids.size(); ++k) {
         std::vector<char> candidates;
         if (k > 1) {
@@ -41,6 +45,7 @@ FloatImage render_adaptive(const Scene& scene, const RenderEveryPixel& every_pix
                 if (refine[p]) next.push_back(p);
         }
         if (next.empty()) break;
+        if (step) step(image, done, steps, false);
         pass.render.samples = grids[k];
         const bool spread = rs.aa_method == AaMethod::Spread && k + 1 < grids.size();
         last = listed(pass, next, spread, part(first_share + double(k - 1) * level_share, level_share));
@@ -51,8 +56,18 @@ FloatImage render_adaptive(const Scene& scene, const RenderEveryPixel& every_pix
         if (k == 1) image.refined_pixels = static_cast<long long>(next.size());
         image.camera_rays += static_cast<long long>(next.size()) * grids[k] * grids[k];
         pixels = std::move(next);
+        done = int(k);
     }
+    if (step) step(image, done, steps, true);
     return image;
+}
+
+std::string camera_rays_summary(int samples, long long pixels, long long refined, long long camera_rays) {
+    const int grid = samples * samples;
+    if (refined < 0) return fmt::format("{} rays/pixel", grid);
+    const double share = pixels > 0 ? double(refined) / double(pixels) : 0.0;
+    const double per_pixel = pixels > 0 ? double(camera_rays) / double(pixels) : 0.0;
+    return fmt::format("{:.2f} rays/pixel on average ({:.1f}% of pixels refined, up to {})", per_pixel, 100.0 * share, grid);
 }
 
 }  // namespace lancer

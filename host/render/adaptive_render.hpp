@@ -13,6 +13,7 @@
 // crosses (a checker line between the rows of a 2 x 2 grid); its neighbours see that edge.
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -36,9 +37,18 @@ using RenderEveryPixel = std::function<FloatImage(const Scene&, const ProgressFn
 using RenderListedPixels = std::function<std::vector<ListedPixel>(const Scene&, const std::vector<std::uint32_t>&,
                                                                   bool spread, const ProgressFn&)>;
 
+// Called with the picture after each step (0: every pixel's first ray) of at most `steps` more,
+// and whether it is the final one (progressive display: the viewer).
+using AdaptiveStepFn = std::function<void(const FloatImage& image, int step, int steps, bool final)>;
+
 // The adaptive render of `scene` (scene.render.aa_threshold is set); the image's refined_pixels
 // and camera_rays say what it traced.
 FloatImage render_adaptive(const Scene& scene, const RenderEveryPixel& every_pixel, const RenderListedPixels& listed,
-                           const ProgressFn& progress);
+                           const ProgressFn& progress, const AdaptiveStepFn& step = {});
+
+// The summary line's camera rays: "9 rays/pixel", or for adaptive anti-aliasing (refined >= 0:
+// how many of the `pixels` were refined at least once, camera_rays: how many rays they all got)
+// "1.84 rays/pixel on average (10.5% of pixels refined, up to 9)".
+std::string camera_rays_summary(int samples, long long pixels, long long refined, long long camera_rays);
 
 }  // namespace lancer

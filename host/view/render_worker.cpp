@@ -214,6 +214,10 @@ void RenderWorker::refine(const Scene& scene, std::uint64_t generation, bool mov
         if (changed_.wait_for(lock, kSettle, [&] { return !wanted_locked(generation); })) throw RenderCancelled();
     }
 
+    if (scene.render.aa_threshold && !scene.photons) {
+        refine_adaptive(scene, generation);
+        return;
+    }
     const std::uint32_t total = refinement_total(scene);
     auto view_start = Clock::now();
     FloatImage sums;
@@ -245,6 +249,39 @@ void RenderWorker::refine(const Scene& scene, std::uint64_t generation, bool mov
         }
         publish(std::move(f));
     }
+}
+
+// Adaptive anti-aliasing: its steps as passes, each picture as it comes (the first ray of every
+// pixel, then each refinement); the last is the picture `lancer render` makes.
+void RenderWorker::refine_adaptive(const Scene& scene, std::uint64_t generation) {
+    auto view_start = Clock::now(), start = view_start;
+    double rays_before = 0.0;
+    renderer_->render_in_steps(
+        scene, [&](double) { return still_wanted(generation); },
+        [&](const FloatImage& image, int step, int steps, bool final_pass) {
+            ShownFrame f = describe(scene, generation);
+            f.kind = final_pass ? ShownFrame::Kind::Final : ShownFrame::Kind::Pass;
+            f.pass = step + 1;
+            f.passes = final_pass ? step + 1 : steps + 1;
+            f.refined_pixels = image.refined_pixels;
+            f.camera_rays = image.camera_rays;
+            f.render_ms = ms_since(start);
+            if (step == 0) preview_divisor_ = preview_divisor_for(f.render_ms, kPreviewBudgetMs, kMaxPreviewDivisor);
+            auto convert_start = Clock::now();
+            f.image = final_pass ? to_srgb8(image, scene.render.tone) : quick_srgb8(image, 1.0f, scene.render.tone);
+            f.convert_ms = ms_since(convert_start);
+            f.view_ms = ms_since(view_start);
+            f.view_rays = image.total_rays();
+            f.rays = f.view_rays - rays_before;
+            rays_before = f.view_rays;
+            if (final_pass) {
+                std::lock_guard lock(mutex_);
+                refined_ = generation;
+                refined_image_ = f.image;
+            }
+            publish(std::move(f));
+            start = Clock::now();
+        });
 }
 
 void RenderWorker::run_save(const SaveJob& job) {

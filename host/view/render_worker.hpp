@@ -65,6 +65,7 @@ private:
     };
     void run();
     void refine(const Scene& scene, std::uint64_t generation, bool moving);
+    void refine_adaptive(const Scene& scene, std::uint64_t generation);
     void run_save(const SaveJob& job);
     void run_recording(const RecordingJob& job);
     bool run_reload(const std::string& shader_dir);  // false: did not compile

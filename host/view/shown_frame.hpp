@@ -17,6 +17,9 @@ struct ShownFrame {
     CameraSpec camera;
     int width = 0, height = 0, samples = 1;  // the scene's full image size and N of the N x N grid
     std::uint32_t samples_done = 0;          // Pass, Final: of the N x N grid
+    // Pass, Final of adaptive anti-aliasing: the pixels refined so far, and the camera rays
+    // traced in all (FloatImage's counts); -1 when the grid is refined in sample passes.
+    long long refined_pixels = -1, camera_rays = -1;
     int pass = 0, passes = 0;                // Pass, Final: 1-based index and count
     int preview_divisor = 1;                 // Preview: 1/divisor of each side, 1 sample per pixel
     double render_ms = 0.0;  // of this picture: the preview, the pass, the recorded frame

@@ -178,11 +178,11 @@ protected:
         write_png((dir / "help.png").string(), screen);
     }
 
-    // `lancer render` of the test scene with `camera`.
-    Rgb8Image render(const CameraSpec& camera, const std::string& name = "reference") {
+    // `lancer render` of the test scene with `camera` (and `options`).
+    Rgb8Image render(const CameraSpec& camera, const std::string& name = "reference", const std::string& options = "") {
         fs::path scene = dir / (name + ".toml"), png = dir / (name + ".png");
         test::write_file(scene, scene_text(camera));
-        auto r = test::run_lancer("render " + scene.string() + " -q -o " + png.string());
+        auto r = test::run_lancer("render " + scene.string() + options + " -q -o " + png.string());
         EXPECT_EQ(r.exit_code, 0) << r.err;
         return read_png(png.string());
     }
@@ -214,6 +214,22 @@ TEST_F(View, FirstPictureIsWhatLancerRenderMakesAndTheWindowShowsIt) {
     ASSERT_EQ(x->run("xdotool getwindowname " + window, &title), 0);
     EXPECT_EQ(title.rfind("lancer view | scene.toml | eye (0.00, 3.00, -8.00) | 9/9 samples in ", 0), 0u) << title;
     EXPECT_NE(title.find(" Mrays/s"), std::string::npos) << title;
+}
+
+// With adaptive anti-aliasing the view refines in its steps (the first ray of every pixel, then
+// each grid) and ends on the picture `lancer render` makes with the same options, byte for byte.
+TEST_F(View, AdaptiveAntiAliasingRefinesInStepsToWhatLancerRenderMakes) {
+    start({"--aa-threshold", "0.1", "--aa-depth", "2"});
+    const Rgb8Image rendered = render(file_camera(), "adaptive", " --aa-threshold 0.1 --aa-depth 2");
+    EXPECT_EQ(dump().bytes, rendered.bytes) << test::save_comparison("view-adaptive", dump(), rendered);
+    EXPECT_NE(dump().bytes, render(file_camera()).bytes);  // not the full grid's picture
+    std::string title;
+    ASSERT_EQ(x->run("xdotool getwindowname " + window, &title), 0);
+    EXPECT_NE(title.find(" | adaptive, done at step 3/3: "), std::string::npos) << title;
+    EXPECT_NE(title.find("% of pixels refined, up to 9)"), std::string::npos) << title;
+    const std::string text = log();
+    EXPECT_TRUE(std::regex_search(text, std::regex(R"(view: refined 96x54, [0-9.]+ rays/pixel on average \([0-9.]+% of pixels refined, up to 9\) in .* \(3 steps, )")))
+        << text;
 }
 
 TEST_F(View, RightArrowNTimesMovesTheCameraByNSteps) {
