@@ -230,25 +230,32 @@ void RenderWorker::refine(const Scene& scene, std::uint64_t generation, bool mov
         f.samples_done = passes[p].first + passes[p].count;
         f.pass = int(p) + 1;
         f.passes = int(passes.size());
-        bool final_pass = f.samples_done == total;
-        f.kind = final_pass ? ShownFrame::Kind::Final : ShownFrame::Kind::Pass;
+        f.kind = f.samples_done == total ? ShownFrame::Kind::Final : ShownFrame::Kind::Pass;
         f.render_ms = ms_since(start);
-        // A first pass is one sample at full size: what a preview at 1/d of each side costs d^2 less.
-        if (p == 0) preview_divisor_ = preview_divisor_for(f.render_ms, kPreviewBudgetMs, kMaxPreviewDivisor);
-        auto convert_start = Clock::now();
-        f.image = display_image(sums, f.samples_done, final_pass, scene.render.tone);
-        f.convert_ms = ms_since(convert_start);
-        f.view_ms = ms_since(view_start);
-        f.view_rays = sums.total_rays();
-        f.rays = f.view_rays - rays_before;
-        rays_before = f.view_rays;
-        if (final_pass) {
-            std::lock_guard lock(mutex_);
-            refined_ = generation;
-            refined_image_ = f.image;
-        }
-        publish(std::move(f));
+        const std::uint32_t samples_done = f.samples_done;
+        publish_pass(std::move(f), sums, samples_done, scene.render.tone, view_start, rays_before);
     }
+}
+
+void RenderWorker::publish_pass(ShownFrame f, const FloatImage& sums, std::uint32_t samples_done,
+                                const ToneMapping& tone, std::chrono::steady_clock::time_point view_start,
+                                double& rays_before) {
+    const bool final_pass = f.kind == ShownFrame::Kind::Final;
+    // A first pass is one sample at full size: what a preview at 1/d of each side costs d^2 less.
+    if (f.pass == 1) preview_divisor_ = preview_divisor_for(f.render_ms, kPreviewBudgetMs, kMaxPreviewDivisor);
+    auto convert_start = Clock::now();
+    f.image = display_image(sums, samples_done, final_pass, tone);
+    f.convert_ms = ms_since(convert_start);
+    f.view_ms = ms_since(view_start);
+    f.view_rays = sums.total_rays();
+    f.rays = f.view_rays - rays_before;
+    rays_before = f.view_rays;
+    if (final_pass) {
+        std::lock_guard lock(mutex_);
+        refined_ = f.generation;
+        refined_image_ = f.image;
+    }
+    publish(std::move(f));
 }
 
 // Adaptive anti-aliasing: its steps as passes, each picture as it comes (the first ray of every
@@ -266,20 +273,8 @@ void RenderWorker::refine_adaptive(const Scene& scene, std::uint64_t generation)
             f.refined_pixels = image.refined_pixels;
             f.camera_rays = image.camera_rays;
             f.render_ms = ms_since(start);
-            if (step == 0) preview_divisor_ = preview_divisor_for(f.render_ms, kPreviewBudgetMs, kMaxPreviewDivisor);
-            auto convert_start = Clock::now();
-            f.image = final_pass ? to_srgb8(image, scene.render.tone) : quick_srgb8(image, 1.0f, scene.render.tone);
-            f.convert_ms = ms_since(convert_start);
-            f.view_ms = ms_since(view_start);
-            f.view_rays = image.total_rays();
-            f.rays = f.view_rays - rays_before;
-            rays_before = f.view_rays;
-            if (final_pass) {
-                std::lock_guard lock(mutex_);
-                refined_ = generation;
-                refined_image_ = f.image;
-            }
-            publish(std::move(f));
+            // Its pixels are means already: nothing to divide.
+            publish_pass(std::move(f), image, 1, scene.render.tone, view_start, rays_before);
             start = Clock::now();
         });
 }

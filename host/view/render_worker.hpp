@@ -4,6 +4,7 @@
 // progress (GpuRenderer checks between bands), shows a fast preview if the camera is moving, then
 // refines pass by pass up to the scene's full anti-aliasing. Finished pictures are handed back
 // through take_frame(), newest first: the window only ever wants the latest.
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -66,6 +67,11 @@ private:
     void run();
     void refine(const Scene& scene, std::uint64_t generation, bool moving);
     void refine_adaptive(const Scene& scene, std::uint64_t generation);
+    // Publishes a pass of a refinement (`f` with its kind, pass and render time): the picture of
+    // `sums` (divided by `samples_done` unless it is the final one), the time and rays since
+    // the refinement began at `view_start`, and for the final one the picture p saves.
+    void publish_pass(ShownFrame f, const FloatImage& sums, std::uint32_t samples_done, const ToneMapping& tone,
+                      std::chrono::steady_clock::time_point view_start, double& rays_before);
     void run_save(const SaveJob& job);
     void run_recording(const RecordingJob& job);
     bool run_reload(const std::string& shader_dir);  // false: did not compile
