@@ -86,14 +86,17 @@ run_lancer_as() {  # name scene width height options...
   rm -f "$log" "$log.time"
 }
 
-# The same for POV-Ray: "wall samples_per_pixel" (its Smpls/Pxl).
+# The same for POV-Ray: "wall camera_rays_per_pixel". Its statistics count "Pixels" (a first ray
+# each, an extra row included) and "Samples" (the anti-aliasing's further rays).
 run_pov_as() {  # name pov width height options...
   local name=$1 pov=$2 w=$3 h=$4 log; log=$(mktemp)
   shift 4
   /usr/bin/time -f "%e" -o "$log.time" povray +I"$pov" +O"$out/$name.png" +W"$w" +H"$h" "$@" -J +WT2 -D +FN \
     >"$log" 2>&1
-  local spp; spp=$(sed -nE 's/.*Smpls\/Pxl: *([0-9.]+).*/\1/p' "$log" | tail -n 1)
-  echo "$(cat "$log.time") ${spp:-1}"
+  local pixels samples
+  pixels=$(sed -nE 's/^Pixels: *([0-9]+) .*/\1/p' "$log" | tail -n 1)
+  samples=$(sed -nE 's/.*Samples: *([0-9]+) .*/\1/p' "$log" | tail -n 1)
+  echo "$(cat "$log.time") $(awk -v p="${pixels:-0}" -v s="${samples:-0}" -v n=$((w * h)) 'BEGIN{printf "%.2f", (p + s) / n}')"
   rm -f "$log" "$log.time"
 }
 
