@@ -277,8 +277,10 @@ void main() {
         uint seed = hash_u32(hash_u32(hash_u32(pixel.x) ^ pixel.y) ^ k);
         vec3 c = trace(camera_ray(vec2(pixel) + (vec2(ij) + 0.5) / n), seed, rays);
         sum += c;
-        lo = min(lo, c);
-        hi = max(hi, c);
+        if (spread) {
+            lo = min(lo, c);
+            hi = max(hi, c);
+        }
     }
     if (marked || (CHECK_LOOP_LIMIT && loop_limit_reached())) {
         pixels[out_index] = vec4(0.0, 0.0, 0.0, -1.0);

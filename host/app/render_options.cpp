@@ -123,9 +123,8 @@ Scene load_scene_with_overrides(const RenderOptions& o) {
     if (o.aa_threshold) r.aa_threshold = *o.aa_threshold;
     if (o.aa_depth) r.aa_depth = *o.aa_depth;
     if (!o.aa_method.empty()) r.aa_method = o.aa_method == "spread" ? AaMethod::Spread : AaMethod::Neighbours;
-    if (o.samples || o.aa_threshold || o.aa_depth || !o.aa_method.empty())
-        if (auto problem = adaptive_settings_problem(r, o.aa_depth.has_value(), !o.aa_method.empty()))
-            throw UserError(problem->message + " (the scene's [render] with the command line's options)");
+    if (auto problem = adaptive_settings_problem(r, o.aa_depth.has_value(), !o.aa_method.empty()))
+        throw UserError(problem->message + " (the scene's [render] with the command line's options)");
     if (scene.photons && r.aa_threshold)
         throw UserError("adaptive anti-aliasing (--aa-threshold, [render] aa_threshold) does not combine with photon "
                         "mapping, which traces one camera ray per pixel per pass");
@@ -188,6 +187,5 @@ long peak_rss_mib() {
     ::getrusage(RUSAGE_SELF, &usage);
     return usage.ru_maxrss / 1024;  // KiB on Linux
 }
-
 
 }  // namespace lancer

@@ -49,5 +49,4 @@ std::unique_ptr<Renderer> make_renderer(const RenderOptions& o);
 
 long peak_rss_mib();
 
-
 }  // namespace lancer

@@ -57,8 +57,10 @@ glm::vec4 trace_pixel(const cpu::Tracer& tracer, const CameraBasis& cam, const R
             auto seed = cpu::camera_sample_seed(x, y, std::uint32_t(j * n + i));
             const dvec3 c = tracer.trace({cam.eye, dir}, seed, rays);
             sum += c;
-            lo = glm::min(lo, c);
-            hi = glm::max(hi, c);
+            if (spread) {
+                lo = glm::min(lo, c);
+                hi = glm::max(hi, c);
+            }
         }
     }
     if (spread) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace lancer {
 
@@ -56,14 +55,6 @@ std::vector<std::uint32_t> pixels_to_refine(const FloatImage& image, double thre
     for (std::size_t i = 0; i < refine.size(); ++i)
         if (refine[i]) pixels.push_back(static_cast<std::uint32_t>(i));
     return pixels;
-}
-
-void merge_refined(FloatImage& image, const std::vector<std::uint32_t>& pixels, const std::vector<glm::vec4>& refined) {
-    if (pixels.size() != refined.size()) throw std::logic_error("merge_refined: one colour per refined pixel");
-    for (std::size_t i = 0; i < pixels.size(); ++i) {
-        glm::vec4& p = image.pixels[pixels[i]];
-        p = glm::vec4(glm::vec3(refined[i]), p.a + refined[i].a);
-    }
 }
 
 }  // namespace lancer

@@ -1,7 +1,7 @@
 #pragma once
-// Adaptive anti-aliasing, the part both renderers share: the grids of the refinements, which
-// pixels of a picture go on to the next grid, and how the pictures are combined. The order of
-// the passes is render/adaptive_render.hpp's.
+// Adaptive anti-aliasing, the part both renderers share: the grids of the refinements and which
+// pixels of a picture go on to the next grid. The order of the passes, and how their pictures
+// are combined, is render/adaptive_render.hpp's.
 #include <cstdint>
 #include <vector>
 
@@ -36,9 +36,5 @@ int max_aa_depth(int samples);
 // ends with the full grid everywhere.
 std::vector<std::uint32_t> pixels_to_refine(const FloatImage& image, double threshold,
                                             const std::vector<char>& candidates = {});
-
-// Writes the refined pixels' colours (refined[i] for pixel pixels[i]) into `image`; a pixel's
-// ray count becomes its earlier rays' plus these, so the counts say what was traced.
-void merge_refined(FloatImage& image, const std::vector<std::uint32_t>& pixels, const std::vector<glm::vec4>& refined);
 
 }  // namespace lancer

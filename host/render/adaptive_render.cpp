@@ -49,10 +49,11 @@ FloatImage render_adaptive(const Scene& scene, const RenderEveryPixel& every_pix
         pass.render.samples = grids[k];
         const bool spread = rs.aa_method == AaMethod::Spread && k + 1 < grids.size();
         last = listed(pass, next, spread, part(first_share + double(k - 1) * level_share, level_share));
-        std::vector<glm::vec4> colours;
-        colours.reserve(last.size());
-        for (const ListedPixel& p : last) colours.push_back(p.colour);
-        merge_refined(image, next, colours);
+        // A refined pixel's colour is its last grid's; its ray count says all it traced.
+        for (std::size_t i = 0; i < next.size(); ++i) {
+            glm::vec4& p = image.pixels[next[i]];
+            p = glm::vec4(glm::vec3(last[i].colour), p.a + last[i].colour.a);
+        }
         if (k == 1) image.refined_pixels = static_cast<long long>(next.size());
         image.camera_rays += static_cast<long long>(next.size()) * grids[k] * grids[k];
         pixels = std::move(next);
