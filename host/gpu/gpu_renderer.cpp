@@ -126,7 +126,12 @@ std::string GpuRenderer::description() const {
 
 gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated) {
     const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
-    gpu::PackedScene packed = gpu::pack_scene(scene, {acceleration_, &bvh_cache_, &limits});
+    std::optional<gpu::PackedScene> fresh;
+    if (!packing_once_ || !packed_) {
+        (packing_once_ ? packed_ : fresh) = gpu::pack_scene(scene, {acceleration_, &bvh_cache_, &limits});
+        ++scenes_packed_;
+    }
+    const gpu::PackedScene& packed = fresh ? *fresh : *packed_;
     const std::vector<gpu::BufferNeed> needs = gpu::buffer_needs(packed, output_bytes);
     gpu::check_memory_budget(needs, limits);
     std::uint64_t buffer_bytes = 0;
@@ -183,6 +188,17 @@ void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_p
 FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) { return render_in_steps(scene, progress, {}); }
 
 FloatImage GpuRenderer::render_in_steps(const Scene& scene, const ProgressFn& progress, const AdaptiveStepFn& step) {
+    // A render's photon passes and adaptive steps differ only in what pack_frame writes (the
+    // pass, the grid), so the scene is packed once for all of them (a parametric surface's
+    // cells take 20-120 ms).
+    packing_once_ = true;
+    struct PackedOnce {
+        GpuRenderer& renderer;
+        ~PackedOnce() {
+            renderer.packing_once_ = false;
+            renderer.packed_.reset();
+        }
+    } packed_once{*this};
     FloatImage image;
     if (scene.photons) {
         render_passes(scene, scene.photons->first_pass, scene.photons->last_pass(), image, progress);

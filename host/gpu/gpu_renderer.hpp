@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "accel/bvh.hpp"
@@ -11,6 +12,7 @@
 #include "gpu/layout.hpp"
 #include "gpu/photon_pass.hpp"
 #include "gpu/pipeline.hpp"
+#include "gpu/scene_packing.hpp"
 #include "gpu/shader_compiler.hpp"
 #include "gpu/trace_resources.hpp"
 #include "render/adaptive_render.hpp"
@@ -52,6 +54,8 @@ public:
     // Bands rendered again with one sample per invocation because the driver's loop limit cut
     // the first attempt short (lavapipe; see shaders/trace.comp), since this renderer was made.
     std::size_t bands_rerendered() const { return bands_rerendered_; }
+    // Scenes packed for the device since this renderer was made (for tests: one per render).
+    std::size_t scenes_packed() const { return scenes_packed_; }
     const gpu::UploadStats& last_upload() const { return resources_.last_upload(); }
     std::size_t bvh_builds() const { return bvh_cache_.builds(); }  // trees built so far (for tests)
 
@@ -127,6 +131,10 @@ private:
     Acceleration acceleration_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
     std::size_t bands_rerendered_ = 0;
+    // Within one render_in_steps(): the scene as packed by its first upload, for the others.
+    bool packing_once_ = false;
+    std::size_t scenes_packed_ = 0;
+    std::optional<gpu::PackedScene> packed_;
     std::size_t max_dispatch_samples_ = 0;
 };
 

@@ -257,8 +257,24 @@ TEST_P(Adaptive, EachStepRefinesThePixelsItsRuleChooses) {
             }
         }
         EXPECT_EQ(adaptive.camera_rays, rays);
-        if (method == AaMethod::Spread) EXPECT_GT(by_spread_alone, 0) << "no pixel tested the spread";
+        if (method == AaMethod::Spread) {
+            EXPECT_GT(by_spread_alone, 0) << "no pixel tested the spread";
+        }
     }
+}
+
+// The GPU packs a render's scene once for all its steps (a parametric surface's cells take
+// 20-120 ms each time), and packs the next render's scene afresh.
+TEST(AdaptiveGpu, ARenderPacksItsSceneOnceForAllItsSteps) {
+    GpuRenderer& gpu = test::gpu_renderer();
+    std::size_t before = gpu.scenes_packed();
+    const FloatImage steps = gpu.render(deeper(2, AaMethod::Spread, 0.0), {});
+    EXPECT_EQ(gpu.scenes_packed(), before + 1);
+    Scene moved = deeper(2, AaMethod::Spread, 0.0);
+    moved.camera.eye += dvec3(0.5, 0.0, 0.0);
+    const FloatImage other = gpu.render(moved, {});
+    EXPECT_EQ(gpu.scenes_packed(), before + 2);
+    EXPECT_NE(std::memcmp(steps.pixels.data(), other.pixels.data(), steps.pixels.size() * sizeof(glm::vec4)), 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, Adaptive, ::testing::Values(test::Backend::Gpu, test::Backend::Cpu),

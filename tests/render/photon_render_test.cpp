@@ -119,6 +119,15 @@ TEST_P(PhotonRender, FloorShowsTheLightAndItsMirrorImage) {
 INSTANTIATE_TEST_SUITE_P(Backends, PhotonRender, testing::Values(Backend::Gpu, Backend::Cpu),
                          [](const auto& info) { return test::backend_name(info.param); });
 
+// The passes of a photon render differ only in their frame constants: the GPU packs the scene
+// once for all of them.
+TEST(PhotonRenderPacking, TheGpuPacksTheSceneOncePerRender) {
+    GpuRenderer& gpu = test::gpu_renderer();
+    const std::size_t before = gpu.scenes_packed();
+    gpu.render(test::scene_from_text(mirror_scene(3, 2000)), {});
+    EXPECT_EQ(gpu.scenes_packed(), before + 1);
+}
+
 TEST(PhotonRenderDeterminism, CpuGivesTheSameBytesOnAnyNumberOfThreads) {
     Scene scene = test::scene_from_text(mirror_scene(3, 20000));
     Scene small = test::shipped_scene("cornell", 40, 40);
