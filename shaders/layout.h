@@ -109,9 +109,12 @@ LANCER_CONST GRID_SCATTER = 5;
 
 // Per parametric surface: the affine map from the user's (x, y, z) to world space, so moving an
 // object only rewrites this array, never the generated shader code:
-// world = (dot(row0.xyz, p) + row0.w, dot(row1.xyz, p) + row1.w, dot(row2.xyz, p) + row2.w).
+// world = (dot(row0.xyz, p) + row0.w, dot(row1.xyz, p) + row1.w, dot(row2.xyz, p) + row2.w),
+// and its inverse (inverse0..2, the same form), which carries rays into the surface's
+// coordinates, where the intersector works.
 #define LANCER_ROWS_SurfaceInfo(VEC4, VEC4S, SCALARS) \
     VEC4(row0) VEC4(row1) VEC4(row2)                  \
+    VEC4(inverse0) VEC4(inverse1) VEC4(inverse2)      \
     VEC4(domain) /* (u0, u1, v0, v1) of the whole surface */
 
 // Per implicit surface: the affine map from world space to the coordinates its f(x, y, z) is
@@ -122,15 +125,22 @@ LANCER_CONST GRID_SCATTER = 5;
 #define LANCER_ROWS_ImplicitInfo(VEC4, VEC4S, SCALARS) \
     VEC4(row0) VEC4(row1) VEC4(row2)
 
-// One cell of a parametric surface's domain: where Newton's method looks for roots. The corner
-// points give Newton a starting point near the root (where the ray meets the two triangles they
-// span), so one or two seeds suffice instead of a grid of them.
-#define LANCER_ROWS_ParametricCell(VEC4, VEC4S, SCALARS)                                      \
-    VEC4(domain) /* (u0, u1, v0, v1) */                                                       \
-    VEC4(p00)    /* xyz = S(u0, v0) in world space; w = the surface index (its generated function) */ \
-    VEC4(p10)    /* S(u1, v0) */                                                              \
-    VEC4(p01)    /* S(u0, v1) */                                                              \
-    VEC4(p11)    /* S(u1, v1) */
+// One cell of a parametric surface's domain, where the GPU searches for roots
+// (shapes/parametric.glsl). S at the cell's centre and the bounds of S's partials over the whole
+// (slightly widened) cell, in the surface's own coordinates, let the search decide most cells
+// without evaluating S: no root, or at most one, which Newton's method then finds. The bounds of
+// the second partials give tight bounds of the first over any part of the cell, from S's
+// partials at that part's centre.
+#define LANCER_ROWS_ParametricCell(VEC4, VEC4S, SCALARS)                                        \
+    VEC4(domain)  /* (u0, u1, v0, v1) */                                                        \
+    VEC4(su_lo)   /* xyz = lower bounds of dS/du (-3.4e38: none); w = the surface index */      \
+    VEC4(su_hi)   /* xyz = upper bounds of dS/du; w = how far float evaluation of S may stray */ \
+    VEC4(sv_lo)   /* xyz = lower bounds of dS/dv */                                             \
+    VEC4(sv_hi)   /* xyz = upper bounds of dS/dv */                                             \
+    VEC4(centre)  /* xyz = S at the cell's centre; w = 1, or 0 where S is undefined there */     \
+    VEC4(suu)     /* xyz = bounds of |d2S/du2| (3.4e38: none) */                                \
+    VEC4(suv)     /* xyz = bounds of |d2S/dudv| */                                              \
+    VEC4(svv)     /* xyz = bounds of |d2S/dv2| */
 
 // A node of the bounding volume hierarchy over all bounded primitives (host/accel/bvh.hpp).
 // Inner nodes (count == 0) have their children at first and first + 1; leaves cover the

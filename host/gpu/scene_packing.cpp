@@ -71,24 +71,44 @@ struct PrimitivePacker {
         info.row0 = vec4(float(m[0][0]), float(m[1][0]), float(m[2][0]), float(m[3][0]));
         info.row1 = vec4(float(m[0][1]), float(m[1][1]), float(m[2][1]), float(m[3][1]));
         info.row2 = vec4(float(m[0][2]), float(m[1][2]), float(m[2][2]), float(m[3][2]));
+        const glm::dmat4 inv = glm::inverse(m);
+        info.inverse0 = vec4(float(inv[0][0]), float(inv[1][0]), float(inv[2][0]), float(inv[3][0]));
+        info.inverse1 = vec4(float(inv[0][1]), float(inv[1][1]), float(inv[2][1]), float(inv[3][1]));
+        info.inverse2 = vec4(float(inv[0][2]), float(inv[1][2]), float(inv[2][2]), float(inv[3][2]));
         info.domain = vec4(float(p.surface.u0), float(p.surface.u1), float(p.surface.v0), float(p.surface.v1));
         out.surfaces.push_back(info);
         for (const auto& cell : surface::subdivide_surface(p.surface)) {
-            // The corners seed Newton's method, and their mean re-origins the ray. Where the
-            // surface is undefined at a corner (a cell at the edge of where it is defined, or
-            // 0 * log(negative)), a point of the cell stands in: the centre of its (u, v) range,
-            // else the centre of its proved box, so that the cell is not lost to one NaN.
-            auto stand_in = [&] {
-                dvec3 mid = surface::evaluate_surface(p.surface, 0.5 * (cell.u0 + cell.u1), 0.5 * (cell.v0 + cell.v1)).P;
-                return all_finite(mid) ? mid : 0.5 * (cell.lo + cell.hi);
+            // Bounds rounded outward to float; an unbounded one becomes float's largest value,
+            // which the search treats as no bound (the packed arrays hold only finite floats).
+            auto bound = [](double x, bool upper) {
+                constexpr double big = std::numeric_limits<float>::max();
+                if (std::isnan(x)) return upper ? float(big) : -float(big);
+                if (!(x > -big)) return -float(big);
+                if (!(x < big)) return float(big);
+                float f = float(x);
+                if (upper && double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+                if (!upper && double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+                return f;
             };
-            auto corner = [&](double u, double v) {
-                dvec3 q = surface::evaluate_surface(p.surface, u, v).P;
-                return v4(all_finite(q) ? q : stand_in(), index);
+            auto lower = [&](const surface::IntervalVec3& b, float w) {
+                return vec4(bound(b.x.lo, false), bound(b.y.lo, false), bound(b.z.lo, false), w);
+            };
+            auto upper = [&](const surface::IntervalVec3& b, float w) {
+                return vec4(bound(b.x.hi, true), bound(b.y.hi, true), bound(b.z.hi, true), w);
+            };
+            auto magnitude = [&](const surface::IntervalVec3& b) {
+                auto mag = [&](const surface::Interval& i) {
+                    const double m = std::max(-i.lo, i.hi);
+                    return bound(m >= 0.0 && !i.is_empty() ? m : surface::kInf, true);
+                };
+                return vec4(mag(b.x), mag(b.y), mag(b.z), 0.0f);
             };
             ParametricCell c{vec4(float(cell.u0), float(cell.u1), float(cell.v0), float(cell.v1)),
-                             corner(cell.u0, cell.v0), corner(cell.u1, cell.v0), corner(cell.u0, cell.v1),
-                             corner(cell.u1, cell.v1)};
+                             lower(cell.Su, float(index)), upper(cell.Su, bound(cell.local_float_pad, true)),
+                             lower(cell.Sv, 0.0f), upper(cell.Sv, 0.0f), vec4(0.0f),
+                             magnitude(cell.second.Suu), magnitude(cell.second.Suv), magnitude(cell.second.Svv)};
+            if (all_finite(cell.centre_point) && glm::all(glm::lessThan(glm::abs(cell.centre_point), dvec3(1e30))))
+                c.centre = v4(cell.centre_point, 1.0);
             auto cell_index = static_cast<uint>(out.cells.size());
             out.cells.push_back(c);
             Primitive prim{SHAPE_PARAMETRIC, material, cell_index, object, {}, {}, {}};

@@ -2,6 +2,8 @@
 // Forward-mode differentiation: a value with its partial derivatives along u and v. With
 // T = double it gives exact derivatives (to rounding); with T = Interval it bounds the value and
 // the derivatives over a box of (u, v), which is what the mean-value form and Krawczyk need.
+// Nested, Dual<Dual<Interval>> bounds the second partials too (d.du.du = S_uu, d.du.dv = S_uv,
+// d.dv.dv = S_vv), for the GPU's Taylor bounds of S's partials over parts of a cell.
 //
 // The rules match the GLSL emitter's (expr/glsl_emitter.cpp) one for one, including the choices
 // at kinks: d|x| = sign(x) dx (0 at 0), and min/max take the derivative of the argument they
@@ -16,6 +18,11 @@ struct Dual {
     T v{};
     T du{};
     T dv{};
+
+    constexpr Dual() = default;
+    constexpr Dual(const T& value, const T& d_u, const T& d_v) : v(value), du(d_u), dv(d_v) {}
+    // A constant, as T(c) is for the scalar types, so that a Dual can be the T of a Dual.
+    constexpr Dual(double c) : v(c), du(0.0), dv(0.0) {}
 
     static Dual constant(double c) { return {T(c), T(0.0), T(0.0)}; }
     static Dual variable_u(const T& u) { return {u, T(1.0), T(0.0)}; }
@@ -192,6 +199,27 @@ inline Dual<Interval> max(const Dual<Interval>& a, const Dual<Interval>& b) {
     if (a.v.lo > b.v.hi) return a;
     if (b.v.lo >= a.v.hi) return b;
     return {max(a.v, b.v), hull(a.du, b.du), hull(a.dv, b.dv)};
+}
+
+// Second order: the kinks have no bounded second derivative where the interval cannot decide
+// the branch.
+inline Dual<Dual<Interval>> abs(const Dual<Dual<Interval>>& x) {
+    if (x.v.v.lo > 0.0) return x;
+    if (x.v.v.hi < 0.0) return -x;
+    const Interval all{-kInf, kInf};
+    return {abs(x.v), {Interval{-x.du.v.mag(), x.du.v.mag()}, all, all}, {Interval{-x.dv.v.mag(), x.dv.v.mag()}, all, all}};
+}
+inline Dual<Dual<Interval>> min(const Dual<Dual<Interval>>& a, const Dual<Dual<Interval>>& b) {
+    if (a.v.v.hi < b.v.v.lo) return a;
+    if (b.v.v.hi <= a.v.v.lo) return b;
+    const Interval all{-kInf, kInf};
+    return {min(a.v, b.v), {hull(a.du.v, b.du.v), all, all}, {hull(a.dv.v, b.dv.v), all, all}};
+}
+inline Dual<Dual<Interval>> max(const Dual<Dual<Interval>>& a, const Dual<Dual<Interval>>& b) {
+    if (a.v.v.lo > b.v.v.hi) return a;
+    if (b.v.v.lo >= a.v.v.hi) return b;
+    const Interval all{-kInf, kInf};
+    return {max(a.v, b.v), {hull(a.du.v, b.du.v), all, all}, {hull(a.dv.v, b.dv.v), all, all}};
 }
 
 }  // namespace lancer::surface

@@ -1,5 +1,6 @@
 #include "surface/parametric_cells.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -146,12 +147,26 @@ std::vector<SurfaceCell> subdivide_surface(const ParametricSurface& s, const Cel
             throw UserError(fmt::format(
                 "cannot bound the surface near (u, v) = ({:.6g}, {:.6g}): it may be unbounded there; narrow its domain",
                 p.u.mid(), p.v.mid()));
+        // The partials over the widened cell, for the GPU's Krawczyk test of the whole cell.
+        auto widened = [](const Interval& x, double lo, double hi) {
+            const double w = kCellBoundsInflation * x.width();
+            return Interval{std::max(lo, x.lo - w), std::min(hi, x.hi + w)};
+        };
+        const BoxBounds around = bound_surface(program, widened(p.u, s.u0, s.u1), widened(p.v, s.v0, s.v1));
+        const Interval unbounded{-kInf, kInf};
+        const IntervalVec3 none{unbounded, unbounded, unbounded};
+        const bool derivatives = around.smooth && is_finite(around.Su) && is_finite(around.Sv);
         SurfaceCell cell{p.u.lo, p.u.hi, p.v.lo, p.v.hi,
                          {down(box.x.lo - float_pad, kPaddingUlps), down(box.y.lo - float_pad, kPaddingUlps),
                           down(box.z.lo - float_pad, kPaddingUlps)},
                          {up(box.x.hi + float_pad, kPaddingUlps), up(box.y.hi + float_pad, kPaddingUlps),
                           up(box.z.hi + float_pad, kPaddingUlps)},
-                         regular, float_pad};
+                         regular, float_pad, derivatives ? around.Su : none, derivatives ? around.Sv : none,
+                         {none, none, none}, 4.0 * float_error};
+        if (derivatives) cell.second = bound_second_partials(program, widened(p.u, s.u0, s.u1), widened(p.v, s.v0, s.v1));
+        double centre[3];
+        evaluate_program(program, p.u.mid(), p.v.mid(), centre);
+        cell.centre_point = dvec3(centre[0], centre[1], centre[2]);
         cells.push_back(cell);
     }
     return cells;

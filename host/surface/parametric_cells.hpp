@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "surface/parametric_surface.hpp"
+#include "surface/surface_bounds.hpp"
 
 namespace lancer::surface {
 
@@ -20,11 +21,24 @@ struct CellOptions {
     std::size_t max_cells = std::size_t{1} << 16;
 };
 
+// How far the GPU's search widens a cell on each side (of its width, within the surface's
+// domain): a root on the edge between two cells lies inside one of them. The partials' bounds
+// below cover a little more, so that float's rounding of the widened box stays inside them.
+inline constexpr double kCellSearchInflation = 0.01;
+inline constexpr double kCellBoundsInflation = 0.015;
+
 struct SurfaceCell {
     double u0, u1, v0, v1;
     dvec3 lo, hi;  // world space; padded outward by a few ulps (round outward again for float)
     bool regular;  // proved on the whole cell: |Su x Sv| >= 1e-3 |Su| |Sv| (so nonzero, well conditioned)
     double float_pad = 0.0;  // added to the box on every side: how far the GPU's float evaluation may stray
+    // In the surface's own coordinates, over the cell widened by kCellBoundsInflation (within the
+    // domain): bounds of the partials (infinite where the surface is not smooth on all of it),
+    // and how far the GPU's float evaluation of S may stray from S.
+    IntervalVec3 Su, Sv;
+    SecondPartials second;  // bounds of the second partials, for the GPU's Taylor bounds over parts of the cell
+    double local_float_pad = 0.0;
+    dvec3 centre_point{0.0};  // S at the cell's centre (not finite where S is undefined there)
 };
 
 // Splits a cell (along the side that is longer in world space) while its box is larger than

@@ -43,6 +43,19 @@ BoxBounds bound_surface(const Program& program, const Interval& u, const Interva
     return b;
 }
 
+SecondPartials bound_second_partials(const Program& program, const Interval& u, const Interval& v) {
+    using D2 = Dual<Dual<Interval>>;
+    D2 s[3];
+    evaluate_program(program, D2::variable_u(Dual<Interval>::variable_u(u)), D2::variable_v(Dual<Interval>::variable_v(v)), s);
+    SecondPartials b;
+    for (int i = 0; i < 3; ++i) {
+        b.Suu[i] = s[i].du.du;
+        b.Suv[i] = s[i].du.dv;
+        b.Svv[i] = s[i].dv.dv;
+    }
+    return b;
+}
+
 IntervalVec3 transform_vector(const glm::dmat4& m, const IntervalVec3& p) {
     IntervalVec3 r;
     for (int row = 0; row < 3; ++row)

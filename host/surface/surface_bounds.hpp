@@ -27,6 +27,12 @@ struct BoxBounds {
     bool smooth = false;  // every operation is defined and differentiable on the whole box
 };
 
+// Bounds of the second partials over the box (infinite where they cannot be bounded).
+struct SecondPartials {
+    IntervalVec3 Suu, Suv, Svv;
+};
+SecondPartials bound_second_partials(const Program& program, const Interval& u, const Interval& v);
+
 // The natural interval extension, narrowed by the mean-value form S(c) + [J](X - c) where it
 // applies (smooth boxes); the result is the intersection of the two, so never looser than
 // either. `program` has three outputs x, y, z.

@@ -1,14 +1,39 @@
-// Ray/parametric surface S(u, v) = (x(u,v), y(u,v), z(u,v)) over one cell of its domain, by
-// Newton's method from several seeds. Twin of host/cpu/shapes/parametric.cpp, which finds the
-// same roots by certified interval Newton in double precision.
+// Ray / parametric surface S(u, v) = (x(u,v), y(u,v), z(u,v)) over one cell of its domain: a
+// certified search in float, the twin of host/cpu/shapes/parametric.cpp, which runs the same
+// search in double precision.
 //
-// The host subdivided the domain into cells whose boxes (interval arithmetic, so guaranteed)
-// are in the BVH; a ray reaching a cell solves the two plane equations of the ray,
-// n1.(S(u,v) - o) = 0 and n2.(S(u,v) - o) = 0, by Newton from where the ray crosses the cell's
-// corner triangles (else from the cell's centre), and keeps a converged root inside the cell.
+// The host cut the domain into cells whose proved boxes are in the BVH. A ray reaching a cell is
+// carried into the surface's own coordinates (SurfaceInfo's inverse map; t is kept) from a point
+// of it near the cell, so that residuals are differences of nearby numbers. A hit is a root of
+// F(u, v) = (n1 . (S - o), n2 . (S - o)) for two planes through the ray, and its t follows from S.
+// The cell is examined as a quadtree of parameter boxes, depth first; for each box X, from S and
+// its partials at a point c of it and [J], an enclosure of the Jacobian over X:
+//   * exclusion: F's enclosure over X (the mean-value form F(c) + [J] (X - c)) keeps away from 0,
+//     or every t it allows is beyond the nearest root found so far; or Krawczyk's operator
+//     K(X) = c - Y F(c) + (I - Y [J]) (X - c) misses X;
+//   * q = |I - Y [J]| < 1 (in the norm weighted by X) proves that F is one-to-one on X, so X holds
+//     at most one root, which Newton's method from c, kept in X, finds; each of its steps also
+//     narrows where that root can be, so a ray that misses is dropped after a step or two;
+//   * otherwise X is split in four, down to PARAMETRIC_LEVELS levels below the cell. A box at the
+//     last level that is still undecided (the ray tangent to the surface there, or a pole where
+//     S_u x S_v vanishes) is settled by Newton's method from its centre, unproved.
+// [J] comes from bounds the host proved per cell (ParametricCell): the partials' bounds over the
+// whole cell, whose centre's S is stored too, so that most cells are decided without evaluating S;
+// over a part of the cell, S's partials at its centre and the second partials' bounds.
+// So of the two roots of a ray that grazes a curved surface, close together in one cell, the
+// nearer is found, and no root is lost because a seed led Newton's method astray.
+//
+// Each loop iteration makes at most one call of surface_eval (a box's centre, or one Newton
+// step): lavapipe inlines every call site into both call sites of trace_scene, so each extra
+// call would cost compile time and registers.
 
-
-const int NEWTON_STEPS = 12;
+const int PARAMETRIC_LEVELS = 4;          // boxes down to 1/16 of a cell's side
+const int PARAMETRIC_ITERATIONS = 128;    // boxes and Newton steps per ray and cell; beyond, the nearest root so far
+const int PARAMETRIC_NEWTON_STEPS = 10;   // per root
+const float PARAMETRIC_INFLATION = 0.01;  // of a box's width on each side: a root on an edge lies inside a box
+const float PARAMETRIC_EDGE = 1e-4;       // of a cell's width: how far outside its cell a root may lie (rounding)
+const float PARAMETRIC_CONVERGED = 1e-4;  // Newton's step, in cell widths: quadratic convergence leaves ~1e-8,
+                                          // below float's noise in the residual, which smaller steps would chase
 
 // S and its partials in world space.
 void surface_world(uint surface, vec2 uv, out vec3 P, out vec3 Pu, out vec3 Pv) {
@@ -21,97 +46,181 @@ void surface_world(uint surface, vec2 uv, out vec3 P, out vec3 Pu, out vec3 Pv) 
     Pv = m * pv;
 }
 
-// Where the ray meets the plane of the triangle (a, b, c), as barycentric (b, c) weights; the
-// point may lie outside the triangle (weights < 0 or sum > 1), which still makes a fair seed.
-vec2 triangle_weights(vec3 a, vec3 b, vec3 c, vec3 o, vec3 d, out bool parallel) {
-    vec3 e1 = b - a, e2 = c - a;
-    vec3 p = cross(d, e2);
-    float det = dot(e1, p);
-    parallel = abs(det) < 1e-20;
-    float inv = parallel ? 0.0 : 1.0 / det;
-    vec3 s = o - a;
-    vec3 q = cross(s, e1);
-    return vec2(dot(s, p), dot(d, q)) * inv;
+// The box of the quadtree node `code` (two bits per level, the deepest level lowest; bit 0
+// halves u, bit 1 halves v) at `level` below the cell (u0, u1, v0, v1).
+vec4 parametric_box(vec4 cell, int level, uint code) {
+    uint ui = (code & 1u) | ((code >> 1) & 2u) | ((code >> 2) & 4u) | ((code >> 3) & 8u);
+    uint vi = ((code >> 1) & 1u) | ((code >> 2) & 2u) | ((code >> 3) & 4u) | ((code >> 4) & 8u);
+    vec2 size = vec2(cell.y - cell.x, cell.w - cell.z) / float(1u << uint(level));
+    vec2 lo = vec2(cell.x, cell.z) + vec2(float(ui), float(vi)) * size;
+    return vec4(lo.x, lo.x + size.x, lo.y, lo.y + size.y);
 }
 
-// The cell-local (u, v) where the ray crosses the two triangles of the cell's corners,
-// clamped to the cell: the seed for Newton.
-vec2 corner_seed(ParametricCell c, vec3 o, vec3 d) {
-    bool parallel0, parallel1;
-    vec2 w0 = triangle_weights(c.p00.xyz, c.p10.xyz, c.p01.xyz, o, d, parallel0);  // lower-left triangle
-    vec2 w1 = triangle_weights(c.p11.xyz, c.p01.xyz, c.p10.xyz, o, d, parallel1);  // upper-right triangle
-    vec2 s0 = w0, s1 = vec2(1.0) - w1;
-    bool in0 = !parallel0 && w0.x + w0.y <= 1.0;
-    vec2 seed = parallel0 && parallel1 ? vec2(0.5) : (in0 || parallel1 ? s0 : s1);
-    if (any(isnan(seed))) seed = vec2(0.5);  // a corner where the surface is undefined
-    return clamp(seed, 0.0, 1.0);
-}
-
-// Newton on the two plane equations from `local` (cell coordinates); true when it converged,
-// with `local` the root.
-bool newton(uint surface, vec4 cell, vec2 size, vec3 origin, vec3 n1, vec3 n2, inout vec2 local) {
-    for (int k = 0; k < NEWTON_STEPS; ++k) {
-        vec3 P, Pu, Pv;
-        surface_world(surface, vec2(cell.x, cell.z) + local * size, P, Pu, Pv);
-        vec3 r = P - origin;
-        vec2 f = vec2(dot(n1, r), dot(n2, r));
-        // Jacobian in the cell's local parameters (scaled by the cell size: better conditioned).
-        mat2 j = mat2(dot(n1, Pu) * size.x, dot(n2, Pu) * size.x, dot(n1, Pv) * size.y, dot(n2, Pv) * size.y);
-        float det = determinant(j);
-        if (abs(det) < 1e-30) return false;
-        vec2 step = inverse(j) * f;
-        local -= step;
-        if (any(lessThan(local, vec2(-0.5))) || any(greaterThan(local, vec2(1.5)))) return false;  // wandered off
-        // Quadratic convergence: after a step this small the error is ~1e-8, below float's noise
-        // in the residual, which smaller steps would chase.
-        if (abs(step.x) + abs(step.y) < 1e-4) return true;
-    }
-    return false;
-}
+mat2 parametric_abs(mat2 m) { return mat2(abs(m[0]), abs(m[1])); }
 
 bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit) {
     // The cell's own proved box first (p0, p1): a BVH leaf holds several cells, and a slab test
-    // costs far less than Newton's method.
+    // costs far less than the search.
     if (box_entry(prim.p0.xyz, prim.p1.xyz, ray.origin, safe_inverse(ray.dir), t_max) == INFINITY) return false;
     ParametricCell c = cell_at(prim.data);
-    uint surface = uint(c.p00.w);
+    uint surface = uint(c.su_lo.w);
+    SurfaceInfo info = surface_at(surface);
     vec4 cell = c.domain;  // (u0, u1, v0, v1)
-    vec2 size = vec2(cell.y - cell.x, cell.w - cell.z);
-    vec3 d = ray.dir;
-    // Re-origin at the point of the ray nearest the cell's centre: the residuals are then
-    // differences of nearby numbers, not of the distance to the camera.
-    vec3 centre = 0.25 * (c.p00.xyz + c.p10.xyz + c.p01.xyz + c.p11.xyz);
-    float t_shift = dot(centre - ray.origin, d);
-    vec3 origin = ray.origin + t_shift * d;
-    vec3 a = abs(d.x) <= abs(d.y) && abs(d.x) <= abs(d.z) ? vec3(1.0, 0.0, 0.0)
-           : (abs(d.y) <= abs(d.z) ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
-    vec3 n1 = normalize(cross(d, a));
-    vec3 n2 = cross(d, n1);
-    // Seeds: where the ray crosses the corners' triangles, then the cell's centre (a ray can
-    // miss the corner quad and still hit the surface where it bulges out of it).
-    vec2 local = corner_seed(c, origin, d);
-    bool converged = newton(surface, cell, size, origin, n1, n2, local);
-    if (!converged) {
-        local = vec2(0.5);
-        converged = newton(surface, cell, size, origin, n1, n2, local);
+    vec2 cell_size = vec2(cell.y - cell.x, cell.w - cell.z);
+
+    // The ray in the surface's coordinates, from its point nearest the cell's box centre; t is
+    // counted from there.
+    float t_shift = dot(0.5 * (prim.p0.xyz + prim.p1.xyz) - ray.origin, ray.dir);
+    vec3 world_origin = ray.origin + t_shift * ray.dir;
+    mat3 rows = mat3(info.inverse0.xyz, info.inverse1.xyz, info.inverse2.xyz);  // columns hold the map's rows
+    vec3 o = world_origin * rows + vec3(info.inverse0.w, info.inverse1.w, info.inverse2.w);
+    vec3 d = ray.dir * rows;
+    float dd = dot(d, d);
+    vec3 axis = abs(d.x) <= abs(d.y) && abs(d.x) <= abs(d.z) ? vec3(1.0, 0.0, 0.0)
+              : (abs(d.y) <= abs(d.z) ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
+    vec3 n1 = normalize(cross(d, axis));
+    vec3 n2 = normalize(cross(d, n1));
+    float t_low = t_min - t_shift;
+    float best = t_max - t_shift;  // the nearest root so far, or the end of the ray
+    vec2 best_uv = vec2(0.0);
+    bool found = false;
+
+    int level = 0;
+    uint code = 0u;
+    bool newton = false;  // refining a root from x inside the current box, rather than examining it
+    vec2 x = vec2(0.0);
+    int steps = 0;
+    float reach = 1.0;  // a root in the box is within reach (in the norm weighted by the box) of x
+    mat2 Jmid = mat2(0.0), Jrad = mat2(0.0);  // [J] over the current box, centre and radius
+    vec2 t_slope = vec2(0.0);                 // bounds of |dt/du| and |dt/dv| over it
+    for (int iteration = 0; iteration < PARAMETRIC_ITERATIONS; ++iteration) {
+        vec4 box = parametric_box(cell, level, code);
+        // The box widened, but not beyond the surface's domain (as the host's bounds).
+        vec2 half_width = (0.5 + PARAMETRIC_INFLATION) * vec2(box.y - box.x, box.w - box.z);
+        vec2 centre = 0.5 * vec2(box.x + box.y, box.z + box.w);
+        vec2 low = max(centre - half_width, info.domain.xz), high = min(centre + half_width, info.domain.yw);
+        centre = 0.5 * (low + high);
+        half_width = 0.5 * (high - low);
+        bool examine = !newton;
+        if (examine) {
+            // From the box's centre; for the whole cell from the cell's centre, where the host
+            // stored S (the widened box may hold it off centre at the domain's edge).
+            x = level == 0 ? 0.5 * vec2(cell.x + cell.y, cell.z + cell.w) : centre;
+            steps = 0;
+        }
+        vec2 extent = max(x - low, high - x);  // how far the box reaches from x
+        // S at x. The whole cell's centre needs no evaluation: S is stored there, and the
+        // midpoints of the partials' bounds stand in for the partials (Krawczyk's test holds for
+        // any Y, here mid[J]^-1).
+        vec3 P, Pu, Pv;
+        bool stored = examine && level == 0 && c.centre.w != 0.0;
+        if (stored) {
+            P = c.centre.xyz;
+            Pu = 0.5 * (c.su_lo.xyz + c.su_hi.xyz);
+            Pv = 0.5 * (c.sv_lo.xyz + c.sv_hi.xyz);
+        } else {
+            surface_eval(surface, x, P, Pu, Pv);
+        }
+        if (examine) {
+            // [J] over the box: for the whole cell from the host's bounds of the partials; for a
+            // part of it, Taylor: S's partials at its centre, plus the second partials' bounds
+            // times its half widths.
+            vec3 Uc = Pu, Vc = Pv, Ur, Vr;
+            if (level == 0) {
+                Ur = 0.5 * (c.su_hi.xyz - c.su_lo.xyz);
+                Vr = 0.5 * (c.sv_hi.xyz - c.sv_lo.xyz);
+            } else {
+                ParametricCell curvature = cell_at(prim.data);
+                // (plus a hair for float's rounding of the partials themselves)
+                Ur = curvature.suu.xyz * half_width.x + curvature.suv.xyz * half_width.y + 1e-5 * length(Pu);
+                Vr = curvature.suv.xyz * half_width.x + curvature.svv.xyz * half_width.y + 1e-5 * length(Pv);
+            }
+            Jmid = mat2(dot(n1, Uc), dot(n2, Uc), dot(n1, Vc), dot(n2, Vc));  // columns: d/du, d/dv
+            Jrad = mat2(dot(abs(n1), Ur), dot(abs(n2), Ur), dot(abs(n1), Vr), dot(abs(n2), Vr));
+            t_slope = vec2(abs(dot(d, Uc)) + dot(abs(d), Ur), abs(dot(d, Vc)) + dot(abs(d), Vr));
+        }
+        vec3 r = P - o;
+        vec2 F = vec2(dot(n1, r), dot(n2, r));
+        mat2 J = mat2(dot(n1, Pu), dot(n2, Pu), dot(n1, Pv), dot(n2, Pv));
+        float det = determinant(J);
+        bool invertible = det * det > 1e-24 * dot(Pu, Pu) * dot(Pv, Pv) && !isinf(det);
+        mat2 Y = invertible ? inverse(J) : mat2(0.0);
+        vec2 step = Y * F;  // Newton's step
+        // F(x) as computed strays from the exact F(x) by rounding and by float's evaluation of S.
+        float slack = 4e-7 * (dot(abs(P), vec3(1.0)) + dot(abs(o), vec3(1.0))) + c.su_hi.w;
+        // (|I - Y mid[J]| + |Y| rad[J]) times the box's half widths: for G(x) = x - Y F(x) and a
+        // root z in the box, |G(x) - z| <= spread |x - z| coordinate by coordinate, |x - z| in the
+        // norm weighted by the box (the mean value theorem); q = max(spread / half_width).
+        vec2 spread = (parametric_abs(mat2(1.0) - Y * Jmid) + parametric_abs(Y) * Jrad) * half_width;
+        spread = spread * 1.001 + parametric_abs(Y) * vec2(slack);
+        bool bounded = invertible && !any(isnan(spread)) && !any(isinf(spread));
+        // So a root in the box lies within reach * spread of x - step. From where the box is
+        // examined, reach is how far the box extends (1 from its centre: Krawczyk's exclusion);
+        // each step, kept in the box, multiplies it by q.
+        if (examine) reach = max(extent.x / half_width.x, extent.y / half_width.y);
+        vec2 outside = max(abs(x - step - centre) - half_width, vec2(0.0));
+        bool no_root = bounded && any(greaterThan(outside, reach * spread));
+        reach *= max(spread.x / half_width.x, spread.y / half_width.y);
+        if (examine) {
+            // The mean-value form: F and t over the box from their values at x and [J].
+            vec2 F_spread = (parametric_abs(Jmid) + Jrad) * extent + vec2(slack);
+            float tc = dot(d, r) / dd, tr = (dot(t_slope, extent) + slack * length(d)) / dd;
+            no_root = no_root || any(greaterThan(abs(F), F_spread)) || tc - tr >= best || tc + tr <= t_low;
+            // q < 1: F is one-to-one on the box (F(a) - F(b) = J (a - b) for a J in [J], and Y J is
+            // invertible), so the box holds at most one root, and Newton's method, kept in the
+            // box, finds it if it is there. Otherwise the box is split, down to the last level,
+            // where Newton's method settles it unproved.
+            bool proved = bounded && all(lessThan(spread, 0.9 * half_width));
+            if (!no_root && !proved && level < PARAMETRIC_LEVELS) {
+                level += 1;
+                code *= 4u;
+                continue;
+            }
+        }
+        bool done_with_box = no_root || !invertible;
+        if (!done_with_box) {
+            x = clamp(x - step, low, high);
+            steps += 1;
+            vec2 moved = abs(step) / cell_size;
+            bool converged = !stored && moved.x + moved.y < PARAMETRIC_CONVERGED;
+            if (converged) {
+                // The root, and the point there to first order (the step is ~1e-4 of a cell).
+                vec3 root = P - Pu * step.x - Pv * step.y;
+                float t = dot(d, root - o) / dd;
+                vec2 local = (x - vec2(cell.x, cell.z)) / cell_size;
+                bool in_cell = all(greaterThanEqual(local, vec2(-PARAMETRIC_EDGE))) &&
+                               all(lessThanEqual(local, vec2(1.0 + PARAMETRIC_EDGE)));
+                if (in_cell && t > t_low && t < best) {
+                    best = t;
+                    best_uv = vec2(cell.x, cell.z) + clamp(local, 0.0, 1.0) * cell_size;
+                    found = true;
+                }
+            }
+            done_with_box = converged || any(isnan(x)) || steps >= PARAMETRIC_NEWTON_STEPS;
+        }
+        newton = !done_with_box;
+        if (done_with_box) {
+            // The next box in depth-first order: up past the last children, then to the next sibling.
+            [[unroll]] for (int k = 0; k < PARAMETRIC_LEVELS; ++k) {
+                if (level > 0 && (code & 3u) == 3u) {
+                    code >>= 2;
+                    level -= 1;
+                }
+            }
+            if (level == 0) break;
+            code += 1u;
+        }
     }
-    // Closed cell, widened a little: neighbours overlap, so no ray falls between cells.
-    bool inside = all(greaterThanEqual(local, vec2(-1e-4))) && all(lessThanEqual(local, vec2(1.0 + 1e-4)));
-    if (!converged || !inside) return false;
-    vec3 P, Pu, Pv;
-    vec2 uv = vec2(cell.x, cell.z) + clamp(local, 0.0, 1.0) * size;
-    surface_world(surface, uv, P, Pu, Pv);
-    float t = t_shift + dot(d, P - origin);
-    if (t <= t_min || t >= t_max) return false;
-    t_hit = t;
-    uv_hit = uv;
+    if (!found) return false;
+    t_hit = t_shift + best;
+    uv_hit = best_uv;
     return true;
 }
 
 // Unit normal from the exact partials; at poles and collapsed edges (S_u x S_v = 0) the limit
 // normal is taken a little toward the inside of the surface's domain.
 vec3 parametric_normal(Primitive prim, vec2 uv) {
-    uint surface = uint(cell_at(prim.data).p00.w);
+    uint surface = uint(cell_at(prim.data).su_lo.w);
     vec3 P, Pu, Pv;
     surface_world(surface, uv, P, Pu, Pv);
     vec3 n = cross(Pu, Pv);
@@ -123,11 +232,11 @@ vec3 parametric_normal(Primitive prim, vec2 uv) {
         n = cross(Pu, Pv);
     }
     float len = length(n);
-    return len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
+    return len > 0.0 && !isinf(len) ? n / len : vec3(0.0, 0.0, 1.0);
 }
 
 // Texture (u, v): the hit's parameters, the surface's domain mapped to [0, 1] x [0, 1].
 vec2 parametric_texture_uv(Primitive prim, vec2 uv) {
-    vec4 dom = surface_at(uint(cell_at(prim.data).p00.w)).domain;
+    vec4 dom = surface_at(uint(cell_at(prim.data).su_lo.w)).domain;
     return (uv - dom.xz) / (dom.yw - dom.xz);
 }

@@ -162,9 +162,10 @@ void check_renderers_input(const Scene& accepted, const std::string& when) {
     for (const auto& leaf : packed.patches)
         for (const auto& v : leaf.points) require_finite_floats(v, when + ": patch leaf");
     for (const auto& c : packed.cells)
-        for (const auto& v : {c.p00, c.p10, c.p01, c.p11}) require_finite_floats(v, when + ": parametric cell");
+        for (const auto& v : {c.domain, c.su_lo, c.su_hi, c.sv_lo, c.sv_hi, c.centre, c.suu, c.suv, c.svv}) require_finite_floats(v, when + ": parametric cell");
     for (const auto& s : packed.surfaces)
-        for (const auto& v : {s.row0, s.row1, s.row2, s.domain}) require_finite_floats(v, when + ": surface info");
+        for (const auto& v : {s.row0, s.row1, s.row2, s.inverse0, s.inverse1, s.inverse2, s.domain})
+            require_finite_floats(v, when + ": surface info");
     for (const auto& m : packed.materials)
         for (const auto& v : {m.color, m.color2, m.phong}) require_finite_floats(v, when + ": material");
     for (const auto& l : packed.lights) {

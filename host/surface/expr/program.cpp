@@ -176,6 +176,8 @@ template void evaluate_program(const Program&, const double&, const double&, dou
 template void evaluate_program(const Program&, const Interval&, const Interval&, Interval*);
 template void evaluate_program(const Program&, const Dual<double>&, const Dual<double>&, Dual<double>*);
 template void evaluate_program(const Program&, const Dual<Interval>&, const Dual<Interval>&, Dual<Interval>*);
+template void evaluate_program(const Program&, const Dual<Dual<Interval>>&, const Dual<Dual<Interval>>&,
+                               Dual<Dual<Interval>>*);
 template void evaluate_program(const Program&, std::span<const double>, double*);
 template void evaluate_program(const Program&, std::span<const Interval>, Interval*);
 template void evaluate_program(const Program&, std::span<const Dual<double>>, Dual<double>*);

@@ -37,6 +37,8 @@ extern template void evaluate_program(const Program&, const double&, const doubl
 extern template void evaluate_program(const Program&, const Interval&, const Interval&, Interval*);
 extern template void evaluate_program(const Program&, const Dual<double>&, const Dual<double>&, Dual<double>*);
 extern template void evaluate_program(const Program&, const Dual<Interval>&, const Dual<Interval>&, Dual<Interval>*);
+extern template void evaluate_program(const Program&, const Dual<Dual<Interval>>&, const Dual<Dual<Interval>>&,
+                                      Dual<Dual<Interval>>*);
 extern template void evaluate_program(const Program&, std::span<const double>, double*);
 extern template void evaluate_program(const Program&, std::span<const Interval>, Interval*);
 extern template void evaluate_program(const Program&, std::span<const Dual<double>>, Dual<double>*);
