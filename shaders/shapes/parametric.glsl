@@ -91,6 +91,9 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
     vec2 x = vec2(0.0);
     int steps = 0;
     float reach = 1.0;  // a root in the box is within reach (in the norm weighted by the box) of x
+    bool unproved = false;        // Newton's method runs in a last-level box that may hold two roots
+    bool deflated = false;        // ... looking for the second, away from the first
+    vec2 first_root = vec2(0.0);  // the first root found there
     mat2 Jmid = mat2(0.0), Jrad = mat2(0.0);  // [J] over the current box, centre and radius
     vec2 t_slope = vec2(0.0);                 // bounds of |dt/du| and |dt/dv| over it
     for (int iteration = 0; iteration < PARAMETRIC_ITERATIONS; ++iteration) {
@@ -159,7 +162,7 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
         // each step, kept in the box, multiplies it by q.
         if (examine) reach = max(extent.x / half_width.x, extent.y / half_width.y);
         vec2 outside = max(abs(x - step - centre) - half_width, vec2(0.0));
-        bool no_root = bounded && any(greaterThan(outside, reach * spread));
+        bool no_root = bounded && !deflated && any(greaterThan(outside, reach * spread));
         reach *= max(spread.x / half_width.x, spread.y / half_width.y);
         if (examine) {
             // The mean-value form: F and t over the box from their values at x and [J].
@@ -176,16 +179,33 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
                 code *= 4u;
                 continue;
             }
+            unproved = !proved;
+            deflated = false;
+        }
+        if (deflated) {
+            // Newton's method on F / |x - first_root|^2 + F, whose roots are F's but the first:
+            // the same step, scaled (Farrell, Birkisson and Funke's deflation).
+            vec2 w = (x - first_root) / half_width;
+            float w2 = max(dot(w, w), 1e-12);
+            float m = 1.0 / w2 + 1.0;
+            vec2 gradient = -2.0 * w / (half_width * w2 * w2);
+            step /= 1.0 + dot(gradient, step) / m;
         }
         bool done_with_box = no_root || !invertible;
         if (!done_with_box) {
+            vec2 evaluated = x;
             x = clamp(x - step, low, high);
             steps += 1;
             vec2 moved = abs(step) / cell_size;
-            bool converged = !stored && moved.x + moved.y < PARAMETRIC_CONVERGED;
+            // Converged: the step is small, or (where the ray is tangent to the surface, so that
+            // the roots are nearly double and Newton's method slows to linear) the residual is at
+            // float's noise.
+            bool at_noise = unproved && length(F) <= slack;
+            bool converged = !stored && (moved.x + moved.y < PARAMETRIC_CONVERGED || at_noise);
+            if (at_noise) x = evaluated;  // the root is where S was evaluated
             if (converged) {
                 // The root, and the point there to first order (the step is ~1e-4 of a cell).
-                vec3 root = P - Pu * step.x - Pv * step.y;
+                vec3 root = at_noise ? P : P - Pu * step.x - Pv * step.y;
                 float t = dot(d, root - o) / dd;
                 vec2 local = (x - vec2(cell.x, cell.z)) / cell_size;
                 bool in_cell = all(greaterThanEqual(local, vec2(-PARAMETRIC_EDGE))) &&
@@ -195,6 +215,16 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
                     best_uv = vec2(cell.x, cell.z) + clamp(local, 0.0, 1.0) * cell_size;
                     found = true;
                 }
+            }
+            // In a box that may hold two roots (a ray tangent to the surface there, within the
+            // last level's size), the first root found may be the farther: Newton's method runs
+            // again, deflated, from across the box, for the other; the nearer is kept.
+            if (converged && unproved && !deflated) {
+                first_root = x;
+                deflated = true;
+                x = clamp(2.0 * centre - x, low, high);
+                steps = 0;
+                converged = false;
             }
             done_with_box = converged || any(isnan(x)) || steps >= PARAMETRIC_NEWTON_STEPS;
         }

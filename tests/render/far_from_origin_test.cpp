@@ -69,14 +69,6 @@ const char* kScene = R"toml(
     material = "red"
 )toml";
 
-Scene moved(Scene s, const glm::dvec3& d) {
-    for (Object& o : s.objects) translate(o.shape, d);
-    for (Light& l : s.lights) l.position += d;
-    s.camera.eye += d;
-    s.camera.look_at += d;
-    return s;
-}
-
 class FarFromOrigin : public testing::TestWithParam<double> {};
 
 // The offsets are whole periods of the checker (2 x 0.5), so the moved scene is the same picture;
@@ -85,11 +77,11 @@ TEST_P(FarFromOrigin, TheGpuDrawsThePictureItDrawsAtTheOrigin) {
     const Scene scene = test::scene_from_text(kScene);
     const double offset = GetParam();
     const Rgb8Image at_origin = to_srgb8(test::render_on(test::Backend::Gpu, scene));
-    const Rgb8Image far = to_srgb8(test::render_on(test::Backend::Gpu, moved(scene, {offset, -offset, 3 * offset})));
+    const Rgb8Image far = to_srgb8(test::render_on(test::Backend::Gpu, test::moved_scene(scene, {offset, -offset, 3 * offset})));
     test::expect_same_picture("far_from_origin_gpu", at_origin, far);
     EXPECT_TRUE(test::gpu_renderer().notes().empty());
     // And the CPU reference, in double, agrees with both.
-    const Rgb8Image reference = to_srgb8(test::render_on(test::Backend::Cpu, moved(scene, {offset, -offset, 3 * offset})));
+    const Rgb8Image reference = to_srgb8(test::render_on(test::Backend::Cpu, test::moved_scene(scene, {offset, -offset, 3 * offset})));
     test::expect_same_picture("far_from_origin_cpu", reference, far);
 }
 

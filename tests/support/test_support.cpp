@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 
 #include "cpu/cpu_renderer.hpp"
+#include "scene/animation.hpp"
 #include "scene/load_scene.hpp"
 
 namespace lancer::test {
@@ -80,6 +81,14 @@ std::string save_comparison(const std::string& name, const Rgb8Image& a, const R
     write_png(dir + "/b.png", b);
     write_png(dir + "/diff.png", difference_image(a, b));
     return dir;
+}
+
+Scene moved_scene(Scene scene, const glm::dvec3& offset) {
+    for (Object& o : scene.objects) translate(o.shape, offset);
+    for (Light& l : scene.lights) l.position += offset;
+    scene.camera.eye += offset;
+    scene.camera.look_at += offset;
+    return scene;
 }
 
 void expect_same_picture(const std::string& name, const Rgb8Image& a, const Rgb8Image& b) {

@@ -50,6 +50,8 @@ void PrintTo(const RejectedCommand& c, std::ostream* os);
 Scene scene_from_text(const std::string& toml);
 // scenes/NAME.toml at a test's image size; `samples` 0 keeps the scene's own.
 Scene shipped_scene(const std::string& name, int width, int height, int samples = 0);
+// The scene moved by `offset`, objects, lights and camera together: the same picture.
+Scene moved_scene(Scene scene, const glm::dvec3& offset);
 
 // Writes a.png, b.png and diff.png under output_dir()/name and returns the directory.
 std::string save_comparison(const std::string& name, const Rgb8Image& a, const Rgb8Image& b);
