@@ -10,6 +10,9 @@
 namespace lancer::gpu {
 namespace {
 
+// The tracer's pipeline layout has push constants the size of BandParams (gpu/pipeline.cpp).
+static_assert(sizeof(SelectStep) <= sizeof(BandParams), "SelectStep must fit the push constant range");
+
 // The workgroups (and blocks of the prefix sums) that cover `items` pixels or list entries.
 std::uint64_t blocks_of(std::uint64_t items) { return (items + SELECT_BLOCK - 1) / SELECT_BLOCK; }
 
