@@ -50,10 +50,6 @@ bool differs(uint a, uint b) {
     return d.b >= blue_difference_floor(d.r * 256u + d.g);
 }
 
-// Each invocation takes a run of SELECT_RUN consecutive pixels (or list entries), so that one
-// prefix sum over a workgroup, with its barriers, covers a block of SELECT_BLOCK pixels: lavapipe
-// pays far more for a workgroup's barriers than for the loop (a pixel each: 8x the time).
-
 // Whether candidate i goes on, given its row neighbours' codes (`left`, `right`: those of the
 // pixels before and after it in memory, which are its neighbours where the row goes on).
 bool differs_from_a_neighbour(uint i, uint c, uint left, uint right) {
@@ -97,6 +93,11 @@ void merge_entry(uint i) {
         differs(encode_colour(pixels[selection.count + i].rgb), encode_colour(pixels[2u * selection.count + i].rgb)))
         refine_flags[p] |= REFINE_SPREAD;
 }
+
+// Each invocation takes a run of SELECT_RUN consecutive pixels (or list entries), so that one
+// prefix sum over a workgroup, with its barriers, covers a block of SELECT_BLOCK pixels: lavapipe
+// pays far more for a workgroup's barriers than for the loop (a pixel per invocation: 0.3 s a pass
+// at 1280x720 instead of 20-40 ms; docs/performance.md).
 
 void main() {
     uint block = gl_WorkGroupID.x;
