@@ -5,22 +5,26 @@
 # time (as the render line reports it) and of user CPU time (less sensitive to other load),
 # and the ratios B/A.
 #
-#   bench/ab.sh [-n runs=7] [-s WxH=1280x720] SCENE A B
+#   bench/ab.sh [-n runs=7] [-s WxH=1280x720] [-a 'RENDER ARGS'] SCENE A B
 #   bench/ab.sh scenes/seed.toml /tmp/lancer-before build/lancer
+#   bench/ab.sh -a '--aa-threshold 0.3' scenes/many.toml /tmp/lancer-before build/lancer
 #   bench/ab.sh -s 16x9 scenes/seed.toml shaders/ /tmp/shaders-variant/   # start-up cost only
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=7
 size=1280x720
-while getopts "n:s:" opt; do
+extra=""
+usage="usage: $0 [-n runs] [-s WxH] [-a 'RENDER ARGS'] SCENE A B"
+while getopts "n:s:a:" opt; do
   case $opt in
     n) runs=$OPTARG ;;
     s) size=$OPTARG ;;
-    *) echo "usage: $0 [-n runs] [-s WxH] SCENE A B" >&2; exit 2 ;;
+    a) extra=$OPTARG ;;
+    *) echo "$usage" >&2; exit 2 ;;
   esac
 done
 shift $((OPTIND - 1))
-[ $# -eq 3 ] || { echo "usage: $0 [-n runs] [-s WxH] SCENE A B" >&2; exit 2; }
+[ $# -eq 3 ] || { echo "$usage" >&2; exit 2; }
 scene=$1
 [ -x build/lancer ] || ./setup.sh build
 out=$(mktemp -d)
@@ -35,7 +39,8 @@ command_for() {  # the lancer command line of a variant
 }
 run() {  # prints "wall user" of one render
   local cmd; cmd=$(command_for "$1")
-  /usr/bin/time -f "%U" -o "$out/time" $cmd "$scene" --width "${size%x*}" --height "${size#*x}" \
+  # shellcheck disable=SC2086  # the extra arguments are split as on a command line
+  /usr/bin/time -f "%U" -o "$out/time" $cmd "$scene" --width "${size%x*}" --height "${size#*x}" $extra \
     -o "$out/image.png" 2>"$out/log" >/dev/null
   local wall; wall=$(grep "Mrays/s" "$out/log" | tail -n 1 | sed -E 's/.*: ([0-9.]+) s, .*/\1/')
   echo "$wall $(tail -n 1 "$out/time")"

@@ -86,6 +86,20 @@ LANCER_CONST GRID_BLOCKS = 3;
 LANCER_CONST GRID_OFFSET = 4;
 LANCER_CONST GRID_SCATTER = 5;
 
+// Adaptive anti-aliasing's choice of the pixels to refine on the GPU (shaders/refine_select.comp):
+// its workgroup size, the pixels each invocation takes, a block of its prefix sums (a workgroup's
+// pixels), its steps (SelectStep::kind) and the bits of refine_flags.
+LANCER_CONST SELECT_WORKGROUP = 64;
+LANCER_CONST SELECT_RUN = 16;
+LANCER_CONST SELECT_BLOCK = SELECT_WORKGROUP * SELECT_RUN;
+LANCER_CONST SELECT_ENCODE = 0;
+LANCER_CONST SELECT_MERGE = 1;
+LANCER_CONST SELECT_FLAG = 2;
+LANCER_CONST SELECT_BLOCKS = 3;
+LANCER_CONST SELECT_SCATTER = 4;
+LANCER_CONST REFINE_CANDIDATE = 1;  // the last step traced it (before the first: every pixel)
+LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by more than the threshold
+
 // ---------------------------------------------------------------------------------------------
 // Structs, as lists of rows. LANCER_ROWS_Name(VEC4, VEC4S, SCALARS) lists the rows of struct
 // Name in order: VEC4(name) a vec4; VEC4S(name, n) an array of n vec4s; SCALARS(T0, n0, T1, n1,
@@ -250,13 +264,24 @@ LANCER_CONST GRID_SCATTER = 5;
 // With refine_count > 0 the band is a compact list of pixels instead (adaptive anti-aliasing):
 // the dispatch of `rows` rows has an invocation for each entry i < refine_count, workgroup by
 // workgroup in order (entries [64 g, 64 g + 64) in workgroup g, counted row by row), which traces
-// the pixel refined_pixel_at(i) and writes pixels[i]; y0 is unused. Every lane but the last
+// the pixel refine_list[refine_first + i] and writes pixels[i]; y0 is unused. Every lane but the last
 // workgroup's tail has a pixel to trace. With spread = 1 it also writes the per-channel smallest and
 // largest of the pixel's sample colours to pixels[refine_count + i] and pixels[2 refine_count + i]
 // (adaptive anti-aliasing by the spread of a pixel's samples: render/adaptive_render.hpp).
 #define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS)                      \
     SCALARS(uint, y0, uint, rows, uint, sample_first, uint, sample_count) \
-    SCALARS(uint, refine_count, uint, spread, uint, reserved1, uint, reserved2)
+    SCALARS(uint, refine_count, uint, spread, uint, refine_first, uint, reserved)
+
+// Push constants of the selection of pixels to refine (shaders/refine_select.comp).
+#define LANCER_ROWS_SelectStep(VEC4, VEC4S, SCALARS)                                                      \
+    SCALARS(uint, kind,   /* SELECT_ENCODE, ... */                                                       \
+            uint, width, uint, height,                                                                   \
+            uint, every_candidate) /* 1: the threshold is 0 or less, every candidate goes on */         \
+    SCALARS(uint, first,  /* SELECT_MERGE: the band's first entry in refine_list */                      \
+            uint, count,  /* SELECT_MERGE: the band's entries */                                         \
+            uint, spread, /* SELECT_MERGE: 1 when the band's output holds the samples' extremes; */      \
+                          /* SELECT_FLAG: 1 when a candidate whose samples spread goes on */          \
+            uint, reserved)
 
 // The structs themselves, and their size in rows (Name_ROWS), from the lists above.
 #define LANCER_MEMBER_VEC4(name) vec4 name;
@@ -287,6 +312,7 @@ LANCER_STRUCT(Emitter)
 LANCER_STRUCT(Photon)
 LANCER_STRUCT(PhotonParams)
 LANCER_STRUCT(GridStep)
+LANCER_STRUCT(SelectStep)
 
 // ---------------------------------------------------------------------------------------------
 // Resources: every descriptor of set 0, as X(NAME, slot, kind, Element, member, reader, what).
@@ -332,8 +358,9 @@ LANCER_CONST RESOURCE_INT = 4;
     X(FRAME, 0, RESOURCE_UNIFORM, FrameParams, frame, frame, "frame parameters")     \
     LANCER_SCENE_ARRAYS(X)                                                           \
     X(OUTPUT, 15, RESOURCE_OUTPUT, vec4, pixels, pixels, "output rows") /* one band of the image */  \
-    X(REFINE, 16, RESOURCE_UINT, uint, refine, refined_pixel_at, "pixels to refine") /* see BandParams */ \
-    LANCER_PHOTON_BUFFERS(X)
+    X(REFINE, 16, RESOURCE_OUTPUT, uint, refine_list, refine_list, "pixels to refine") /* see BandParams */ \
+    LANCER_PHOTON_BUFFERS(X)                                                         \
+    LANCER_SELECT_BUFFERS(X)
 
 // Photon mapping's working buffers, written by its compute passes (sizes: gpu/photon_pass.cpp).
 #define LANCER_PHOTON_BUFFERS(X)                                                                     \
@@ -343,11 +370,22 @@ LANCER_CONST RESOURCE_INT = 4;
     X(PHOTON_COUNTER, 20, RESOURCE_OUTPUT, uint, photon_counter, photon_counter, "photon counter")   \
     X(CELL_COUNT, 21, RESOURCE_OUTPUT, uint, cell_count, cell_count, "photons per grid bucket")     \
     X(CELL_START, 22, RESOURCE_OUTPUT, uint, cell_start, cell_start, "grid bucket starts")          \
-    X(BLOCK_SUMS, 23, RESOURCE_OUTPUT, uint, block_sums, block_sums, "grid scan block sums")         \
+    /* the block totals of a prefix sum (shaders/block_scan.glsl), the grid's and the selection's */  \
+    X(BLOCK_SUMS, 23, RESOURCE_OUTPUT, uint, block_sums, block_sums, "prefix sum block totals")      \
     /* the sorted photons and bucket starts again, as texel buffers for the tracer's gather (llvmpipe */ \
     /* reads storage buffers lane by lane): copied from the two above once a pass is sorted */            \
     X(GATHER_PHOTONS, 24, RESOURCE_ROWS, Photon, gather_photons, gather_photon_at, "photons to gather")   \
     X(GATHER_STARTS, 25, RESOURCE_UINT, uint, gather_starts, gather_start_at, "grid bucket starts to gather")
+
+// Adaptive anti-aliasing's picture on the device, from which the selection (refine_select.comp)
+// lists the pixels to refine into refine_list, with its count in block_sums (sizes:
+// gpu/refine_selection.cpp).
+#define LANCER_SELECT_BUFFERS(X)                                                                       \
+    X(PICTURE, 26, RESOURCE_OUTPUT, vec4, picture, picture, "adaptive picture") /* as pixels[] */       \
+    X(PICTURE_CODES, 27, RESOURCE_OUTPUT, uint, picture_codes, picture_codes, "adaptive picture's sRGB codes") /* r | g << 8 | b << 16 */ \
+    X(REFINE_FLAGS, 28, RESOURCE_OUTPUT, uint, refine_flags, refine_flags, "refinement flags") /* REFINE_* */ \
+    X(SRGB_LEVELS, 29, RESOURCE_UINT, uint, srgb_levels, srgb_level_start, "sRGB level starts") /* float bits: image/difference_tables.hpp */ \
+    X(DIFFERENCE_FLOORS, 30, RESOURCE_UINT, uint, difference_floors, blue_difference_floor, "colour difference floors") /* same */
 
 #define LANCER_BINDING_CONSTANT(NAME, slot, kind, Element, member, reader, what) LANCER_CONST BINDING_##NAME = slot;
 LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
@@ -395,6 +433,7 @@ LANCER_ASSERT_SIZE(Emitter)
 LANCER_ASSERT_SIZE(Photon)
 LANCER_ASSERT_SIZE(PhotonParams)
 LANCER_ASSERT_SIZE(GridStep)
+LANCER_ASSERT_SIZE(SelectStep)
 #undef LANCER_ASSERT_SIZE
 }  // namespace lancer::gpu
 #endif

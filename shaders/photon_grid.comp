@@ -5,7 +5,7 @@
 //   GRID_COUNT    per photon: count it in its bucket;
 //   GRID_SCAN     per block of PHOTON_WORKGROUP buckets: the exclusive prefix sums of the counts
 //                 within the block, into cell_start, and the block's total into block_sums;
-//   GRID_BLOCKS   one invocation: the exclusive prefix sums of the block totals, in place;
+//   GRID_BLOCKS   one workgroup: the exclusive prefix sums of the block totals, in place;
 //   GRID_OFFSET   per bucket: add its block's offset to cell_start; the last one also writes
 //                 the total after the last bucket;
 //   GRID_SCATTER  per photon: into the next free place of its bucket (counting its bucket's
@@ -20,9 +20,8 @@
 layout(local_size_x = PHOTON_WORKGROUP, local_size_y = 1, local_size_z = 1) in;
 layout(push_constant) uniform GridBlock { GridStep step; };
 
+#include "block_scan.glsl"
 #include "photon_grid.glsl"
-
-shared uint block[PHOTON_WORKGROUP];
 
 uint photon_bucket(uint i) {
     Photon ph = photons[i];
@@ -39,28 +38,12 @@ void main() {
     } else if (step.kind == GRID_COUNT) {
         if (i < stored) atomicAdd(cell_count[photon_bucket(i)], 1u);
     } else if (step.kind == GRID_SCAN) {
-        uint lane = gl_LocalInvocationID.x;
-        uint value = i < buckets ? cell_count[i] : 0u;
-        block[lane] = value;
-        barrier();
-        // Hillis and Steele's inclusive scan in shared memory, then shifted to exclusive.
-        for (uint offset = 1u; offset < PHOTON_WORKGROUP; offset *= 2u) {
-            uint add = lane >= offset ? block[lane - offset] : 0u;
-            barrier();
-            block[lane] += add;
-            barrier();
-        }
-        if (i < buckets) cell_start[i] = block[lane] - value;
-        if (lane == PHOTON_WORKGROUP - 1u) block_sums[gl_WorkGroupID.x] = block[lane];
+        uint total;
+        uint before = workgroup_exclusive_sum(i < buckets ? cell_count[i] : 0u, total);
+        if (i < buckets) cell_start[i] = before;
+        if (gl_LocalInvocationIndex == 0u) block_sums[gl_WorkGroupID.x] = total;
     } else if (step.kind == GRID_BLOCKS) {
-        if (i != 0u) return;
-        uint blocks = (buckets + PHOTON_WORKGROUP - 1u) / PHOTON_WORKGROUP;
-        uint sum = 0u;
-        for (uint b = 0u; b < blocks; ++b) {
-            uint s = block_sums[b];
-            block_sums[b] = sum;
-            sum += s;
-        }
+        scan_block_sums((buckets + PHOTON_WORKGROUP - 1u) / PHOTON_WORKGROUP);
     } else if (step.kind == GRID_OFFSET) {
         if (i >= buckets) return;
         uint start = cell_start[i] + block_sums[i / PHOTON_WORKGROUP];

@@ -236,7 +236,7 @@ void main() {
         uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
         out_index = group * uint(WORKGROUP_X * WORKGROUP_Y) + gl_LocalInvocationIndex;
         if (out_index >= band.refine_count) return;
-        uint p = refined_pixel_at(out_index);
+        uint p = refine_list[band.refine_first + out_index];
         pixel = uvec2(p % frame.width, p / frame.width);
     } else {
         if (gl_GlobalInvocationID.x >= frame.width || gl_GlobalInvocationID.y >= band.rows) return;

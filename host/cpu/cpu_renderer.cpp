@@ -16,6 +16,7 @@
 #include "cpu/photon_tracer.hpp"
 #include "cpu/tracer.hpp"
 #include "render/adaptive_render.hpp"
+#include "render/host_adaptive_picture.hpp"
 #include "scene/camera.hpp"
 
 namespace lancer {
@@ -32,12 +33,10 @@ std::string CpuRenderer::description() const {
 FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
     if (scene.photons) return render_photons(scene, progress);
     if (!scene.render.aa_threshold) return render_grid(scene, progress);
-    return render_adaptive(
-        scene, [&](const Scene& s, const ProgressFn& p) { return render_grid(s, p); },
-        [&](const Scene& s, const std::vector<std::uint32_t>& pixels, bool spread, const ProgressFn& p) {
-            return render_listed(s, pixels, spread, p);
-        },
-        progress);
+    HostAdaptivePicture picture([&](const Scene& s, const ProgressFn& p) { return render_grid(s, p); },
+                                [&](const Scene& s, const std::vector<std::uint32_t>& pixels, bool spread,
+                                    const ProgressFn& p) { return render_listed(s, pixels, spread, p); });
+    return render_adaptive(scene, picture, progress);
 }
 
 namespace {

@@ -2,7 +2,7 @@
 #include <vector>
 
 #include "accel/bvh.hpp"
-#include "render/adaptive_render.hpp"
+#include "render/host_adaptive_picture.hpp"
 #include "render/renderer.hpp"
 
 namespace lancer {

@@ -11,11 +11,12 @@
 
 namespace lancer::gpu {
 
-// The entry points compiled at build time: the tracer, and photon mapping's photon pass and
-// grid build.
+// The entry points compiled at build time: the tracer, photon mapping's photon pass and grid
+// build, and adaptive anti-aliasing's selection of the pixels to refine.
 inline constexpr const char* kTraceShader = "trace.comp";
 inline constexpr const char* kPhotonShader = "photons.comp";
 inline constexpr const char* kGridShader = "photon_grid.comp";
+inline constexpr const char* kSelectShader = "refine_select.comp";
 
 std::vector<std::uint32_t> embedded_trace_spirv();
 // The SPIR-V of one of the entry points above.

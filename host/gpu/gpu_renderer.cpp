@@ -25,6 +25,38 @@ constexpr std::size_t kBandPixels = 128 * 1024;
 
 }  // namespace
 
+// The passes of render/adaptive_render.hpp with the picture on the device: the first picture
+// goes there, each choice is made there (its count comes back), each refining band is merged
+// there, and the host reads the picture when it shows or returns it.
+class GpuRenderer::DevicePicture final : public AdaptivePicture {
+public:
+    DevicePicture(GpuRenderer& renderer, std::uint64_t pixels) : renderer_(renderer) {
+        renderer_.selection_pixels_ = pixels;
+    }
+    ~DevicePicture() override { renderer_.selection_pixels_ = 0; }
+    DevicePicture(const DevicePicture&) = delete;
+    DevicePicture& operator=(const DevicePicture&) = delete;
+
+    void render_first(const Scene& one_ray, const ProgressFn& progress) override {
+        FloatImage first;
+        renderer_.render_with(one_ray, false, {0, 1}, first, progress);
+        renderer_.selection().start(first, renderer_.resources_);
+    }
+    std::size_t choose(double threshold, bool by_spread) override {
+        ++renderer_.device_selections_;
+        chosen_ = renderer_.selection().choose(threshold, by_spread, renderer_.resources_, {}, 0.0);
+        return chosen_;
+    }
+    void refine(const Scene& grid, bool keep_spread, const ProgressFn& progress) override {
+        renderer_.render_device_list(grid, chosen_, keep_spread, progress);
+    }
+    FloatImage picture() override { return renderer_.selection().picture(renderer_.resources_); }
+
+private:
+    GpuRenderer& renderer_;
+    std::uint32_t chosen_ = 0;
+};
+
 namespace {
 
 // Runs before the context is made: under a memory limit too small for the driver, a clear error
@@ -62,6 +94,7 @@ GpuRenderer::~GpuRenderer() {
     if (fence_) vkDestroyFence(device, fence_, nullptr);
     if (command_buffer_) vkFreeCommandBuffers(device, context_->command_pool(), 1, &command_buffer_);
     photons_.reset();
+    selection_.reset();
     pipelines_.clear();
 }
 
@@ -132,7 +165,11 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
         ++scenes_packed_;
     }
     const gpu::PackedScene& packed = fresh ? *fresh : *packed_;
-    const std::vector<gpu::BufferNeed> needs = gpu::buffer_needs(packed, output_bytes);
+    std::vector<gpu::BufferNeed> needs = gpu::buffer_needs(packed, output_bytes);
+    if (selection_pixels_) {
+        const std::vector<gpu::BufferNeed> selecting = gpu::RefineSelection::buffer_needs(selection_pixels_);
+        needs.insert(needs.end(), selecting.begin(), selecting.end());
+    }
     gpu::check_memory_budget(needs, limits);
     std::uint64_t buffer_bytes = 0;
     for (const gpu::BufferNeed& need : needs) buffer_bytes += need.bytes;
@@ -209,21 +246,24 @@ FloatImage GpuRenderer::render_in_steps(const Scene& scene, const ProgressFn& pr
         render_with(scene, false, {0, all}, image, progress);
         return image;
     }
-    // Adaptive: each refinement is dispatched over the compact list of its pixels. The list is
-    // made on the host: the picture comes back to the host anyway (band by band), and choosing
-    // from it costs a few comparisons per pixel, nothing beside tracing; the choice is then one
-    // function for both backends.
-    return render_adaptive(
-        scene,
+    // Adaptive: each refinement is dispatched over the compact list of its pixels, which the
+    // device makes from the picture it keeps (only the count comes back), unless the picture is
+    // too large for its buffers.
+    const std::uint64_t pixels = std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height);
+    if (!choose_on_host_ && gpu::RefineSelection::fits(pixels, *context_)) {
+        DevicePicture picture(*this, pixels);
+        return render_adaptive(scene, picture, progress, step);
+    }
+    HostAdaptivePicture picture(
         [&](const Scene& one_ray, const ProgressFn& p) {
             FloatImage every_pixel;
             render_with(one_ray, false, {0, 1}, every_pixel, p);
             return every_pixel;
         },
-        [&](const Scene& grid, const std::vector<std::uint32_t>& pixels, bool spread, const ProgressFn& p) {
-            return render_list(grid, pixels, spread, p);
-        },
-        progress, step);
+        [&](const Scene& grid, const std::vector<std::uint32_t>& listed, bool spread, const ProgressFn& p) {
+            return render_list(grid, listed, spread, p);
+        });
+    return render_adaptive(scene, picture, progress, step);
 }
 
 void GpuRenderer::render_passes(const Scene& scene, int first, int last, FloatImage& sums, const ProgressFn& progress) {
@@ -337,6 +377,32 @@ void GpuRenderer::render_with(const Scene& scene, bool output_hits, SampleRange 
                          features.check_loop_limit && !output_hits, double(y0) / height, progress);
         std::memcpy(band_start, resources_.output(0).data(), entries * sizeof(gpu::vec4));
         if (progress && !progress(double(y0 + rows_here) / height)) throw RenderCancelled();
+    }
+}
+
+gpu::RefineSelection& GpuRenderer::selection() {
+    if (!selection_)
+        selection_ = std::make_unique<gpu::RefineSelection>(*context_, *layout_, gpu::embedded_spirv(gpu::kSelectShader));
+    return *selection_;
+}
+
+void GpuRenderer::render_device_list(const Scene& scene, std::uint32_t count, bool spread, const ProgressFn& progress) {
+    const RenderSettings& rs = scene.render;
+    const auto width = static_cast<std::uint32_t>(rs.width);
+    const auto all = static_cast<std::uint32_t>(rs.samples * rs.samples);
+    const std::size_t rows = band_rows(rs, all);
+    const gpu::ShaderFeatures features = prepare_band_output(scene, false, rows, progress);
+    // With the spread, each pixel's colour is followed by its samples' extremes (BandParams):
+    // a third as many pixels per band, in the same output buffer.
+    const auto per_band = static_cast<std::uint32_t>(std::max<std::size_t>(1, rows * width / (spread ? 3 : 1)));
+    for (std::uint32_t first = 0; first < count; first += per_band) {
+        const std::uint32_t entries = std::min(per_band, count - first);
+        const std::uint32_t rows_here = (entries + width - 1) / width;
+        const gpu::BandParams params{0, rows_here, 0, all, entries, spread ? 1u : 0u, first, 0};
+        const double done = double(first) / double(count);
+        dispatch_checked(params, width, entries, nullptr, features.check_loop_limit, done, progress);
+        selection().merge(first, entries, spread, resources_, progress, done);
+        if (progress && !progress(double(first + entries) / double(count))) throw RenderCancelled();
     }
 }
 

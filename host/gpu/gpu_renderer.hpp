@@ -12,10 +12,12 @@
 #include "gpu/layout.hpp"
 #include "gpu/photon_pass.hpp"
 #include "gpu/pipeline.hpp"
+#include "gpu/refine_selection.hpp"
 #include "gpu/scene_packing.hpp"
 #include "gpu/shader_compiler.hpp"
 #include "gpu/trace_resources.hpp"
 #include "render/adaptive_render.hpp"
+#include "render/host_adaptive_picture.hpp"
 #include "render/renderer.hpp"
 
 namespace lancer {
@@ -58,6 +60,11 @@ public:
     std::size_t scenes_packed() const { return scenes_packed_; }
     const gpu::UploadStats& last_upload() const { return resources_.last_upload(); }
     std::size_t bvh_builds() const { return bvh_cache_.builds(); }  // trees built so far (for tests)
+    // Choices of pixels to refine (adaptive anti-aliasing) made on the device so far (for tests).
+    std::size_t device_selections() const { return device_selections_; }
+    // Adaptive renders choose their pixels on the host, as where the device cannot hold the
+    // picture (for tests of that way).
+    void choose_on_host(bool on_host) { choose_on_host_ = on_host; }
 
     // Rebuilds the tracer from GLSL sources at run time (same entry point, same defines as the
     // embedded SPIR-V): the hot-reload path. Throws ShaderCompileError and keeps the current
@@ -88,11 +95,17 @@ private:
     // Photon mapping: passes [first, last) of the scene's render into `sums` (which holds the
     // passes before `first`); the render's last pass leaves the mean of all of them.
     void render_passes(const Scene& scene, int first, int last, FloatImage& sums, const ProgressFn& progress);
+    // Adaptive anti-aliasing with its picture on the device (gpu/refine_selection.hpp).
+    class DevicePicture;
+    gpu::RefineSelection& selection();
     // The full grid of each pixel in `pixels` (y * width + x), in that order, and with `spread`
     // its samples' extremes: bands of the compact list, every lane with a pixel
-    // (BandParams::refine_count).
+    // (BandParams::refine_count). Where the host chooses the pixels.
     std::vector<ListedPixel> render_list(const Scene& scene, const std::vector<std::uint32_t>& pixels, bool spread,
                                          const ProgressFn& progress);
+    // The same for the `count` pixels the device listed in refine_list, each band merged into the
+    // device's picture once traced.
+    void render_device_list(const Scene& scene, std::uint32_t count, bool spread, const ProgressFn& progress);
     // Rows per band for dispatches of `samples_per_dispatch` samples per pixel.
     std::size_t band_rows(const RenderSettings& rs, std::uint32_t samples_per_dispatch) const;
     // Uploads the scene, selects its pipeline (and runs a photon pass when `photon_pass` >= 0)
@@ -136,6 +149,12 @@ private:
     std::size_t scenes_packed_ = 0;
     std::optional<gpu::PackedScene> packed_;
     std::size_t max_dispatch_samples_ = 0;
+    std::unique_ptr<gpu::RefineSelection> selection_;  // made by the first adaptive render
+    // Within an adaptive render choosing on the device: its picture's pixels, which the memory
+    // budget counts the selection's buffers for.
+    std::uint64_t selection_pixels_ = 0;
+    std::size_t device_selections_ = 0;
+    bool choose_on_host_ = false;
 };
 
 }  // namespace lancer

@@ -57,12 +57,13 @@ void TraceLayout::release() noexcept {
 }
 
 ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layout,
-                                 const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features)
+                                 const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
+                                 const std::string& pipeline_name)
     : device_(context.device()) {
     constexpr std::size_t kCount = std::size(kFeatures);
     std::array<VkBool32, kCount> values{};
     std::array<VkSpecializationMapEntry, kCount> entries{};
-    std::string name = "tracer";
+    std::string name = pipeline_name;
     for (std::size_t i = 0; i < kCount; ++i) {
         const bool on = features.*kFeatures[i].member;
         values[i] = on ? VK_TRUE : VK_FALSE;

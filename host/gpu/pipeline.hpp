@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "gpu/context.hpp"
@@ -33,8 +34,9 @@ private:
 
 class ComputePipeline {
 public:
+    // `name` labels it for validation messages and debuggers, followed by the features it has on.
     ComputePipeline(const Context& context, const TraceLayout& layout, const std::vector<std::uint32_t>& spirv,
-                    const ShaderFeatures& features);
+                    const ShaderFeatures& features, const std::string& name = "tracer");
     ~ComputePipeline();
     ComputePipeline(const ComputePipeline&) = delete;
     ComputePipeline& operator=(const ComputePipeline&) = delete;

@@ -448,7 +448,7 @@ std::vector<BufferNeed> buffer_needs(const PackedScene& packed, std::uint64_t ou
         needs.push_back(array_need(SceneArray(a), packed.count(SceneArray(a))));
     needs.push_back({"output rows", RESOURCE_OUTPUT, output_bytes / sizeof(vec4), output_bytes});
     // A band of refined pixels (adaptive anti-aliasing) lists at most the band's pixels.
-    needs.push_back({"pixels to refine", RESOURCE_UINT, output_bytes / sizeof(vec4), output_bytes / sizeof(vec4) * sizeof(uint)});
+    needs.push_back({"pixels to refine", RESOURCE_OUTPUT, output_bytes / sizeof(vec4), output_bytes / sizeof(vec4) * sizeof(uint)});
     if (packed.features.has_photons) {
         // Photon mapping's buffers at the size a pass starts with (gpu/photon_pass.cpp); a pass
         // that stores more grows them and is checked again there.

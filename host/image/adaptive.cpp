@@ -1,15 +1,32 @@
 #include "image/adaptive.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace lancer {
 
-double color_difference(const glm::vec4& a, const glm::vec4& b) {
+namespace {
+
+std::atomic<std::size_t> g_pixels_to_refine_calls{0};
+
+int code_distance(float a, float b) { return std::abs(int(encode_srgb8(a)) - int(encode_srgb8(b))); }
+
+}  // namespace
+
+double code_difference(int dr, int dg, int db) {
     double d = 0.0;
-    for (int c = 0; c < 3; ++c) d += std::abs(int(encode_srgb8(a[c])) - int(encode_srgb8(b[c]))) / 255.0;
+    d += dr / 255.0;
+    d += dg / 255.0;
+    d += db / 255.0;
     return d;
 }
+
+double color_difference(const glm::vec4& a, const glm::vec4& b) {
+    return code_difference(code_distance(a.r, b.r), code_distance(a.g, b.g), code_distance(a.b, b.b));
+}
+
+std::size_t pixels_to_refine_calls() { return g_pixels_to_refine_calls.load(); }
 
 double sample_spread(const glm::vec3& lo, const glm::vec3& hi) {
     return color_difference(glm::vec4(lo, 0.0f), glm::vec4(hi, 0.0f));
@@ -31,6 +48,7 @@ std::vector<int> aa_grid_levels(int samples, int depth) {
 
 std::vector<std::uint32_t> pixels_to_refine(const FloatImage& image, double threshold,
                                             const std::vector<char>& candidates) {
+    ++g_pixels_to_refine_calls;
     const int w = image.width, h = image.height;
     auto candidate = [&](std::size_t i) { return candidates.empty() || candidates[i]; };
     std::vector<char> refine(std::size_t(w) * h, 0);

@@ -2,6 +2,7 @@
 // Adaptive anti-aliasing, the part both renderers share: the grids of the refinements and which
 // pixels of a picture go on to the next grid. The order of the passes, and how their pictures
 // are combined, is render/adaptive_render.hpp's.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -15,6 +16,9 @@ namespace lancer {
 // the PNG holds them (sRGB-encoded, 0..1), not the linear ones: in linear terms an edge in the
 // dark (a checker line in shadow) differs by a few hundredths and would never be refined.
 double color_difference(const glm::vec4& a, const glm::vec4& b);
+// The same from the absolute differences of the three 8-bit codes, operation for operation (the
+// GPU's selection decides from tables of it: image/difference_tables.hpp).
+double code_difference(int dr, int dg, int db);
 
 // How far a pixel's samples spread: POV-Ray's difference between the per-channel smallest and
 // largest of their linear colours `lo` and `hi`, sRGB-encoded as color_difference() measures.
@@ -36,5 +40,9 @@ int max_aa_depth(int samples);
 // ends with the full grid everywhere.
 std::vector<std::uint32_t> pixels_to_refine(const FloatImage& image, double threshold,
                                             const std::vector<char>& candidates = {});
+
+// How many times this process has called pixels_to_refine() (for tests: the GPU chooses on the
+// device and must not call it).
+std::size_t pixels_to_refine_calls();
 
 }  // namespace lancer

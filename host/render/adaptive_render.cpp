@@ -1,13 +1,16 @@
 #include "render/adaptive_render.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include <fmt/format.h>
 
 #include "image/adaptive.hpp"
 
 namespace lancer {
 
-FloatImage render_adaptive(const Scene& scene, const RenderEveryPixel& every_pixel, const RenderListedPixels& listed,
-                           const ProgressFn& progress, const AdaptiveStepFn& step) {
+FloatImage render_adaptive(const Scene& scene, AdaptivePicture& picture, const ProgressFn& progress,
+                           const AdaptiveStepFn& step) {
     const RenderSettings& rs = scene.render;
     const double threshold = *rs.aa_threshold;
     const std::vector<int> grids = aa_grid_levels(rs.samples, rs.aa_depth);
@@ -20,45 +23,30 @@ FloatImage render_adaptive(const Scene& scene, const RenderEveryPixel& every_pix
 
     Scene pass = scene;
     pass.render.samples = 1;
-    FloatImage image = every_pixel(pass, part(0.0, first_share));
-    image.refined_pixels = 0;
-    image.camera_rays = static_cast<long long>(image.pixels.size());
+    picture.render_first(pass, part(0.0, first_share));
+    long long refined_pixels = 0;
+    long long camera_rays = static_cast<long long>(rs.width) * rs.height;
+    auto current = [&] {
+        FloatImage image = picture.picture();
+        image.refined_pixels = refined_pixels;
+        image.camera_rays = camera_rays;
+        return image;
+    };
 
-    std::vector<std::uint32_t> pixels;  // those the last pass traced (after the first: all)
-    std::vector<ListedPixel> last;
     const int steps = int(grids.size()) - 1;
     int done = 0;
     for (std::size_t k = 1; k < grids.size(); ++k) {
-        std::vector<char> candidates;
-        if (k > 1) {
-            candidates.assign(image.pixels.size(), 0);
-            for (std::uint32_t p : pixels) candidates[p] = 1;
-        }
-        std::vector<std::uint32_t> next = pixels_to_refine(image, threshold, candidates);
-        if (k > 1 && rs.aa_method == AaMethod::Spread) {
-            std::vector<char> refine(image.pixels.size(), 0);
-            for (std::uint32_t p : next) refine[p] = 1;
-            for (std::size_t i = 0; i < pixels.size(); ++i)
-                if (sample_spread(last[i].lo, last[i].hi) > threshold) refine[pixels[i]] = 1;
-            next.clear();
-            for (std::uint32_t p : pixels)
-                if (refine[p]) next.push_back(p);
-        }
-        if (next.empty()) break;
-        if (step) step(image, done, steps, false);
+        const std::size_t chosen = picture.choose(threshold, k > 1 && rs.aa_method == AaMethod::Spread);
+        if (chosen == 0) break;
+        if (step) step(current(), done, steps, false);
         pass.render.samples = grids[k];
-        const bool spread = rs.aa_method == AaMethod::Spread && k + 1 < grids.size();
-        last = listed(pass, next, spread, part(first_share + double(k - 1) * level_share, level_share));
-        // A refined pixel's colour is its last grid's; its ray count says all it traced.
-        for (std::size_t i = 0; i < next.size(); ++i) {
-            glm::vec4& p = image.pixels[next[i]];
-            p = glm::vec4(glm::vec3(last[i].colour), p.a + last[i].colour.a);
-        }
-        if (k == 1) image.refined_pixels = static_cast<long long>(next.size());
-        image.camera_rays += static_cast<long long>(next.size()) * grids[k] * grids[k];
-        pixels = std::move(next);
+        const bool keep_spread = rs.aa_method == AaMethod::Spread && k + 1 < grids.size();
+        picture.refine(pass, keep_spread, part(first_share + double(k - 1) * level_share, level_share));
+        if (k == 1) refined_pixels = static_cast<long long>(chosen);
+        camera_rays += static_cast<long long>(chosen) * grids[k] * grids[k];
         done = int(k);
     }
+    FloatImage image = current();
     if (step) step(image, done, steps, true);
     return image;
 }

@@ -11,40 +11,43 @@
 // threshold (image/adaptive.hpp's sample_spread; POV-Ray's +AM2 asks this of a pixel's corners).
 // The spread alone would stop a pixel whose coarse grid happens to miss an edge its finer grid
 // crosses (a checker line between the rows of a 2 x 2 grid); its neighbours see that edge.
-#include <cstdint>
+#include <cstddef>
 #include <functional>
 #include <string>
-#include <vector>
-
-#include <glm/vec3.hpp>
-#include <glm/vec4.hpp>
 
 #include "render/renderer.hpp"
 
 namespace lancer {
 
-// One pixel of a listed render: the mean of its grid's samples (a = rays traced) and, when the
-// render was asked for them, the per-channel extremes of its samples' linear colours.
-struct ListedPixel {
-    glm::vec4 colour{0.0f};
-    glm::vec3 lo{0.0f}, hi{0.0f};
+// What a renderer provides: a picture it keeps between the passes, the choice of the pixels that
+// go on from it, and their refinement. HostAdaptivePicture (render/host_adaptive_picture.hpp)
+// keeps it on the host; the GPU keeps it on the device (gpu/refine_selection.hpp).
+class AdaptivePicture {
+public:
+    virtual ~AdaptivePicture() = default;
+    // Renders every pixel's first ray (the scene's samples is 1): the picture to refine.
+    virtual void render_first(const Scene& one_ray, const ProgressFn& progress) = 0;
+    // Chooses the pixels of the next refinement by image/adaptive.hpp's rule (pixels_to_refine)
+    // among the candidates: every pixel before the first refinement, afterwards the pixels the
+    // last one traced; with `by_spread`, also those of the last refinement's pixels whose samples
+    // spread by more than the threshold. Returns how many.
+    virtual std::size_t choose(double threshold, bool by_spread) = 0;
+    // Traces the chosen pixels with the scene's samples as their grid, and with `keep_spread`
+    // keeps their samples' spread for the next choice. A refined pixel's colour becomes its grid's
+    // mean; its rays add up.
+    virtual void refine(const Scene& grid, bool keep_spread, const ProgressFn& progress) = 0;
+    // The picture as it is now.
+    virtual FloatImage picture() = 0;
 };
-
-// What a renderer provides: a render of every pixel (the scene's samples is 1), and a render of
-// the listed pixels (y * width + x) with the scene's samples as their grid, with the spread of
-// the samples when `spread` is set.
-using RenderEveryPixel = std::function<FloatImage(const Scene&, const ProgressFn&)>;
-using RenderListedPixels = std::function<std::vector<ListedPixel>(const Scene&, const std::vector<std::uint32_t>&,
-                                                                  bool spread, const ProgressFn&)>;
 
 // Called with the picture after each step (0: every pixel's first ray) of at most `steps` more,
 // and whether it is the final one (progressive display: the viewer).
 using AdaptiveStepFn = std::function<void(const FloatImage& image, int step, int steps, bool final)>;
 
-// The adaptive render of `scene` (scene.render.aa_threshold is set); the image's refined_pixels
-// and camera_rays say what it traced.
-FloatImage render_adaptive(const Scene& scene, const RenderEveryPixel& every_pixel, const RenderListedPixels& listed,
-                           const ProgressFn& progress, const AdaptiveStepFn& step = {});
+// The adaptive render of `scene` (scene.render.aa_threshold is set) through `picture`; the
+// image's refined_pixels and camera_rays say what it traced.
+FloatImage render_adaptive(const Scene& scene, AdaptivePicture& picture, const ProgressFn& progress,
+                           const AdaptiveStepFn& step = {});
 
 // The summary line's camera rays: "9 rays/pixel", or for adaptive anti-aliasing (refined >= 0:
 // how many of the `pixels` were refined at least once, camera_rays: how many rays they all got)

@@ -277,6 +277,49 @@ TEST(AdaptiveGpu, ARenderPacksItsSceneOnceForAllItsSteps) {
     EXPECT_NE(std::memcmp(steps.pixels.data(), other.pixels.data(), steps.pixels.size() * sizeof(glm::vec4)), 0);
 }
 
+// The GPU chooses the pixels to refine on the device (gpu/refine_selection.hpp): it never calls
+// the host's pixels_to_refine, and every step's picture is the one the host's choice gives, byte
+// for byte (the host chooses where the device cannot hold the picture).
+TEST(AdaptiveGpu, ChoosesOnTheDeviceWhatTheHostWould) {
+    GpuRenderer& gpu = test::gpu_renderer();
+    struct HostChoiceOff {
+        GpuRenderer& gpu;
+        ~HostChoiceOff() { gpu.choose_on_host(false); }
+    } restore{gpu};
+    for (AaMethod method : {AaMethod::Neighbours, AaMethod::Spread}) {
+        SCOPED_TRACE(method == AaMethod::Spread ? "spread" : "neighbours");
+        const Scene scene = deeper(2, method, 0.3);
+        auto pictures = [&] {
+            std::vector<FloatImage> steps;
+            gpu.render_in_steps(scene, {}, [&](const FloatImage& image, int, int, bool) { steps.push_back(image); });
+            return steps;
+        };
+        const std::size_t calls = pixels_to_refine_calls(), selections = gpu.device_selections();
+        const std::vector<FloatImage> on_device = pictures();
+        EXPECT_EQ(pixels_to_refine_calls(), calls);
+        EXPECT_EQ(gpu.device_selections(), selections + 2);
+        gpu.choose_on_host(true);
+        const std::vector<FloatImage> on_host = pictures();
+        gpu.choose_on_host(false);
+        EXPECT_EQ(pixels_to_refine_calls(), calls + 2);
+        EXPECT_EQ(gpu.device_selections(), selections + 2);
+        ASSERT_EQ(on_device.size(), 3u);
+        ASSERT_EQ(on_host.size(), on_device.size());
+        for (std::size_t k = 0; k < on_device.size(); ++k) {
+            SCOPED_TRACE("step " + std::to_string(k));
+            ASSERT_EQ(on_device[k].pixels.size(), on_host[k].pixels.size());
+            EXPECT_EQ(std::memcmp(on_device[k].pixels.data(), on_host[k].pixels.data(),
+                                  on_host[k].pixels.size() * sizeof(glm::vec4)),
+                      0);
+            EXPECT_EQ(on_device[k].refined_pixels, on_host[k].refined_pixels);
+            EXPECT_EQ(on_device[k].camera_rays, on_host[k].camera_rays);
+        }
+        EXPECT_NE(std::memcmp(on_device[0].pixels.data(), on_device[2].pixels.data(),
+                              on_device[0].pixels.size() * sizeof(glm::vec4)),
+                  0);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, Adaptive, ::testing::Values(test::Backend::Gpu, test::Backend::Cpu),
                          [](const auto& info) { return std::string(test::backend_name(info.param)); });
 

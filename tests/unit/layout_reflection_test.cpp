@@ -2,8 +2,9 @@
 // of the shader: every member of every block it reflects at the host's offset, every member the
 // host has reflected, and every descriptor of LANCER_RESOURCES declared at its binding with the
 // type its kind means. Nothing here lists members or bindings by hand: a member or resource added
-// to layout.h is checked at once. The tracer and photon mapping's two compute passes share the
-// one table, so the checks run over all three entry points. (Structs read from texel buffers have no block to reflect:
+// to layout.h is checked at once. The tracer, photon mapping's two compute passes and adaptive
+// anti-aliasing's selection share the one table, so the checks run over all four entry points.
+// (Structs read from texel buffers have no block to reflect:
 // tests/render/interface_test.cpp reads each back through the shader instead.)
 #include <cstddef>
 #include <map>
@@ -67,11 +68,16 @@ std::map<std::string, BlockVariable> host_block_variables() {
             {"photon_counter", {uints, int(sizeof(uint))}},
             {"cell_count", {uints, int(sizeof(uint))}},
             {"cell_start", {uints, int(sizeof(uint))}},
-            {"block_sums", {uints, int(sizeof(uint))}}};
+            {"block_sums", {uints, int(sizeof(uint))}},
+            {"selection", {HOST_OFFSETS(SelectStep), 0}},
+            {"refine_list", {uints, int(sizeof(uint))}},
+            {"picture", {Offsets{{"", 0}}, int(sizeof(vec4))}},
+            {"picture_codes", {uints, int(sizeof(uint))}},
+            {"refine_flags", {uints, int(sizeof(uint))}}};
 }
 
 // The compute entry points that share the resource table.
-const char* const kEntries[] = {"trace.comp", "photons.comp", "photon_grid.comp"};
+const char* const kEntries[] = {"trace.comp", "photons.comp", "photon_grid.comp", "refine_select.comp"};
 
 TEST(Layout, EveryReflectedBlockMemberIsAtTheHostsOffsetAndEveryHostMemberIsReflected) {
     const auto host = host_block_variables();
@@ -117,6 +123,7 @@ TEST(Layout, EveryResourceIsDeclaredAtItsBindingWithItsKindAndNothingElse) {
     }
     expected["BandBlock"] = {"push constants", -1};
     expected["GridBlock"] = {"push constants", -1};
+    expected["SelectBlock"] = {"push constants", -1};
     // Each entry point declares a part of the table; together they declare all of it.
     std::map<std::string, std::pair<std::string, int>> declared;
     for (const char* entry : kEntries)
