@@ -44,17 +44,9 @@ bool primitive_intersect(Primitive p, Ray ray, float t_min, float t_max, bool pl
     return false;
 }
 
-// A hit's error bound (Hit.error), completed from the intersector's where the point is needed:
-// implicit surfaces add the band their enclosures cannot resolve.
-float hit_error(uint index, vec3 p, float error) {
-#if LANCER_IMPLICIT_SURFACES
-    Primitive prim = primitive_at(index);
-    if (prim.type == SHAPE_IMPLICIT) return error + implicit_band(prim, p);
-#endif
-    return error;
-}
-
-vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
+// The unit normal at a hit, and its error bound (Hit.error) completed from the intersector's:
+// implicit surfaces add the band their enclosures cannot resolve, from the gradient at p.
+vec3 primitive_normal(uint index, vec3 p, vec2 uv, inout float error) {
     Primitive prim = primitive_at(index);
     switch (prim.type) {
         case SHAPE_SPHERE: if (SCENE_HAS_SPHERE) return sphere_normal(prim, p); break;
@@ -66,7 +58,7 @@ vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
         case SHAPE_PARAMETRIC: return parametric_normal(prim, uv);
 #endif
 #if LANCER_IMPLICIT_SURFACES
-        case SHAPE_IMPLICIT: return implicit_normal(prim, p);
+        case SHAPE_IMPLICIT: return implicit_normal(prim, p, error);
 #endif
     }
     return vec3(0.0, 0.0, 1.0);
@@ -187,9 +179,8 @@ bool closest_hit(Ray ray, float t_min, out Hit hit) {
     hit.t = best.t;
     hit.primitive = best.prim;
     hit.uv = best.uv;
-    vec3 p = ray.origin + best.t * ray.dir;
-    hit.error = hit_error(best.prim, p, best.error);
-    hit.normal = primitive_normal(best.prim, p, best.uv);
+    hit.error = best.error;
+    hit.normal = primitive_normal(best.prim, ray.origin + best.t * ray.dir, best.uv, hit.error);
     return true;
 }
 

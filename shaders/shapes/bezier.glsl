@@ -182,24 +182,22 @@ bool bezier_intersect(Primitive prim, Ray ray, float t_min, float t_max, out flo
                     // waiting. Nearer first, a root found early prunes what lies behind it; the
                     // other way round, a tangent behind the nearest root can take every step left
                     // (BEZIER_MAX_STEPS) in a cloud of tiny boxes before the root's half is seen.
+                    // (Written as a choice of the half to push and of the side to cut, not of two
+                    // boxes: the teapot took 1.2 times as long with that.)
                     if (sp < BEZIER_STACK) {
                         float t00 = net[0].z / net[0].w, t01 = net[3].z / net[3].w;
                         float t10 = net[12].z / net[12].w, t11 = net[15].z / net[15].w;
-                        vec4 first, second;
-                        bool low_first;
                         if (nw.x >= nw.y) {
                             float m = 0.5 * (clipped.x + clipped.y);
-                            first = vec4(clipped.x, m, clipped.z, clipped.w);
-                            second = vec4(m, clipped.y, clipped.z, clipped.w);
-                            low_first = min(t00, t01) <= min(t10, t11);
+                            bool low_first = min(t00, t01) <= min(t10, t11);
+                            stack[sp++] = low_first ? vec4(m, clipped.y, clipped.z, clipped.w) : vec4(clipped.x, m, clipped.z, clipped.w);
+                            if (low_first) clipped.y = m; else clipped.x = m;
                         } else {
                             float m = 0.5 * (clipped.z + clipped.w);
-                            first = vec4(clipped.x, clipped.y, clipped.z, m);
-                            second = vec4(clipped.x, clipped.y, m, clipped.w);
-                            low_first = min(t00, t10) <= min(t01, t11);
+                            bool low_first = min(t00, t10) <= min(t01, t11);
+                            stack[sp++] = low_first ? vec4(clipped.x, clipped.y, m, clipped.w) : vec4(clipped.x, clipped.y, clipped.z, m);
+                            if (low_first) clipped.w = m; else clipped.z = m;
                         }
-                        stack[sp++] = low_first ? second : first;
-                        clipped = low_first ? first : second;
                     }
                 }
                 box = clipped;

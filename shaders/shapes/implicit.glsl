@@ -165,27 +165,27 @@ bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out f
 // may lie anywhere in the band, and a ray leaving the surface must start outside it (pieces
 // nearer would be a hit at t ~ 0: acne). The natural enclosures of high-degree surfaces (Barth's
 // sextic) overestimate f's range over a piece several times, which makes the band wider than
-// their rounding alone. Where the gradient vanishes (a singular point) the old fixed rule stands in.
-float implicit_band(Primitive prim, vec3 p) {
-    ImplicitInfo info = implicit_at(prim.data);
-    mat3 rows = mat3(info.row0.xyz, info.row1.xyz, info.row2.xyz);
-    vec3 local = p * rows + vec3(info.row0.w, info.row1.w, info.row2.w);
+// their rounding alone. `gradient` is |grad f| at p in world space; where it vanishes (a singular
+// point) the fixed rule of the CPU reference stands in.
+float implicit_band(Primitive prim, vec3 local, float gradient, vec3 p) {
     float h = IMPLICIT_EPS * length(prim.p1.xyz - prim.p0.xyz);
     vec2 f, df;
     implicit_interval(prim.data, local, vec3(1.0), vec2(-0.5 * h, 0.5 * h), f, df);  // x, y and z each within h / 2 of p's
-    float band = 0.5 * (f.y - f.x) / length(rows * implicit_gradient(prim.data, local));
+    float band = 0.5 * (f.y - f.x) / gradient;
     return isinf(band) || isnan(band) ? 1e-4 * max(1.0, max_abs(p)) : band;
 }
 
 // The unit normal at world point p: the gradient, carried to world space by the transpose of
 // the world -> local map. Where it vanishes (a singular point) the gradient a little away
-// along the box's diagonal is taken, as on the CPU reference.
-vec3 implicit_normal(Primitive prim, vec3 p) {
+// along the box's diagonal is taken, as on the CPU reference. Adds the band (implicit_band) to
+// the hit's error bound.
+vec3 implicit_normal(Primitive prim, vec3 p, inout float error) {
     ImplicitInfo info = implicit_at(prim.data);
     mat3 rows = mat3(info.row0.xyz, info.row1.xyz, info.row2.xyz);
     vec3 local = p * rows + vec3(info.row0.w, info.row1.w, info.row2.w);
     vec3 step = (prim.p1.xyz - prim.p0.xyz) * 0.57735027;
     vec3 g = implicit_gradient(prim.data, local);
+    error += implicit_band(prim, local, length(rows * g), p);
     if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-5 * step);
     if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-3 * step);
     if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-2 * step);
