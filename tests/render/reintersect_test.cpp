@@ -15,6 +15,20 @@
 // object's box (inside closed shapes), and from far off (100 to 10^4 times the object's size).
 // The GPU sees positions relative to its anchor near the camera (gpu/float_anchor), so every
 // family is also placed far from the world origin with the camera beside it.
+//
+// The bounds. A hit's error bound is the intersector's own, derived beside it: for the analytic
+// shapes k roundings (16, 32 for the sphere) of |origin| + t + the shape's coordinates, all in
+// those camera-relative coordinates, so it grows with the distance from the camera as float's
+// resolution does; for Bezier patches the converged hull's extent along the ray and 48 roundings
+// of its distance; for implicit surfaces Newton's last step and the band the interval
+// enclosures cannot resolve at the hit; for parametric ones 1e-4 of the cell plus 64 roundings
+// (shaders/shapes/parametric_error.glsl). The test requires the true distance to be within it for
+// every hit (the summary prints the largest ratio: about 0.1 for the analytic shapes, up to 0.9
+// for Bezier hits from 10^4 sizes away). Offsets are twice the bound plus the origin's rounding,
+// so at most 3 bounds; the surface behind a restarted origin must be between 1 and 4 bounds away.
+// A hit the reference does not confirm is excused only within 2e-6 of the ray's magnitudes (about
+// 34 roundings, the size of the bounds) or twice the bound of a silhouette or edge, and never
+// within 1e-3 of the object's size of a restarted ray's origin (reintersect_judge.cpp).
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -162,7 +176,10 @@ std::vector<surface::BezierPatch> moved(std::vector<surface::BezierPatch> patche
 struct Case {
     std::string name;
     Scene (*make)();
-    bool parametric = false;
+    // The parametric intersector (shaders/shapes/parametric.glsl) is being rewritten: until it
+    // lands, its roots (checks nearest, spurious, missed) are reported here, not asserted; its
+    // error bounds and offsets are asserted like every family's.
+    bool roots_reported_only = false;
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
@@ -303,9 +320,9 @@ TEST_P(Reintersect, HitsLieOnTheSurfaceAndRestartedRaysLeaveIt) {
         h.through = {dvec3(vec3(r[8])), h.ray.dir, r[8].w, r[9].x, dvec3(vec3(r[11]))};
         judge.judge(h, i / kRaysPerKind);
     }
-    std::printf("%s: anchor (%g, %g, %g)\n%s", c.name.c_str(), packed.anchor.x, packed.anchor.y, packed.anchor.z,
-                judge.summary().c_str());
-    judge.expect_all_pass(c.name, !c.parametric);
+    std::printf("%s: anchor (%g, %g, %g)%s\n%s", c.name.c_str(), packed.anchor.x, packed.anchor.y, packed.anchor.z,
+                c.roots_reported_only ? "; roots reported, not asserted" : "", judge.summary().c_str());
+    judge.expect_all_pass(c.name, !c.roots_reported_only);
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, Reintersect, testing::ValuesIn(kCases),

@@ -19,9 +19,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // A restarted ray's hit nearer than this (of the object's size) that the reference does not
 // confirm is the surface it left, met again: acne.
 constexpr double kNearZero = 1e-3;
-// How far sideways a ray may be moved, relative to its magnitudes, to see whether it passes
-// within float's reach of a silhouette or an edge: 1e-5 is about 170 roundings, the size of the
-// device's error bounds (tens of roundings) with room to spare, and far below the object.
+// How far sideways a ray is moved, relative to its magnitudes (|origin| + t + the object's
+// coordinates), to see whether it passes within float's reach of a silhouette or an edge (at
+// least twice the device's error bound, where it has one): 2e-6 is about 34 roundings, the size
+// of the analytic shapes' bounds, and far below the object.
 constexpr double kSilhouette = 2e-6;
 const char* const kKinds[] = {"aimed", "grazing", "from the box", "far"};
 constexpr std::size_t kGrazing = 1;
