@@ -16,32 +16,47 @@
 #include "shapes/parametric_error.glsl"
 #include "shapes/implicit.glsl"
 
-// uv: the surface's own parameters at the hit, for shapes that have them; error: how far the hit
-// point origin + t_hit * dir can be from the surface (Hit.error). Only families the
+// uv: the surface's own parameters at the hit, for shapes that have them; error: the error bound
+// of a Bezier or implicit hit, which only their search knows (hit_error completes the others').
+// Only families the
 // scene has are compiled in (lavapipe runs every case of a switch, the type being known only at
 // run time); planes_only, for the unbounded primitives of a scene with a BVH, leaves planes alone.
 bool primitive_intersect(Primitive p, Ray ray, float t_min, float t_max, bool planes_only, out float t_hit, out vec2 uv,
                          out float error) {
     uv = vec2(0.0);
     error = 0.0;
-    if (planes_only) return SCENE_HAS_PLANE && plane_intersect(p, ray, t_min, t_max, t_hit, error);
+    if (planes_only) return SCENE_HAS_PLANE && plane_intersect(p, ray, t_min, t_max, t_hit);
     switch (p.type) {
-        case SHAPE_SPHERE: return SCENE_HAS_SPHERE && sphere_intersect(p, ray, t_min, t_max, t_hit, error);
-        case SHAPE_PLANE: return SCENE_HAS_PLANE && plane_intersect(p, ray, t_min, t_max, t_hit, error);
-        case SHAPE_RECTANGLE: return SCENE_HAS_RECTANGLE && rectangle_intersect(p, ray, t_min, t_max, t_hit, uv, error);
-        case SHAPE_BOX: return SCENE_HAS_BOX && box_intersect(p, ray, t_min, t_max, t_hit, error);
+        case SHAPE_SPHERE: return SCENE_HAS_SPHERE && sphere_intersect(p, ray, t_min, t_max, t_hit);
+        case SHAPE_PLANE: return SCENE_HAS_PLANE && plane_intersect(p, ray, t_min, t_max, t_hit);
+        case SHAPE_RECTANGLE: return SCENE_HAS_RECTANGLE && rectangle_intersect(p, ray, t_min, t_max, t_hit, uv);
+        case SHAPE_BOX: return SCENE_HAS_BOX && box_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_BEZIER: return SCENE_HAS_BEZIER && bezier_intersect(p, ray, t_min, t_max, t_hit, uv, error);
 #if LANCER_PARAMETRIC_SURFACES
-        case SHAPE_PARAMETRIC:
-            if (!parametric_intersect(p, ray, t_min, t_max, t_hit, uv)) return false;
-            error = parametric_hit_error(p, ray, t_hit, uv);
-            return true;
+        case SHAPE_PARAMETRIC: return parametric_intersect(p, ray, t_min, t_max, t_hit, uv);
 #endif
 #if LANCER_IMPLICIT_SURFACES
         case SHAPE_IMPLICIT: return implicit_intersect(p, ray, t_min, t_max, t_hit, uv, error);
 #endif
     }
     return false;
+}
+
+// A hit's error bound (Hit.error), before primitive_normal completes an implicit one: the analytic
+// and parametric shapes' from the hit (here once per ray, not for every candidate hit of the
+// search), Bezier and implicit surfaces' as their search found it (`found`).
+float hit_error(uint index, Ray ray, float t, vec2 uv, float found) {
+    Primitive prim = primitive_at(index);
+    switch (prim.type) {
+        case SHAPE_SPHERE: if (SCENE_HAS_SPHERE) return sphere_hit_error(prim, ray, t); break;
+        case SHAPE_PLANE: if (SCENE_HAS_PLANE) return plane_hit_error(prim, ray, t); break;
+        case SHAPE_RECTANGLE: if (SCENE_HAS_RECTANGLE) return rectangle_hit_error(prim, ray, t); break;
+        case SHAPE_BOX: if (SCENE_HAS_BOX) return box_hit_error(prim, ray, t); break;
+#if LANCER_PARAMETRIC_SURFACES
+        case SHAPE_PARAMETRIC: return parametric_hit_error(prim, ray, t, uv);
+#endif
+    }
+    return found;
 }
 
 // The unit normal at a hit, and its error bound (Hit.error) completed from the intersector's:
@@ -80,7 +95,7 @@ struct Nearest {
     float t;  // nearest hit so far, or t_max
     uint prim;
     vec2 uv;
-    float error;  // the hit's error bound (Hit.error)
+    float error;  // a Bezier or implicit hit's error bound, as its search found it (hit_error)
 };
 
 // How far a test must look: up to t_max, or a little past the best hit to see its ties.
@@ -179,7 +194,7 @@ bool closest_hit(Ray ray, float t_min, out Hit hit) {
     hit.t = best.t;
     hit.primitive = best.prim;
     hit.uv = best.uv;
-    hit.error = best.error;
+    hit.error = hit_error(best.prim, ray, best.t, best.uv, best.error);
     hit.normal = primitive_normal(best.prim, ray.origin + best.t * ray.dir, best.uv, hit.error);
     return true;
 }

@@ -1,9 +1,6 @@
 // Ray/axis-aligned box by slabs. Twin of host/cpu/shapes/box.cpp. p0 = min, p1 = max.
 // A ray starting inside hits the far side (t_exit), so reflections and shadows from inside work.
-// The hit's error: on the face of axis i, o_i + t d_i misses the face by the rounding of
-// (b_i - o_i) / d_i (3 roundings, relative: the cosine d_i cancels) and of the hit point: 16
-// roundings of |o| + |b| + t.
-bool box_intersect(Primitive b, Ray ray, float t_min, float t_max, out float t_hit, out float error) {
+bool box_intersect(Primitive b, Ray ray, float t_min, float t_max, out float t_hit) {
     vec3 inv = 1.0 / ray.dir;  // +-inf for axis-parallel rays; the slab test stays correct
     vec3 t0 = (b.p0.xyz - ray.origin) * inv;
     vec3 t1 = (b.p1.xyz - ray.origin) * inv;
@@ -12,15 +9,16 @@ bool box_intersect(Primitive b, Ray ray, float t_min, float t_max, out float t_h
     float t_enter = max(max(tn.x, tn.y), tn.z);
     float t_exit = min(min(tf.x, tf.y), tf.z);
     if (t_enter > t_exit) return false;
-    if (t_enter > t_min && t_enter < t_max) {
-        t_hit = t_enter;
-    } else if (t_exit > t_min && t_exit < t_max) {
-        t_hit = t_exit;
-    } else {
-        return false;
-    }
-    error = rounding_bound(16.0, max_abs(ray.origin) + max(max_abs(b.p0.xyz), max_abs(b.p1.xyz)) + t_hit);
-    return true;
+    if (t_enter > t_min && t_enter < t_max) { t_hit = t_enter; return true; }
+    if (t_exit > t_min && t_exit < t_max) { t_hit = t_exit; return true; }
+    return false;
+}
+
+// The hit's error (Hit.error): on the face of axis i, o_i + t d_i misses the face by the rounding
+// of (b_i - o_i) / d_i (3 roundings, relative: the cosine d_i cancels) and of the hit point: 16
+// roundings of |o| + |b| + t.
+float box_hit_error(Primitive b, Ray ray, float t) {
+    return rounding_bound(16.0, max_abs(ray.origin) + max(max_abs(b.p0.xyz), max_abs(b.p1.xyz)) + t);
 }
 
 // The face whose plane the point is closest to, relative to the box size.

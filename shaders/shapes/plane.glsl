@@ -1,19 +1,22 @@
 // Ray/infinite plane. Twin of host/cpu/shapes/plane.cpp.
 // p0 = (point, 0), p1 = (unit normal, 0).
-// The hit's error: t = (p0 - o).n / d.n, so o + t d misses the plane by the rounding of the
-// numerator (4 roundings of |p0 - o|) plus t times that of the denominator (3): the cosine
-// between ray and plane cancels. With the normal's own rounding (a tilt of an ulp, moving the
-// plane by that much of the hit's distance from p0) and the hit point's: 16 roundings of
-// |o| + |p0| + t.
-bool plane_intersect(Primitive pl, Ray ray, float t_min, float t_max, out float t_hit, out float error) {
+bool plane_intersect(Primitive pl, Ray ray, float t_min, float t_max, out float t_hit) {
     vec3 n = pl.p1.xyz;
     float denom = dot(n, ray.dir);
     if (denom == 0.0) return false;  // parallel: no hit, even if the ray lies in the plane
     float t = dot(pl.p0.xyz - ray.origin, n) / denom;
     if (t <= t_min || t >= t_max) return false;
     t_hit = t;
-    error = rounding_bound(16.0, max_abs(ray.origin) + max_abs(pl.p0.xyz) + t);
     return true;
+}
+
+// The hit's error (Hit.error): t = (p0 - o).n / d.n, so o + t d misses the plane by the rounding
+// of the numerator (4 roundings of |p0 - o|) plus t times that of the denominator (3): the cosine
+// between ray and plane cancels. With the normal's own rounding (a tilt of an ulp, moving the
+// plane by that much of the hit's distance from p0) and the hit point's: 16 roundings of
+// |o| + |p0| + t.
+float plane_hit_error(Primitive pl, Ray ray, float t) {
+    return rounding_bound(16.0, max_abs(ray.origin) + max_abs(pl.p0.xyz) + t);
 }
 
 vec3 plane_normal(Primitive pl) {

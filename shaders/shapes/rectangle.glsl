@@ -1,8 +1,6 @@
 // Ray/parallelogram corner + a*edge_u + b*edge_v, a, b in [0, 1].
 // Twin of host/cpu/shapes/rectangle.cpp. p0 = corner, p1 = edge_u, p2 = edge_v.
-// The hit's error is the plane's (plane.glsl), with the corner as the plane's point and the
-// normal cross(edge_u, edge_v), whose rounding tilts it by a few ulps over the edges' length.
-bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv, out float error) {
+bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv) {
     vec3 eu = r.p1.xyz;
     vec3 ev = r.p2.xyz;
     vec3 n = cross(eu, ev);
@@ -19,8 +17,13 @@ bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out flo
     if (a < 0.0 || a > 1.0 || b < 0.0 || b > 1.0) return false;
     t_hit = t;
     uv = vec2(a, b);
-    error = rounding_bound(16.0, max_abs(ray.origin) + max_abs(r.p0.xyz) + max_abs(eu) + max_abs(ev) + t);
     return true;
+}
+
+// The hit's error (Hit.error) is the plane's (plane.glsl), with the corner as the plane's point
+// and the normal cross(edge_u, edge_v), whose rounding tilts it by a few ulps over the edges.
+float rectangle_hit_error(Primitive r, Ray ray, float t) {
+    return rounding_bound(16.0, max_abs(ray.origin) + max_abs(r.p0.xyz) + max_abs(r.p1.xyz) + max_abs(r.p2.xyz) + t);
 }
 
 vec3 rectangle_normal(Primitive r) {

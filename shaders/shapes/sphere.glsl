@@ -1,17 +1,7 @@
 // Ray/sphere. Twin of host/cpu/shapes/sphere.cpp.
 // p0 = (center, radius). Uses the cancellation-free discriminant of Ray Tracing Gems ch. 7:
 // r^2 - |f - (f.d)d|^2 instead of b^2 - c, which loses all precision for distant spheres.
-//
-// The hit's error: f = o - c and perp carry rounding errors of a few |f| ulps; near a tangent
-// their effect on t grows as 1 / cos, the cosine between the ray and the normal, but the
-// hit point's distance from the sphere is that t error times cos again, so it stays a few
-// roundings of |f| <= |o| + |c|. Add the centre's and radius's own rounding and the hit point's
-// (hit_point_rounding): 32 roundings of |o| + |c| + r + t cover them (the test measures a tenth).
-float sphere_hit_error(Primitive s, Ray ray, float t) {
-    return rounding_bound(32.0, max_abs(ray.origin) + max_abs(s.p0.xyz) + s.p0.w + t);
-}
-
-bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float t_hit, out float error) {
+bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float t_hit) {
     vec3 f = ray.origin - s.p0.xyz;
     float r = s.p0.w;
     float b = dot(f, ray.dir);
@@ -24,15 +14,18 @@ bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float 
     float t0 = c / q;
     float t1 = q;
     if (t0 > t1) { float tmp = t0; t0 = t1; t1 = tmp; }
-    if (t0 > t_min && t0 < t_max) {
-        t_hit = t0;
-    } else if (t1 > t_min && t1 < t_max) {
-        t_hit = t1;
-    } else {
-        return false;
-    }
-    error = sphere_hit_error(s, ray, t_hit);
-    return true;
+    if (t0 > t_min && t0 < t_max) { t_hit = t0; return true; }
+    if (t1 > t_min && t1 < t_max) { t_hit = t1; return true; }
+    return false;
+}
+
+// The hit's error (Hit.error): f = o - c and perp carry rounding errors of a few |f| ulps; near
+// a tangent their effect on t grows as 1 / cos, the cosine between the ray and the normal, but
+// the hit point's distance from the sphere is that t error times cos again, so it stays a few
+// roundings of |f| <= |o| + |c|. With the centre's and radius's own rounding and the hit
+// point's (hit_point_rounding): 32 roundings of |o| + |c| + r + t.
+float sphere_hit_error(Primitive s, Ray ray, float t) {
+    return rounding_bound(32.0, max_abs(ray.origin) + max_abs(s.p0.xyz) + s.p0.w + t);
 }
 
 vec3 sphere_normal(Primitive s, vec3 p) {
