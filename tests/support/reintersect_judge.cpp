@@ -201,10 +201,13 @@ std::string ReintersectJudge::summary() const {
     std::sort(ratios.begin(), ratios.end());
     double median = ratios.empty() ? 0.0 : ratios[ratios.size() / 2];
     double most = ratios.empty() ? 0.0 : ratios.back();
+    const std::string clearance = most_clearance_ratio_ > 0.0
+                                      ? fmt::format("{:.3g} to {:.3g}", least_clearance_ratio_, most_clearance_ratio_)
+                                      : std::string("not judged (offsets large against the object)");
     s << fmt::format(
-        "  distance from the surface / bound: at most {:.3g}; offset / bound at most {:.3g}; clearance / bound {:.3g} to {:.3g}; "
+        "  distance from the surface / bound: at most {:.3g}; offset / bound at most {:.3g}; clearance / bound {}; "
         "offset / old fixed offset: median {:.3g}, at most {:.3g}\n",
-        worst_bound_ratio_, worst_offset_ratio_, least_clearance_ratio_, most_clearance_ratio_, median, most);
+        worst_bound_ratio_, worst_offset_ratio_, clearance, median, most);
     return s.str();
 }
 
