@@ -163,9 +163,11 @@ bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out f
 // ray halved down to that length spans no more along any axis), over |grad f|. A ray's
 // piece that starts further than this from the surface has an enclosure that excludes 0; a hit
 // may lie anywhere in the band, and a ray leaving the surface must start outside it (pieces
-// nearer would be a hit at t ~ 0: acne). The natural enclosures of high-degree surfaces (Barth's
-// sextic) overestimate f's range over a piece several times, which makes the band wider than
-// their rounding alone. `gradient` is |grad f| at p in world space; where it vanishes (a singular
+// nearer would be a hit at t ~ 0: acne). The enclosure holds the rounding of evaluating f (the
+// interval library's outward margins), so the band also covers where float's f cannot tell the
+// sign, which moves Newton's roots too (without it, torus hits lay up to 7 times their other
+// bounds off the surface); and the natural enclosures of high-degree surfaces (Barth's sextic)
+// overestimate f's range over a piece several times, which makes it wider than that rounding. `gradient` is |grad f| at p in world space; where it vanishes (a singular
 // point) the fixed rule of the CPU reference stands in.
 float implicit_band(Primitive prim, vec3 local, float gradient, vec3 p) {
     float h = IMPLICIT_EPS * length(prim.p1.xyz - prim.p0.xyz);
