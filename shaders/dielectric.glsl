@@ -80,11 +80,6 @@ vec3 refraction(vec3 d, vec3 n, float eta, float cos_i, float cos_t) {
     return normalize(eta * d + (eta * cos_i - cos_t) * n);
 }
 
-// Where a ray going on through a surface at p starts: on its own line through p, ray_offset(p)
-// past the surface's tangent plane as other secondary rays (but at most 100 ray_offset along
-// the ray, for grazing rays). Being on the line keeps the path through a medium its true length.
-vec3 past_surface(vec3 p, vec3 n, vec3 d) { return p + (ray_offset(p) / max(abs(dot(d, n)), 0.01)) * d; }
-
 const uint MAX_SHADOW_CROSSINGS = 16u;
 
 // The fraction of a light's colour that reaches the surface point `from` from the light point q,
@@ -122,7 +117,9 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media) {
         if (max3(through) < MIN_WEIGHT) break;
         media = beyond;
         from = p;
-        origin = past_surface(p, primitive_normal(best.prim, p, best.uv), ray.dir);
+        float error = hit_error(best.prim, ray, best.t, best.uv, best.error);
+        vec3 n = primitive_normal(best.prim, p, best.uv, error);
+        origin = past_surface(p, n, ray.dir, error);
     }
     return vec3(0.0);
 }

@@ -113,7 +113,7 @@ void main() {
         from = p;
         if (clear && !sheet && innermost(beyond) == innermost(media)) {
             media = beyond;  // a surface that does not show
-            ray = Ray(past_surface(p, n, ray.dir), ray.dir);
+            ray = Ray(past_surface(p, n, ray.dir, hit.error), ray.dir);
             if (++passes > MAX_PASS_THROUGH_PHOTON) return;
             continue;
         }
@@ -195,9 +195,9 @@ void main() {
         ++bounces;
         if (refracts) {
             media = beyond;
-            ray.origin = past_surface(p, n, ray.dir);
+            ray.origin = past_surface(p, n, ray.dir, hit.error);
         } else {
-            ray.origin = p + ray_offset(p) * n;
+            ray.origin = offset_origin(p, n, hit.error);
         }
     }
 }

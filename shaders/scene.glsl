@@ -13,31 +13,55 @@
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/surface_codegen.cpp)
 #include "shapes/parametric.glsl"
+#include "shapes/parametric_error.glsl"
 #include "shapes/implicit.glsl"
 
-// uv: the surface's own parameters at the hit, for shapes that have them. Only families the
+// uv: the surface's own parameters at the hit, for shapes that have them; error: the error bound
+// of a Bezier or implicit hit, which only their search knows (hit_error completes the others').
+// Only families the
 // scene has are compiled in (lavapipe runs every case of a switch, the type being known only at
 // run time); planes_only, for the unbounded primitives of a scene with a BVH, leaves planes alone.
-bool primitive_intersect(Primitive p, Ray ray, float t_min, float t_max, bool planes_only, out float t_hit, out vec2 uv) {
+bool primitive_intersect(Primitive p, Ray ray, float t_min, float t_max, bool planes_only, out float t_hit, out vec2 uv,
+                         out float error) {
     uv = vec2(0.0);
+    error = 0.0;
     if (planes_only) return SCENE_HAS_PLANE && plane_intersect(p, ray, t_min, t_max, t_hit);
     switch (p.type) {
         case SHAPE_SPHERE: return SCENE_HAS_SPHERE && sphere_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_PLANE: return SCENE_HAS_PLANE && plane_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_RECTANGLE: return SCENE_HAS_RECTANGLE && rectangle_intersect(p, ray, t_min, t_max, t_hit, uv);
         case SHAPE_BOX: return SCENE_HAS_BOX && box_intersect(p, ray, t_min, t_max, t_hit);
-        case SHAPE_BEZIER: return SCENE_HAS_BEZIER && bezier_intersect(p, ray, t_min, t_max, t_hit, uv);
+        case SHAPE_BEZIER: return SCENE_HAS_BEZIER && bezier_intersect(p, ray, t_min, t_max, t_hit, uv, error);
 #if LANCER_PARAMETRIC_SURFACES
         case SHAPE_PARAMETRIC: return parametric_intersect(p, ray, t_min, t_max, t_hit, uv);
 #endif
 #if LANCER_IMPLICIT_SURFACES
-        case SHAPE_IMPLICIT: return implicit_intersect(p, ray, t_min, t_max, t_hit, uv);
+        case SHAPE_IMPLICIT: return implicit_intersect(p, ray, t_min, t_max, t_hit, uv, error);
 #endif
     }
     return false;
 }
 
-vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
+// A hit's error bound (Hit.error), before primitive_normal completes an implicit one: the analytic
+// and parametric shapes' from the hit (here once per ray, not for every candidate hit of the
+// search), Bezier and implicit surfaces' as their search found it (`found`).
+float hit_error(uint index, Ray ray, float t, vec2 uv, float found) {
+    Primitive prim = primitive_at(index);
+    switch (prim.type) {
+        case SHAPE_SPHERE: if (SCENE_HAS_SPHERE) return sphere_hit_error(prim, ray, t); break;
+        case SHAPE_PLANE: if (SCENE_HAS_PLANE) return plane_hit_error(prim, ray, t); break;
+        case SHAPE_RECTANGLE: if (SCENE_HAS_RECTANGLE) return rectangle_hit_error(prim, ray, t); break;
+        case SHAPE_BOX: if (SCENE_HAS_BOX) return box_hit_error(prim, ray, t); break;
+#if LANCER_PARAMETRIC_SURFACES
+        case SHAPE_PARAMETRIC: return parametric_hit_error(prim, ray, t, uv);
+#endif
+    }
+    return found;
+}
+
+// The unit normal at a hit, and its error bound (Hit.error) completed from the intersector's:
+// implicit surfaces add the band their enclosures cannot resolve, from the gradient at p.
+vec3 primitive_normal(uint index, vec3 p, vec2 uv, inout float error) {
     Primitive prim = primitive_at(index);
     switch (prim.type) {
         case SHAPE_SPHERE: if (SCENE_HAS_SPHERE) return sphere_normal(prim, p); break;
@@ -49,7 +73,7 @@ vec3 primitive_normal(uint index, vec3 p, vec2 uv) {
         case SHAPE_PARAMETRIC: return parametric_normal(prim, uv);
 #endif
 #if LANCER_IMPLICIT_SURFACES
-        case SHAPE_IMPLICIT: return implicit_normal(prim, p);
+        case SHAPE_IMPLICIT: return implicit_normal(prim, p, error);
 #endif
     }
     return vec3(0.0, 0.0, 1.0);
@@ -71,6 +95,7 @@ struct Nearest {
     float t;  // nearest hit so far, or t_max
     uint prim;
     vec2 uv;
+    float error;  // a Bezier or implicit hit's error bound, as its search found it (hit_error)
 };
 
 // How far a test must look: up to t_max, or a little past the best hit to see its ties.
@@ -79,14 +104,15 @@ float reach(Nearest best) { return best.prim == NO_PRIMITIVE ? best.t : best.t *
 // Tests primitive i, which is p, and keeps it if it is nearer (or an equally near,
 // smaller-keyed twin).
 bool consider_primitive(uint i, Primitive p, Ray ray, float t_min, bool planes_only, inout Nearest best) {
-    float t;
+    float t, error;
     vec2 uv;
-    if (!primitive_intersect(p, ray, t_min, reach(best), planes_only, t, uv)) return false;
+    if (!primitive_intersect(p, ray, t_min, reach(best), planes_only, t, uv, error)) return false;
     if (best.prim != NO_PRIMITIVE && t >= best.t * (1.0 - TIE)) {
         uvec2 a = stable_key(p), b = stable_key(primitive_at(best.prim));
         if (!(a.x < b.x || (a.x == b.x && a.y < b.y))) return false;
     }
-    best = Nearest(min(t, best.t), i, uv);
+    // An equally near twin keeps the nearer t: where that is the other's, so is its error bound.
+    best = Nearest(min(t, best.t), i, uv, t < best.t ? error : max(error, best.error));
     return true;
 }
 
@@ -96,7 +122,7 @@ bool consider(uint i, Ray ray, float t_min, bool planes_only, inout Nearest best
 
 // Nearest hit in (t_min, t_max) over all primitives; with any_hit, the first hit found.
 bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out Nearest best) {
-    best = Nearest(t_max, NO_PRIMITIVE, vec2(0.0));
+    best = Nearest(t_max, NO_PRIMITIVE, vec2(0.0), 0.0);
     uint bounded = frame.primitive_count - frame.unbounded_count;
     for (uint i = bounded; i < frame.primitive_count; ++i) {
         // With a BVH, everything bounded is in it: the rest are planes.
@@ -168,7 +194,8 @@ bool closest_hit(Ray ray, float t_min, out Hit hit) {
     hit.t = best.t;
     hit.primitive = best.prim;
     hit.uv = best.uv;
-    hit.normal = primitive_normal(best.prim, ray.origin + best.t * ray.dir, best.uv);
+    hit.error = hit_error(best.prim, ray, best.t, best.uv, best.error);
+    hit.normal = primitive_normal(best.prim, ray.origin + best.t * ray.dir, best.uv, hit.error);
     return true;
 }
 

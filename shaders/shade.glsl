@@ -61,17 +61,18 @@ void add_light(inout vec3 color, Material m, vec3 pigment, vec3 p, vec3 n, vec3 
 }
 
 // pigment: the surface's colour there (appearance.glsl); for a microfacet material, (n1, n2). n: the geometric normal, facing the
-// viewer; shading_n: the normal that lights the surface. view_dir is the incoming ray direction;
+// viewer; error: the hit's error bound (Hit.error), which sets how far off the surface shadow rays
+// start; shading_n: the normal that lights the surface. view_dir is the incoming ray direction;
 // `media` holds the transparent materials the incoming ray is inside; `seed` places area light
 // samples (lights.glsl); `scale` is what the result will be multiplied by on its way to the pixel.
-vec3 shade_local(Material m, vec3 pigment, vec3 p, vec3 n, vec3 shading_n, vec3 view_dir, Media media, uint seed,
+vec3 shade_local(Material m, vec3 pigment, vec3 p, vec3 n, float error, vec3 shading_n, vec3 view_dir, Media media, uint seed,
                  vec3 scale, inout float rays) {
     bool micro = SCENE_HAS_MICROFACET && m.model != MODEL_PHONG;
     if (micro && material_alpha(m) == 0.0) return vec3(0.0);  // a perfect mirror shows no point of light
     if (SCENE_HAS_TRANSPARENCY && !micro) pigment *= vec3(1.0) - m.transmission.rgb;  // the part that is not transmitted
     vec3 color = micro ? vec3(0.0) : m.phong.x * pigment * frame.ambient.rgb;
     vec3 mirrored = reflect(view_dir, shading_n);
-    vec3 origin = p + ray_offset(p) * n;  // shadow rays start here; shading uses p itself
+    vec3 origin = offset_origin(p, n, error);  // shadow rays start here; shading uses p itself
     // One loop over every sample of every light (a point or spot light is one sample at its
     // position), with one call site: each inlines the shadow ray's whole intersection code. Not a
     // loop over samples inside the loop over lights: lavapipe keeps even a one-trip inner loop

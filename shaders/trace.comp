@@ -71,7 +71,7 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
             Media beyond = clear && !sheet ? cross_surface(media, mat) : media;  // the media past the surface
             if (clear && !sheet && innermost(beyond) == innermost(media)) {
                 media = beyond;  // the surface does not show: go on through it
-                ray = Ray(past_surface(p, n, ray.dir), ray.dir);
+                ray = Ray(past_surface(p, n, ray.dir, hit.error), ray.dir);
                 from = p;
                 goes_on = ++passes <= MAX_PASS_THROUGH;
             } else {
@@ -84,7 +84,7 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
                     float n1 = medium_ior(innermost(media));
                     float n2 = sheet ? m.transmission.w : medium_ior(innermost(beyond));
                     uint seed_d = hash_u32(seed + depth);
-                    color += weight * shade_local(m, vec3(n1, n2, 0.0), p, n, n, ray.dir, media, seed_d, weight, rays);
+                    color += weight * shade_local(m, vec3(n1, n2, 0.0), p, n, hit.error, n, ray.dir, media, seed_d, weight, rays);
                     vec3 u = surface_sample_numbers(seed_d);
                     if (is_metal(m)) {
                         Scattered s = sample_metal(m, n, -ray.dir, u);
@@ -101,7 +101,7 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
                 } else {
                     Appearance look = appearance_at(m, hit, p, n);
                     vec3 scale = weight * (1.0 - m.reflection);
-                    color += scale * shade_local(m, look.pigment, p, n, look.normal, ray.dir, media, hash_u32(seed + depth), scale, rays);
+                    color += scale * shade_local(m, look.pigment, p, n, hit.error, look.normal, ray.dir, media, hash_u32(seed + depth), scale, rays);
                     // Photon mapping: caustics and indirect light, the diffuse BRDF k_d C' / pi
                     // times the irradiance the photons estimate.
                     if (SCENE_HAS_PHOTONS && m.phong.y > 0.0)
@@ -125,9 +125,9 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
                 // Past max_depth the children contribute black (POV-Ray's max_trace_level rule).
                 bool reflects = depth < frame.max_depth && max3(reflected_weight) >= MIN_WEIGHT;
                 bool refracts = depth < frame.max_depth && max3(refracted_weight) >= MIN_WEIGHT;
-                Branch reflected = Branch(Ray(p + ray_offset(p) * n, reflected_dir), p, reflected_weight, depth + 1u, media);
+                Branch reflected = Branch(Ray(offset_origin(p, n, hit.error), reflected_dir), p, reflected_weight, depth + 1u, media);
                 if (refracts) {
-                    Branch refracted = Branch(Ray(past_surface(p, n, refracted_dir), refracted_dir), p, refracted_weight, depth + 1u, beyond);
+                    Branch refracted = Branch(Ray(past_surface(p, n, refracted_dir, hit.error), refracted_dir), p, refracted_weight, depth + 1u, beyond);
                     Branch next = refracted;
                     if (reflects) {
                         bool reflected_first = max3(reflected_weight) > max3(refracted_weight);

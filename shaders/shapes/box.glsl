@@ -14,6 +14,13 @@ bool box_intersect(Primitive b, Ray ray, float t_min, float t_max, out float t_h
     return false;
 }
 
+// The hit's error (Hit.error): on the face of axis i, o_i + t d_i misses the face by the rounding
+// of (b_i - o_i) / d_i (3 roundings, relative: the cosine d_i cancels) and of the hit point: 16
+// roundings of |o| + |b| + t.
+float box_hit_error(Primitive b, Ray ray, float t) {
+    return rounding_bound(16.0, max_abs(ray.origin) + max(max_abs(b.p0.xyz), max_abs(b.p1.xyz)) + t);
+}
+
 // The face whose plane the point is closest to, relative to the box size.
 vec3 box_normal(Primitive b, vec3 p) {
     vec3 c = 0.5 * (b.p0.xyz + b.p1.xyz);

@@ -37,8 +37,10 @@ void implicit_local_ray(ImplicitInfo info, Ray ray, out vec3 o, out vec3 d) {
 // Newton's method from the regula falsi point, each step kept 1% of the bracket inside it (a
 // root at an end of the bracket, where rounding puts Newton's step just outside, then still
 // shrinks the bracket a hundredfold per step), the bracket shrinking around the root at every
-// step.
-float implicit_refine(uint surface, vec3 o, vec3 d, float a, float b, float fa, float fb) {
+// step. `spread` is how far the root may be from the result: the last Newton step (quadratic
+// convergence leaves far less), else the bracket.
+float implicit_refine(uint surface, vec3 o, vec3 d, float a, float b, float fa, float fb, out float spread) {
+    spread = 0.0;
     if (fa == 0.0) return a;
     if (fb == 0.0) return b;
     const float tolerance = 1e-7 * (b - a);
@@ -46,7 +48,8 @@ float implicit_refine(uint surface, vec3 o, vec3 d, float a, float b, float fa, 
     for (int k = 0; k < IMPLICIT_NEWTON_STEPS; ++k) {
         float df;
         float fx = implicit_eval(surface, o + x * d, d, df);
-        if (fx == 0.0 || isnan(fx)) return x;
+        if (fx == 0.0) return x;
+        if (isnan(fx)) break;
         if ((fx < 0.0) == (fa < 0.0)) {
             a = x;
             fa = fx;
@@ -54,10 +57,14 @@ float implicit_refine(uint surface, vec3 o, vec3 d, float a, float b, float fa, 
             b = x;
         }
         float step = fx / df;
-        if (abs(step) <= tolerance || b - a <= tolerance) return clamp(x - step, a, b);
+        if (abs(step) <= tolerance || b - a <= tolerance) {
+            spread = min(abs(step), b - a);
+            return clamp(x - step, a, b);
+        }
         float margin = 0.01 * (b - a);
         x = isnan(step) ? 0.5 * (a + b) : clamp(x - step, a + margin, b - margin);
     }
+    spread = b - a;
     return x;
 }
 
@@ -71,7 +78,10 @@ vec2 implicit_pair(uint surface, vec3 o, vec3 d, vec2 s) {
     return values;
 }
 
-bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit) {
+// The hit's error here: where the root may be along the ray (Newton's last step or bracket, or
+// half a point piece) and the hit point's rounding. The band around the surface that the
+// enclosures cannot resolve is added once the hit is known (implicit_band).
+bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit, out float error) {
     uint surface = prim.data;
     vec3 o, d;
     implicit_local_ray(implicit_at(surface), ray, o, d);
@@ -117,9 +127,10 @@ bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out f
             bool defined = !isnan(v.x) && !isnan(v.y);
             bool hit = false;
             float s = m;
+            float spread = 0.5 * (piece.y - piece.x);
             if (monotone && defined) {
                 if (v.x == 0.0 || v.y == 0.0 || (v.x < 0.0) != (v.y < 0.0)) {
-                    s = implicit_refine(surface, base, d, piece.x, piece.y, v.x, v.y);
+                    s = implicit_refine(surface, base, d, piece.x, piece.y, v.x, v.y, spread);
                     hit = true;
                 }
             } else if (point) {
@@ -131,6 +142,7 @@ bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out f
                 t_hit = t0 + s;
                 vec3 p = base + s * d;
                 uv_hit = (p.xy - lo.xy) / (hi.xy - lo.xy);
+                error = spread + hit_point_rounding(ray.origin, t_hit);
                 return true;
             }
         }
@@ -145,15 +157,37 @@ bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out f
     return false;
 }
 
+// The half-width of the band around the surface at world point p in which f's enclosures cannot
+// tell on which side of it a point is, in world units: f's enclosure over the cube of the
+// intersector's resolution around p (sides of IMPLICIT_EPS of the box's diagonal: a piece of a
+// ray halved down to that length spans no more along any axis), over |grad f|. A ray's
+// piece that starts further than this from the surface has an enclosure that excludes 0; a hit
+// may lie anywhere in the band, and a ray leaving the surface must start outside it (pieces
+// nearer would be a hit at t ~ 0: acne). The enclosure holds the rounding of evaluating f (the
+// interval library's outward margins), so the band also covers where float's f cannot tell the
+// sign, which moves Newton's roots too (without it, torus hits lay up to 7 times their other
+// bounds off the surface); and the natural enclosures of high-degree surfaces (Barth's sextic)
+// overestimate f's range over a piece several times, which makes it wider than that rounding. `gradient` is |grad f| at p in world space; where it vanishes (a singular
+// point) the fixed rule of the CPU reference stands in.
+float implicit_band(Primitive prim, vec3 local, float gradient, vec3 p) {
+    float h = IMPLICIT_EPS * length(prim.p1.xyz - prim.p0.xyz);
+    vec2 f, df;
+    implicit_interval(prim.data, local, vec3(1.0), vec2(-0.5 * h, 0.5 * h), f, df);  // x, y and z each within h / 2 of p's
+    float band = 0.5 * (f.y - f.x) / gradient;
+    return isinf(band) || isnan(band) ? 1e-4 * max(1.0, max_abs(p)) : band;
+}
+
 // The unit normal at world point p: the gradient, carried to world space by the transpose of
 // the world -> local map. Where it vanishes (a singular point) the gradient a little away
-// along the box's diagonal is taken, as on the CPU reference.
-vec3 implicit_normal(Primitive prim, vec3 p) {
+// along the box's diagonal is taken, as on the CPU reference. Adds the band (implicit_band) to
+// the hit's error bound.
+vec3 implicit_normal(Primitive prim, vec3 p, inout float error) {
     ImplicitInfo info = implicit_at(prim.data);
     mat3 rows = mat3(info.row0.xyz, info.row1.xyz, info.row2.xyz);
     vec3 local = p * rows + vec3(info.row0.w, info.row1.w, info.row2.w);
     vec3 step = (prim.p1.xyz - prim.p0.xyz) * 0.57735027;
     vec3 g = implicit_gradient(prim.data, local);
+    error += implicit_band(prim, local, length(rows * g), p);
     if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-5 * step);
     if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-3 * step);
     if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-2 * step);

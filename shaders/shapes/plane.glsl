@@ -10,6 +10,15 @@ bool plane_intersect(Primitive pl, Ray ray, float t_min, float t_max, out float 
     return true;
 }
 
+// The hit's error (Hit.error): t = (p0 - o).n / d.n, so o + t d misses the plane by the rounding
+// of the numerator (4 roundings of |p0 - o|) plus t times that of the denominator (3): the cosine
+// between ray and plane cancels. With the normal's own rounding (a tilt of an ulp, moving the
+// plane by that much of the hit's distance from p0) and the hit point's: 16 roundings of
+// |o| + |p0| + t.
+float plane_hit_error(Primitive pl, Ray ray, float t) {
+    return rounding_bound(16.0, max_abs(ray.origin) + max_abs(pl.p0.xyz) + t);
+}
+
 vec3 plane_normal(Primitive pl) {
     return pl.p1.xyz;
 }

@@ -20,6 +20,12 @@ bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out flo
     return true;
 }
 
+// The hit's error (Hit.error) is the plane's (plane.glsl), with the corner as the plane's point
+// and the normal cross(edge_u, edge_v), whose rounding tilts it by a few ulps over the edges.
+float rectangle_hit_error(Primitive r, Ray ray, float t) {
+    return rounding_bound(16.0, max_abs(ray.origin) + max_abs(r.p0.xyz) + max_abs(r.p1.xyz) + max_abs(r.p2.xyz) + t);
+}
+
 vec3 rectangle_normal(Primitive r) {
     return normalize(cross(r.p1.xyz, r.p2.xyz));
 }

@@ -19,6 +19,15 @@ bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float 
     return false;
 }
 
+// The hit's error (Hit.error): f = o - c and perp carry rounding errors of a few |f| ulps; near
+// a tangent their effect on t grows as 1 / cos, the cosine between the ray and the normal, but
+// the hit point's distance from the sphere is that t error times cos again, so it stays a few
+// roundings of |f| <= |o| + |c|. With the centre's and radius's own rounding and the hit
+// point's (hit_point_rounding): 32 roundings of |o| + |c| + r + t.
+float sphere_hit_error(Primitive s, Ray ray, float t) {
+    return rounding_bound(32.0, max_abs(ray.origin) + max_abs(s.p0.xyz) + s.p0.w + t);
+}
+
 vec3 sphere_normal(Primitive s, vec3 p) {
     return (p - s.p0.xyz) / s.p0.w;
 }

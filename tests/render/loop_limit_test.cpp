@@ -52,7 +52,7 @@ TEST(LoopLimit, CutShortBandsAreRenderedAgainAndMatchTheReference) {
 
 TEST(LoopLimit, TooMuchWorkForOneSampleIsAClearError) {
     if (!is_lavapipe()) GTEST_SKIP() << "only lavapipe limits loop iterations";
-    Scene scene = test::scene_from_text(heavy_scene(120, 200));
+    Scene scene = test::scene_from_text(heavy_scene(200, 250));
     GpuRenderer brute(gpu::ContextOptions{"", true}, Acceleration::BruteForce);
     try {
         brute.render(scene, {});
