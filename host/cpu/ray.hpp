@@ -13,12 +13,15 @@ struct Ray {
 };
 
 // Secondary rays start this far off the surface; scaled by the hit's distance from `origin` (the
-// scene's working origin, scene/camera.hpp) so that rounding of the hit point never puts the new
-// origin behind the surface. The GPU uses the same rule in its coordinates, which start at that
-// origin (shaders/common.glsl): a scene moved far away, camera with it, keeps its offsets.
+// scene's working origin, scene/camera.hpp), so that a scene moved far away, camera with it, keeps
+// its offsets. 1e-7 of that is far above the error of every hit the reference computes (its
+// certified roots are accurate to about 1e-10 of the surface's size, its analytic ones to
+// double's rounding), and below the GPU's offsets (its hits' float error bounds,
+// shaders/common.glsl): the two backends then shadow the same points, edges included, and a
+// sheet thinner than the old 1e-4 is not stepped over.
 inline double ray_offset(const dvec3& p, const dvec3& origin) {
     const dvec3 d = p - origin;
-    return 1e-4 * std::max({1.0, std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    return 1e-7 * std::max({1.0, std::abs(d.x), std::abs(d.y), std::abs(d.z)});
 }
 
 // The largest channel of a colour or weight.

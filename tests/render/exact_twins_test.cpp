@@ -145,5 +145,6 @@ TEST_P(TorusTwins, MatchTheCertifiedTorus) {
 INSTANTIATE_TEST_SUITE_P(Views, TorusTwins, testing::ValuesIn(kTorusViews),
                          [](const testing::TestParamInfo<View>& info) { return std::string(info.param.name); });
 
+
 }  // namespace
 }  // namespace lancer

@@ -176,9 +176,12 @@ std::vector<surface::BezierPatch> moved(std::vector<surface::BezierPatch> patche
 struct Case {
     std::string name;
     Scene (*make)();
-    // The parametric intersector (shaders/shapes/parametric.glsl) is being rewritten: until it
-    // lands, its roots (checks nearest, spurious, missed) are reported here, not asserted; its
-    // error bounds and offsets are asserted like every family's.
+    // For parametric surfaces the roots (checks nearest, spurious, missed) are reported, not
+    // asserted; their error bounds and offsets are asserted like every family's. Of about 3,000
+    // rays per surface the GPU's search still misses 1-6: rays restarted from a hit at a grazing
+    // angle that meet the surface again within about 0.01 (J nearly singular there, in a box it
+    // cannot prove), and on Dini's surface 2 rays from 2,000 units away whose nearer of two
+    // close sheets it misses. (docs/scene-format.md, "Parametric surfaces", says what is resolved.)
     bool roots_reported_only = false;
 };
 

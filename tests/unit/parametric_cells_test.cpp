@@ -128,6 +128,55 @@ TEST(ParametricCells, MeanValueFormMakesBoxesTighterThanTheNaturalExtension) {
     }
 }
 
+// The bounds the GPU's search relies on (shapes/parametric.glsl): at points of each cell widened
+// as the search widens it, S's partials lie within the cell's first-partial bounds, and their
+// change over small steps (finite differences of the exact partials) within the second-partial
+// bounds; S at the cell's centre is the one stored.
+TEST(ParametricCells, PartialsLieWithinTheCellsBounds) {
+    auto within = [](const Interval& b, double x, double slack) { return x >= b.lo - slack && x <= b.hi + slack; };
+    for (const auto& spec : test::classic_surfaces()) {
+        SCOPED_TRACE(spec.name);
+        ParametricSurface s = test::make_surface(spec);
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        int checked = 0;
+        for (const SurfaceCell& c : subdivide_surface(s)) {
+            const double wu = kCellSearchInflation * (c.u1 - c.u0), wv = kCellSearchInflation * (c.v1 - c.v0);
+            const double u0 = std::max(s.u0, c.u0 - wu), u1 = std::min(s.u1, c.u1 + wu);
+            const double v0 = std::max(s.v0, c.v0 - wv), v1 = std::min(s.v1, c.v1 + wv);
+            const SurfacePoint centre = evaluate_surface(s, 0.5 * (c.u0 + c.u1), 0.5 * (c.v0 + c.v1));
+            for (int k = 0; k < 3; ++k)
+                if (std::isfinite(centre.P[k])) EXPECT_NEAR(c.centre_point[k], centre.P[k], 1e-12 * (1.0 + std::abs(centre.P[k])));
+            for (int n = 0; n < 4; ++n) {
+                const double u = u0 + (u1 - u0) * unit(rng), v = v0 + (v1 - v0) * unit(rng);
+                const SurfacePoint p = evaluate_surface(s, u, v);
+                const double h = 1e-6 * std::max(u1 - u0, v1 - v0);
+                const SurfacePoint pu = evaluate_surface(s, std::min(u + h, u1), v);
+                const SurfacePoint pv = evaluate_surface(s, u, std::min(v + h, v1));
+                const double hu = std::min(u + h, u1) - u, hv = std::min(v + h, v1) - v;
+                for (int k = 0; k < 3; ++k) {
+                    if (!std::isfinite(p.Pu[k]) || !std::isfinite(p.Pv[k])) continue;
+                    const double scale = 1e-9 * (1.0 + std::abs(p.Pu[k]) + std::abs(p.Pv[k]));
+                    EXPECT_TRUE(within(c.Su[k], p.Pu[k], scale)) << "S_u at (" << u << ", " << v << ")";
+                    EXPECT_TRUE(within(c.Sv[k], p.Pv[k], scale)) << "S_v at (" << u << ", " << v << ")";
+                    // Finite differences carry an error of the order of the step times the third
+                    // partials: a relative slack of 1e-4.
+                    const double fd = 1e-4 * (1.0 + std::abs(c.second.Suu[k].lo) + std::abs(c.second.Suu[k].hi) +
+                                             std::abs(c.second.Suv[k].lo) + std::abs(c.second.Suv[k].hi) +
+                                             std::abs(c.second.Svv[k].lo) + std::abs(c.second.Svv[k].hi));
+                    if (hu > 0.0) {
+                        EXPECT_TRUE(within(c.second.Suu[k], (pu.Pu[k] - p.Pu[k]) / hu, fd)) << "S_uu at (" << u << ", " << v << ")";
+                        EXPECT_TRUE(within(c.second.Suv[k], (pu.Pv[k] - p.Pv[k]) / hu, fd)) << "S_uv at (" << u << ", " << v << ")";
+                    }
+                    if (hv > 0.0) EXPECT_TRUE(within(c.second.Svv[k], (pv.Pv[k] - p.Pv[k]) / hv, fd)) << "S_vv at (" << u << ", " << v << ")";
+                    ++checked;
+                }
+            }
+        }
+        EXPECT_GT(checked, 100);
+    }
+}
+
 TEST(ParametricCells, UndefinedPartsAreLeftOut) {
     ParametricSurface s;
     s.x = parse_expression("u", {});
