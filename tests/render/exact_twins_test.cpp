@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "support/rational_patches.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
@@ -101,6 +102,21 @@ const char* kParametricTorus = R"toml(
         v = [0, "2*pi"]
 )toml";
 
+// The sphere of radius r as 8 rational bicubic patches: two quarter arcs of its profile, each
+// swept through four quarter turns.
+std::vector<surface::BezierPatch> sphere_patches(double r) {
+    std::vector<surface::BezierPatch> out;
+    for (int k : {3, 0})
+        for (int q = 0; q < 4; ++q) out.push_back(test::revolve(test::quarter_circle({0, 0}, r, k), q, glm::dvec3(0.0)));
+    return out;
+}
+
+Scene with_patches(const std::string& parametric_text, std::vector<surface::BezierPatch> patches) {
+    Scene s = test::scene_from_text(parametric_text);
+    s.objects[1].shape = BezierSurface{std::move(patches), 1, ""};
+    return s;
+}
+
 // Far from the origin, camera and light with them, a twin must match its reference there as it
 // does at the origin: the GPU works relative to the camera. (The picture itself may differ from
 // the one at the origin by a pixel where a shadow ray grazes an edge: secondary rays start a
@@ -110,17 +126,20 @@ const glm::dvec3 kFar(1e6, -1e6, 2e6);
 
 class SphereTwins : public testing::TestWithParam<View> {};
 
-// The parametric sphere against the analytic sphere, both on the GPU.
+// The parametric sphere and the rational-patch sphere against the analytic sphere, all on the GPU.
 TEST_P(SphereTwins, MatchTheAnalyticSphere) {
     const View v = GetParam();
     const Scene analytic = test::scene_from_text(stage(v, "type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1.2\n"));
     const Scene parametric = test::scene_from_text(stage(v, kParametricSphere));
+    const Scene patches = with_patches(stage(v, kParametricSphere), sphere_patches(1.2));
     for (const bool far : {false, true}) {
         auto place = [&](const Scene& s) { return far ? test::moved_scene(s, kFar) : s; };
         const std::string where = far ? "-far" : "";
         const FloatImage reference = test::render_on(test::Backend::Gpu, place(analytic));
         expect_twin(fmt::format("sphere-{}-parametric{}", v.name, where), reference,
                     test::render_on(test::Backend::Gpu, place(parametric)));
+        expect_twin(fmt::format("sphere-{}-patches{}", v.name, where), reference,
+                    test::render_on(test::Backend::Gpu, place(patches)));
     }
 }
 
@@ -129,16 +148,20 @@ INSTANTIATE_TEST_SUITE_P(Views, SphereTwins, testing::ValuesIn(kSphereViews),
 
 class TorusTwins : public testing::TestWithParam<View> {};
 
-// The parametric torus on the GPU against the CPU reference's torus, whose roots are certified in double precision (cpu/shapes/parametric.cpp).
+// The parametric torus and the rational-patch torus on the GPU against the CPU reference's
+// torus, whose roots are certified in double precision (cpu/shapes/parametric.cpp).
 TEST_P(TorusTwins, MatchTheCertifiedTorus) {
     const View v = GetParam();
     const Scene parametric = test::scene_from_text(stage(v, kParametricTorus));
+    const Scene patches = with_patches(stage(v, kParametricTorus), test::torus_patches(1.0, 0.35));
     for (const bool far : {false, true}) {
         auto place = [&](const Scene& s) { return far ? test::moved_scene(s, kFar) : s; };
         const std::string where = far ? "-far" : "";
         const FloatImage reference = test::render_on(test::Backend::Cpu, place(parametric));
         expect_twin(fmt::format("torus-{}-parametric{}", v.name, where), reference,
                     test::render_on(test::Backend::Gpu, place(parametric)));
+        expect_twin(fmt::format("torus-{}-patches{}", v.name, where), reference,
+                    test::render_on(test::Backend::Gpu, place(patches)));
     }
 }
 
