@@ -169,5 +169,61 @@ INSTANTIATE_TEST_SUITE_P(Views, TorusTwins, testing::ValuesIn(kTorusViews),
                          [](const testing::TestParamInfo<View>& info) { return std::string(info.param.name); });
 
 
+// A flat Bezier patch with evenly spaced control points is the square it spans: against the
+// rectangle from views that graze its plane. The eye is 1 above a square 20,000 across and looks
+// at the point of it where the central ray meets the plane at the elevation angle (rows below
+// meet it more steeply, rows above only far away, up to the square's far edge). The material is
+// plain: the picture compares where each shape is hit, and how it is lit. (A checkerboard would
+// compare float's rounding instead: the patch's hit point is computed from points thousands of
+// units apart, so a hit 60 units away at 1 degree can lie 0.05 off the rectangle's, and a row of
+// pixels whose hits lie that close to a line of the checker then flips colour.)
+class FlatPatchTwin : public testing::TestWithParam<double> {};
+
+TEST_P(FlatPatchTwin, IsTheRectangleFromAGrazingView) {
+    const double elevation = GetParam() * test::kDegree;
+    const std::string common = fmt::format(R"toml(
+        [render]
+        width = {}
+        height = {}
+        samples = 1
+        background = [0.4, 0.5, 0.7]
+        [camera]
+        eye = [0, 1, 0]
+        look_at = [30, 0, {}]
+        fov = 30
+        [[light]]
+        position = [-3000, 6000, 3000]
+        [material.board]
+        color = [0.9, 0.85, 0.7]
+        specular = 0.5
+        [[object]]
+        material = "board"
+    )toml",
+                                           kWidth, kHeight, 1.0 / std::tan(elevation));
+    std::string points;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            points += (points.empty() ? "" : ", ") + fmt::format("[{}, 0, {}]", -10000.0 + 20000.0 * i / 3.0, 20000.0 * j / 3.0);
+    const Scene patch = test::scene_from_text(common + "type = \"bezier\"\ncontrol_points = [" + points + "]\n");
+    const Scene rect = test::scene_from_text(
+        common + "type = \"rectangle\"\ncorner = [-10000, 0, 0]\nedge_u = [20000, 0, 0]\nedge_v = [0, 0, 20000]\n");
+    for (const bool far : {false, true}) {
+        auto place = [&](const Scene& s) { return far ? test::moved_scene(s, kFar) : s; };
+        const FloatImage reference = test::render_on(test::Backend::Gpu, place(rect));
+        int covered = 0;
+        for (const glm::vec4& p : reference.pixels) covered += glm::abs(p.x - 0.4f) > 0.01f;
+        EXPECT_GT(covered, kWidth * kHeight / 4) << "the square must fill part of the view";
+        expect_twin(fmt::format("flat-patch-{}deg{}", GetParam(), far ? "-far" : ""), reference,
+                    test::render_on(test::Backend::Gpu, place(patch)));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Elevations, FlatPatchTwin, testing::Values(1.0, 0.1, 0.01, 0.004),
+                         [](const testing::TestParamInfo<double>& info) {
+                             std::string name = fmt::format("{}deg", info.param);
+                             for (char& c : name) c = c == '.' ? '_' : c;
+                             return name;
+                         });
+
 }  // namespace
 }  // namespace lancer
