@@ -7,6 +7,7 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -89,7 +90,21 @@ void CpuRenderer::run_parallel(std::size_t count, std::size_t chunk, const std::
         }
     };
     std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads_; ++t) pool.emplace_back(worker);
+    // Joined however this scope ends: a joinable thread destroyed would terminate the process.
+    struct JoinAll {
+        std::vector<std::thread>& threads;
+        ~JoinAll() {
+            for (auto& t : threads)
+                if (t.joinable()) t.join();
+        }
+    } join_all{pool};
+    for (unsigned t = 1; t < threads_; ++t) {
+        try {
+            pool.emplace_back(worker);
+        } catch (const std::system_error&) {
+            break;  // no room for another thread's stack (an address-space limit): fewer do the work
+        }
+    }
     worker();
     for (auto& t : pool) t.join();
     if (cancelled) throw RenderCancelled();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <system_error>
 #include <thread>
 
 #include <glm/geometric.hpp>
@@ -237,8 +238,15 @@ PhotonPass shoot_photons(const Tracer& tracer, int pass, unsigned threads, bool 
         shooter.shoot(pass, std::uint32_t(std::uint64_t(count) * t / threads),
                       std::uint32_t(std::uint64_t(count) * (t + 1) / threads), parts[t]);
     };
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(run, t);
+    // Where no more threads can start (an address-space limit), this one shoots the remaining
+    // ranges itself: the same parts, so the same maps.
+    unsigned started = 1;
+    try {
+        for (; started < threads; ++started) pool.emplace_back(run, started);
+    } catch (const std::system_error&) {
+    }
     run(0);
+    for (unsigned t = started; t < threads; ++t) run(t);
     for (auto& t : pool) t.join();
     PhotonPass out = std::move(parts[0]);
     for (unsigned t = 1; t < threads; ++t) {

@@ -1,7 +1,6 @@
 #include "gpu/pipeline.hpp"
 
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
@@ -102,7 +101,10 @@ ComputePipeline::~ComputePipeline() {
 
 namespace {
 
-std::atomic<int> g_abandoned{0};
+// Abandoned builds still running, and a way to wait for the last of them.
+std::mutex g_abandoned_mutex;
+std::condition_variable g_abandoned_finished;
+int g_abandoned = 0;
 
 }  // namespace
 
@@ -142,7 +144,10 @@ PipelineBuild::PipelineBuild(std::shared_ptr<const Context> context, std::shared
         // An abandoned build is the last owner: this destroys the pipeline, and maybe the layout
         // and the device. Only then does it stop counting as running.
         state.reset();
-        if (abandoned) --g_abandoned;
+        if (abandoned) {
+            std::lock_guard count_lock(g_abandoned_mutex);
+            if (--g_abandoned == 0) g_abandoned_finished.notify_all();
+        }
     }).detach();
 }
 
@@ -151,6 +156,7 @@ PipelineBuild::~PipelineBuild() {
         std::lock_guard lock(state_->mutex);
         if (!state_->done) {
             state_->abandoned = true;
+            std::lock_guard count_lock(g_abandoned_mutex);
             ++g_abandoned;
             return;
         }
@@ -172,6 +178,14 @@ ComputePipeline* PipelineBuild::wait(const std::function<bool()>& keep_waiting) 
     return state_->pipeline.get();
 }
 
-int abandoned_pipeline_builds() { return g_abandoned.load(); }
+int abandoned_pipeline_builds() {
+    std::lock_guard lock(g_abandoned_mutex);
+    return g_abandoned;
+}
+
+void wait_for_abandoned_pipeline_builds() {
+    std::unique_lock lock(g_abandoned_mutex);
+    g_abandoned_finished.wait(lock, [] { return g_abandoned == 0; });
+}
 
 }  // namespace lancer::gpu

@@ -74,5 +74,8 @@ private:
 // Pipeline builds abandoned and still running in this process. main() must not run the exit
 // handlers (the driver's and LLVM's static destructors) under them: it leaves with _Exit().
 int abandoned_pipeline_builds();
+// Waits until none is running: for a process that must end normally (the tests' main), which a
+// build still inside the driver would bring down as its libraries are unloaded.
+void wait_for_abandoned_pipeline_builds();
 
 }  // namespace lancer::gpu

@@ -82,8 +82,10 @@ TEST(GlslMicrofacetOnDevice, AgreesWithTheDoublePrecisionModel) {
         EXPECT_TRUE(near(o[3], f, 2e-4 + 2e-7 / (c.alpha * c.alpha))) << i << ": f " << o[3] << " vs " << f;
         dvec3 m = optics::sample_visible_normal(c.wo, c.alpha, c.u1, c.u2);
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(out[32 * i + 20 + k], m[k], 2e-4) << i << " normal " << k;
-        EXPECT_NEAR(out[32 * i + 24], optics::conductor_fresnel(c.wo.z, dvec3(c.eta), dvec3(c.k)).r, 2e-5) << i;
-        EXPECT_NEAR(out[32 * i + 25], optics::conductor_fresnel(c.wi.z, dvec3(c.eta), dvec3(c.k)).r, 2e-5) << i;
+        // Fresnel's complex square root and quotients: 2e-5 on lavapipe, 2.4e-5 measured on NVIDIA's
+        // driver (whose division and square root may be 2.5 ulps off, as Vulkan allows).
+        EXPECT_NEAR(out[32 * i + 24], optics::conductor_fresnel(c.wo.z, dvec3(c.eta), dvec3(c.k)).r, 5e-5) << i;
+        EXPECT_NEAR(out[32 * i + 25], optics::conductor_fresnel(c.wi.z, dvec3(c.eta), dvec3(c.k)).r, 5e-5) << i;
         for (int k = 0; k < 4; ++k) EXPECT_NEAR(out[32 * i + 28 + k], 0.0, 1e-5) << i << " basis " << k;
     }
 }
