@@ -21,14 +21,6 @@ std::uint32_t groups(std::uint64_t invocations) {
     return static_cast<std::uint32_t>((invocations + PHOTON_WORKGROUP - 1) / PHOTON_WORKGROUP);
 }
 
-void barrier(VkCommandBuffer commands, VkAccessFlags dst = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-             VkPipelineStageFlags dst_stage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT) {
-    VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    b.dstAccessMask = dst;
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, dst_stage, 0, 1, &b, 0, nullptr, 0, nullptr);
-}
-
 }  // namespace
 
 PhotonPass::PhotonPass(const Context& context, const TraceLayout& layout) : context_(context), layout_(layout) {
@@ -123,7 +115,7 @@ std::uint32_t PhotonPass::submit(const PhotonParams& p, const ShaderFeatures& fe
     vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout(), 0, 1, &set, 0, nullptr);
     vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(false, features).handle());
     vkCmdDispatch(commands_, groups(p.count), 1, 1);
-    barrier(commands_);
+    compute_barrier(commands_);
     vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(true, features).handle());
     const std::pair<uint, std::uint64_t> steps[] = {{GRID_CLEAR, buckets}, {GRID_COUNT, p.capacity}, {GRID_SCAN, buckets},
                                                     {GRID_BLOCKS, 1},      {GRID_OFFSET, buckets},   {GRID_SCATTER, p.capacity}};
@@ -131,9 +123,9 @@ std::uint32_t PhotonPass::submit(const PhotonParams& p, const ShaderFeatures& fe
         GridStep step{kind, 0, 0, 0};
         vkCmdPushConstants(commands_, layout_.pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(step), &step);
         vkCmdDispatch(commands_, groups(invocations), 1, 1);
-        barrier(commands_);
+        compute_barrier(commands_);
     }
-    barrier(commands_, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);  // the counter, read below
+    compute_barrier(commands_, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);  // the counter, read below
     VK_CHECK(vkEndCommandBuffer(commands_));
 
     submit_and_wait(context_, commands_, fence_, progress, done);

@@ -16,14 +16,6 @@ static_assert(sizeof(SelectStep) <= sizeof(BandParams), "SelectStep must fit the
 // The workgroups (and blocks of the prefix sums) that cover `items` pixels or list entries.
 std::uint64_t blocks_of(std::uint64_t items) { return (items + SELECT_BLOCK - 1) / SELECT_BLOCK; }
 
-void barrier(VkCommandBuffer commands, VkAccessFlags dst = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-             VkPipelineStageFlags dst_stage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT) {
-    VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    b.dstAccessMask = dst;
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, dst_stage, 0, 1, &b, 0, nullptr, 0, nullptr);
-}
-
 }  // namespace
 
 RefineSelection::RefineSelection(const Context& context, const TraceLayout& layout, const std::vector<std::uint32_t>& spirv)
@@ -102,13 +94,13 @@ void RefineSelection::begin() const {
 }
 
 void RefineSelection::record(VkCommandBuffer commands, const SelectStep& step, std::uint64_t items) const {
-    barrier(commands);
+    compute_barrier(commands);
     vkCmdPushConstants(commands, layout_.pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(step), &step);
     vkCmdDispatch(commands, static_cast<std::uint32_t>(std::max<std::uint64_t>(1, blocks_of(items))), 1, 1);
 }
 
 void RefineSelection::end_and_submit(const ProgressFn& progress, double done) const {
-    barrier(commands_, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);
+    compute_barrier(commands_, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);
     VK_CHECK(vkEndCommandBuffer(commands_));
     submit_and_wait(context_, commands_, fence_, progress, done);
 }

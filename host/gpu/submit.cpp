@@ -22,4 +22,11 @@ void submit_and_wait(const Context& context, VkCommandBuffer commands, VkFence f
     if (cancel) throw RenderCancelled();
 }
 
+void compute_barrier(VkCommandBuffer commands, VkAccessFlags dst, VkPipelineStageFlags dst_stage) {
+    VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    b.dstAccessMask = dst;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, dst_stage, 0, 1, &b, 0, nullptr, 0, nullptr);
+}
+
 }  // namespace lancer::gpu

@@ -14,4 +14,9 @@ namespace lancer::gpu {
 void submit_and_wait(const Context& context, VkCommandBuffer commands, VkFence fence, const ProgressFn& progress,
                      double done);
 
+// Records a barrier after compute shader writes: later compute shaders (by default) read and
+// write what they wrote, or, with `dst` and `dst_stage`, the host reads it after the fence.
+void compute_barrier(VkCommandBuffer commands, VkAccessFlags dst = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
+                     VkPipelineStageFlags dst_stage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+
 }  // namespace lancer::gpu

@@ -125,23 +125,28 @@ Scene with_patches(const std::string& parametric_text, std::vector<surface::Bezi
 // world origin for the first and the eye for the second; scene/camera.hpp.)
 const glm::dvec3 kFar(1e6, -1e6, 2e6);
 
+// The twins against their reference, at the origin and moved far from it: the reference on
+// `backend`, the twins on the GPU.
+void expect_twins_everywhere(const std::string& name, test::Backend backend, const Scene& reference,
+                             const std::vector<std::pair<std::string, Scene>>& twins) {
+    for (const bool far : {false, true}) {
+        auto place = [&](const Scene& s) { return far ? test::moved_scene(s, kFar) : s; };
+        const FloatImage expected = test::render_on(backend, place(reference));
+        for (const auto& [kind, twin] : twins)
+            expect_twin(fmt::format("{}-{}{}", name, kind, far ? "-far" : ""), expected,
+                        test::render_on(test::Backend::Gpu, place(twin)));
+    }
+}
+
 class SphereTwins : public testing::TestWithParam<View> {};
 
 // The parametric sphere and the rational-patch sphere against the analytic sphere, all on the GPU.
 TEST_P(SphereTwins, MatchTheAnalyticSphere) {
     const View v = GetParam();
     const Scene analytic = test::scene_from_text(stage(v, "type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1.2\n"));
-    const Scene parametric = test::scene_from_text(stage(v, kParametricSphere));
-    const Scene patches = with_patches(stage(v, kParametricSphere), sphere_patches(1.2));
-    for (const bool far : {false, true}) {
-        auto place = [&](const Scene& s) { return far ? test::moved_scene(s, kFar) : s; };
-        const std::string where = far ? "-far" : "";
-        const FloatImage reference = test::render_on(test::Backend::Gpu, place(analytic));
-        expect_twin(fmt::format("sphere-{}-parametric{}", v.name, where), reference,
-                    test::render_on(test::Backend::Gpu, place(parametric)));
-        expect_twin(fmt::format("sphere-{}-patches{}", v.name, where), reference,
-                    test::render_on(test::Backend::Gpu, place(patches)));
-    }
+    expect_twins_everywhere(fmt::format("sphere-{}", v.name), test::Backend::Gpu, analytic,
+                            {{"parametric", test::scene_from_text(stage(v, kParametricSphere))},
+                             {"patches", with_patches(stage(v, kParametricSphere), sphere_patches(1.2))}});
 }
 
 INSTANTIATE_TEST_SUITE_P(Views, SphereTwins, testing::ValuesIn(kSphereViews),
@@ -154,21 +159,13 @@ class TorusTwins : public testing::TestWithParam<View> {};
 TEST_P(TorusTwins, MatchTheCertifiedTorus) {
     const View v = GetParam();
     const Scene parametric = test::scene_from_text(stage(v, kParametricTorus));
-    const Scene patches = with_patches(stage(v, kParametricTorus), test::torus_patches(1.0, 0.35));
-    for (const bool far : {false, true}) {
-        auto place = [&](const Scene& s) { return far ? test::moved_scene(s, kFar) : s; };
-        const std::string where = far ? "-far" : "";
-        const FloatImage reference = test::render_on(test::Backend::Cpu, place(parametric));
-        expect_twin(fmt::format("torus-{}-parametric{}", v.name, where), reference,
-                    test::render_on(test::Backend::Gpu, place(parametric)));
-        expect_twin(fmt::format("torus-{}-patches{}", v.name, where), reference,
-                    test::render_on(test::Backend::Gpu, place(patches)));
-    }
+    expect_twins_everywhere(fmt::format("torus-{}", v.name), test::Backend::Cpu, parametric,
+                            {{"parametric", parametric},
+                             {"patches", with_patches(stage(v, kParametricTorus), test::torus_patches(1.0, 0.35))}});
 }
 
 INSTANTIATE_TEST_SUITE_P(Views, TorusTwins, testing::ValuesIn(kTorusViews),
                          [](const testing::TestParamInfo<View>& info) { return std::string(info.param.name); });
-
 
 // A flat Bezier patch with evenly spaced control points is the square it spans: against the
 // rectangle from views that graze its plane. The eye is 1 above a square 20,000 across and looks

@@ -11,7 +11,6 @@
 #include "cpu/cpu_renderer.hpp"
 #include "scene/camera.hpp"
 #include "support/test_support.hpp"
-#include "support/twin_stage.hpp"
 #include "surface/bezier_patch.hpp"
 
 namespace lancer {
@@ -238,47 +237,6 @@ TEST(Exactness, GpuSearchAgreesWithIntervalNewtonOnTheTorus) {
     EXPECT_GT(hits, 1000);
     EXPECT_EQ(gpu_only + cpu_only + wrong_t + grazing_disagreements, 0);
     EXPECT_LE(max_residual, 1e-5 * 2.7);  // scene scale: the torus's diameter
-}
-
-}  // namespace
-}  // namespace lancer
-
-#include "support/rational_patches.hpp"
-
-namespace lancer {
-namespace {
-
-// Twins: a surface given by equations renders like its closed-form or exact-patch twin, on the
-// GPU, under the image tests' metric.
-void expect_same_picture(const Scene& a, const Scene& b, const std::string& name) {
-    test::expect_same_picture(name, to_srgb8(test::gpu_renderer().render(a, {})), to_srgb8(test::gpu_renderer().render(b, {})));
-}
-
-TEST(Twins, ParametricSphereIsTheAnalyticSphere) {
-    Scene parametric = test::scene_from_text(std::string(test::kTwinStage) + R"toml(
-        type = "parametric"
-        x = "1.2*cos(v)*cos(u)"
-        y = "1.2*sin(v)"
-        z = "1.2*cos(v)*sin(u)"
-        u = [0, "2*pi"]
-        v = ["-pi/2", "pi/2"]
-    )toml");
-    Scene analytic = test::scene_from_text(std::string(test::kTwinStage) + "type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1.2\n");
-    expect_same_picture(parametric, analytic, "twin-sphere");
-}
-
-TEST(Twins, ParametricTorusIsTheRationalBezierTorus) {
-    Scene parametric = test::scene_from_text(std::string(test::kTwinStage) + R"toml(
-        type = "parametric"
-        x = "(1 + 0.35*cos(v)) * cos(u)"
-        y = "(1 + 0.35*cos(v)) * sin(u)"
-        z = "0.35*sin(v)"
-        u = [0, "2*pi"]
-        v = [0, "2*pi"]
-    )toml");
-    Scene patches = parametric;
-    patches.objects[1].shape = BezierSurface{test::torus_patches(1.0, 0.35), 1, ""};
-    expect_same_picture(parametric, patches, "twin-torus");
 }
 
 }  // namespace
