@@ -83,10 +83,12 @@ const int BVH_STACK_SIZE = 64;  // the builder bounds the tree depth by 60 (host
 
 const uint NO_PRIMITIVE = 0xffffffffu;
 
-// Two hits this close (relative) are one point found twice: neighbouring patch leaves share
-// their edges. The primitive with the smaller stable key wins, so the answer does not depend on
-// the order primitives are tested in (BVH or brute force give identical images).
-const float TIE = 1e-5;
+// Two hits this close are one point found twice (neighbouring patch leaves and parametric cells
+// share their edges): within their searches' error bounds of each other, or 1e-6 of t for the
+// rounding of roots found to float's noise. The primitive with the smaller stable key wins, so
+// the answer does not depend on the order primitives are tested in (BVH or brute force give
+// identical images). Two sheets of a surface further apart are two hits: the nearer is drawn.
+const float TIE = 1e-6;
 
 // Object index and shape data: the same whichever order the primitives are stored in.
 uvec2 stable_key(Primitive p) { return uvec2(p.object, p.data); }
@@ -99,7 +101,7 @@ struct Nearest {
 };
 
 // How far a test must look: up to t_max, or a little past the best hit to see its ties.
-float reach(Nearest best) { return best.prim == NO_PRIMITIVE ? best.t : best.t * (1.0 + TIE); }
+float reach(Nearest best) { return best.prim == NO_PRIMITIVE ? best.t : best.t * (1.0 + TIE) + 2.0 * best.error; }
 
 // Tests primitive i, which is p, and keeps it if it is nearer (or an equally near,
 // smaller-keyed twin).
@@ -107,7 +109,7 @@ bool consider_primitive(uint i, Primitive p, Ray ray, float t_min, bool planes_o
     float t, error;
     vec2 uv;
     if (!primitive_intersect(p, ray, t_min, reach(best), planes_only, t, uv, error)) return false;
-    if (best.prim != NO_PRIMITIVE && t >= best.t * (1.0 - TIE)) {
+    if (best.prim != NO_PRIMITIVE && t >= best.t - (TIE * best.t + error + best.error)) {
         uvec2 a = stable_key(p), b = stable_key(primitive_at(best.prim));
         if (!(a.x < b.x || (a.x == b.x && a.y < b.y))) return false;
     }

@@ -197,10 +197,11 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
             x = clamp(x - step, low, high);
             steps += 1;
             vec2 moved = abs(step) / cell_size;
-            // Converged: the step is small, or (where the ray is tangent to the surface, so that
-            // the roots are nearly double and Newton's method slows to linear) the residual is at
-            // float's noise.
-            bool at_noise = unproved && length(F) <= slack;
+            // Converged: the step is small, or the residual is at float's noise. (Where the ray is
+            // nearly tangent to the surface, J is nearly singular: near a double root Newton's
+            // method slows to linear, and near a simple one its steps, J^-1 times F's rounding,
+            // stay larger than the step criterion while F itself can shrink no further.)
+            bool at_noise = length(F) <= slack;
             bool converged = !stored && (moved.x + moved.y < PARAMETRIC_CONVERGED || at_noise);
             if (at_noise) x = evaluated;  // the root is where S was evaluated
             if (converged) {

@@ -176,12 +176,12 @@ std::vector<surface::BezierPatch> moved(std::vector<surface::BezierPatch> patche
 struct Case {
     std::string name;
     Scene (*make)();
-    // For parametric surfaces the roots (checks nearest, spurious, missed) are reported, not
-    // asserted; their error bounds and offsets are asserted like every family's. Of about 3,000
-    // rays per surface the GPU's search still misses 1-6: rays restarted from a hit at a grazing
-    // angle that meet the surface again within about 0.01 (J nearly singular there, in a box it
-    // cannot prove), and on Dini's surface 2 rays from 2,000 units away whose nearer of two
-    // close sheets it misses. (docs/scene-format.md, "Parametric surfaces", says what is resolved.)
+    // For the parametric torus the roots (checks nearest, spurious, missed) are reported, not
+    // asserted; its error bounds and offsets are asserted like every family's. Of its 1,200 rays
+    // the GPU's search misses one: a ray restarted from a hit at a grazing angle that meets the
+    // tube again 0.024 further on, in a cell where J is nearly singular and the search cannot
+    // prove a root and Newton's method, 128 steps in, has not converged. Klein's and Dini's
+    // surfaces are asserted. (docs/scene-format.md, "Parametric surfaces", says what is resolved.)
     bool roots_reported_only = false;
 };
 
@@ -206,8 +206,8 @@ const Case kCases[] = {
     {"implicit_gyroid", [] { return only_object(test::shipped_scene("gyroid", 64, 36), 1); }},
     {"implicit_barth", [] { return only_object(test::shipped_scene("barth", 64, 36), 1); }},
     {"parametric_torus", [] { return only_object(test::shipped_scene("torus", 64, 36), 1); }, true},
-    {"parametric_dini", [] { return only_object(test::shipped_scene("dini", 64, 36), 1); }, true},
-    {"parametric_klein", [] { return only_object(test::shipped_scene("klein", 64, 36), 1); }, true},
+    {"parametric_dini", [] { return only_object(test::shipped_scene("dini", 64, 36), 1); }},
+    {"parametric_klein", [] { return only_object(test::shipped_scene("klein", 64, 36), 1); }},
 };
 
 // The rays of one case, in the GPU's coordinates: origin, direction, the leaving ray's cosine
