@@ -71,28 +71,15 @@ std::shared_ptr<gpu::Context> make_context(const gpu::ContextOptions& options) {
 GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration acceleration)
     : context_(make_context(options)),
       layout_(std::make_shared<gpu::TraceLayout>(*context_)),
+      submission_(*context_, "band"),
       base_tree_(gpu::embedded_tree()),
       spirv_(gpu::embedded_trace_spirv()),
       resources_(*context_, layout_->set_layout()),
       photons_(std::make_unique<gpu::PhotonPass>(*context_, *layout_)),
-      acceleration_(acceleration) {
-    VkDevice device = context_->device();
-    VkCommandBufferAllocateInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    cmd_info.commandPool = context_->command_pool();
-    cmd_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cmd_info.commandBufferCount = 1;
-    VK_CHECK(vkAllocateCommandBuffers(device, &cmd_info, &command_buffer_));
-    context_->set_name(VK_OBJECT_TYPE_COMMAND_BUFFER, command_buffer_, "band dispatches");
-    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VK_CHECK(vkCreateFence(device, &fence_info, nullptr, &fence_));
-    context_->set_name(VK_OBJECT_TYPE_FENCE, fence_, "band done");
-}
+      acceleration_(acceleration) {}
 
 GpuRenderer::~GpuRenderer() {
-    VkDevice device = context_->device();
-    vkDeviceWaitIdle(device);
-    if (fence_) vkDestroyFence(device, fence_, nullptr);
-    if (command_buffer_) vkFreeCommandBuffers(device, context_->command_pool(), 1, &command_buffer_);
+    vkDeviceWaitIdle(context_->device());
     photons_.reset();
     selection_.reset();
     pipelines_.clear();
@@ -185,41 +172,25 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
 
 void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_pass, std::uint32_t width, double done,
                                 const ProgressFn& progress) {
-    VK_CHECK(vkResetCommandBuffer(command_buffer_, 0));
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    VK_CHECK(vkBeginCommandBuffer(command_buffer_, &begin));
-    vkCmdBindPipeline(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->handle());
+    VkCommandBuffer commands = submission_.begin();
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->handle());
     VkDescriptorSet set = resources_.descriptor_set();
-    vkCmdBindDescriptorSets(command_buffer_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_->pipeline_layout(), 0, 1, &set, 0,
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout_->pipeline_layout(), 0, 1, &set, 0,
                             nullptr);
     const std::uint32_t end = band.sample_first + band.sample_count;
     for (std::uint32_t first = band.sample_first; first < end; first += per_pass) {
-        if (first > band.sample_first) {
-            // The next pass continues the sums this one wrote.
-            VkMemoryBarrier accumulate{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-            accumulate.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-            accumulate.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-            vkCmdPipelineBarrier(command_buffer_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &accumulate, 0, nullptr, 0, nullptr);
-        }
+        if (first > band.sample_first) gpu::compute_barrier(commands);  // the next pass continues the sums this one wrote
         gpu::BandParams pass = band;
         pass.sample_first = first;
         pass.sample_count = std::min(per_pass, end - first);
-        vkCmdPushConstants(command_buffer_, layout_->pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pass),
+        vkCmdPushConstants(commands, layout_->pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pass),
                            &pass);
-        vkCmdDispatch(command_buffer_, (width + gpu::WORKGROUP_X - 1) / gpu::WORKGROUP_X,
+        vkCmdDispatch(commands, (width + gpu::WORKGROUP_X - 1) / gpu::WORKGROUP_X,
                       (band.rows + gpu::WORKGROUP_Y - 1) / gpu::WORKGROUP_Y, 1);
     }
-    // Make the shader's writes visible to the host's read of the mapped output.
-    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(command_buffer_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                         &barrier, 0, nullptr, 0, nullptr);
-    VK_CHECK(vkEndCommandBuffer(command_buffer_));
-
-    gpu::submit_and_wait(*context_, command_buffer_, fence_, progress, done);
+    // The host reads the mapped output after the fence.
+    gpu::compute_barrier(commands, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);
+    submission_.end_and_wait(progress, done);
 }
 
 FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) { return render_in_steps(scene, progress, {}); }

@@ -12,6 +12,7 @@
 #include "gpu/layout.hpp"
 #include "gpu/photon_pass.hpp"
 #include "gpu/pipeline.hpp"
+#include "gpu/submit.hpp"
 #include "gpu/refine_selection.hpp"
 #include "gpu/scene_packing.hpp"
 #include "gpu/shader_compiler.hpp"
@@ -125,6 +126,7 @@ private:
     // Shared with pipeline builds still running (gpu::PipelineBuild).
     std::shared_ptr<gpu::Context> context_;
     std::shared_ptr<gpu::TraceLayout> layout_;
+    gpu::Submission submission_;  // the bands' dispatches
     // Where the tracer's sources come from, the generated surface code compiled in, its SPIR-V,
     // and the pipelines built from that so far, one per variant used.
     gpu::ShaderTree base_tree_;
@@ -139,8 +141,6 @@ private:
     std::unique_ptr<gpu::PhotonPass> photons_;
     std::vector<gpu::Emitter> emitters_;  // the last uploaded scene's, for the photon pass
     std::vector<std::string> float_notes_;  // the last uploaded scene's objects float cannot resolve
-    VkCommandBuffer command_buffer_ = VK_NULL_HANDLE;
-    VkFence fence_ = VK_NULL_HANDLE;
     Acceleration acceleration_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
     std::size_t bands_rerendered_ = 0;

@@ -23,23 +23,12 @@ std::uint32_t groups(std::uint64_t invocations) {
 
 }  // namespace
 
-PhotonPass::PhotonPass(const Context& context, const TraceLayout& layout) : context_(context), layout_(layout) {
-    VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    info.commandPool = context.command_pool();
-    info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    info.commandBufferCount = 1;
-    VK_CHECK(vkAllocateCommandBuffers(context.device(), &info, &commands_));
-    context.set_name(VK_OBJECT_TYPE_COMMAND_BUFFER, commands_, "photon pass");
-    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VK_CHECK(vkCreateFence(context.device(), &fence_info, nullptr, &fence_));
-    context.set_name(VK_OBJECT_TYPE_FENCE, fence_, "photon pass done");
-}
+PhotonPass::PhotonPass(const Context& context, const TraceLayout& layout)
+    : context_(context), layout_(layout), submission_(context, "photon pass") {}
 
 PhotonPass::~PhotonPass() {
     vkDeviceWaitIdle(context_.device());
     pipelines_.clear();
-    if (fence_) vkDestroyFence(context_.device(), fence_, nullptr);
-    if (commands_) vkFreeCommandBuffers(context_.device(), context_.command_pool(), 1, &commands_);
 }
 
 void PhotonPass::use_programs(std::vector<std::uint32_t> photons, std::vector<std::uint32_t> grid) {
@@ -107,28 +96,23 @@ std::uint32_t PhotonPass::submit(const PhotonParams& p, const ShaderFeatures& fe
     const uint zero = 0;
     counter.write(&zero, sizeof(zero));
 
-    VK_CHECK(vkResetCommandBuffer(commands_, 0));
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    VK_CHECK(vkBeginCommandBuffer(commands_, &begin));
+    VkCommandBuffer commands = submission_.begin();
     VkDescriptorSet set = resources.descriptor_set();
-    vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout(), 0, 1, &set, 0, nullptr);
-    vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(false, features).handle());
-    vkCmdDispatch(commands_, groups(p.count), 1, 1);
-    compute_barrier(commands_);
-    vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(true, features).handle());
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout(), 0, 1, &set, 0, nullptr);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(false, features).handle());
+    vkCmdDispatch(commands, groups(p.count), 1, 1);
+    compute_barrier(commands);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline(true, features).handle());
     const std::pair<uint, std::uint64_t> steps[] = {{GRID_CLEAR, buckets}, {GRID_COUNT, p.capacity}, {GRID_SCAN, buckets},
                                                     {GRID_BLOCKS, 1},      {GRID_OFFSET, buckets},   {GRID_SCATTER, p.capacity}};
     for (const auto& [kind, invocations] : steps) {
         GridStep step{kind, 0, 0, 0};
-        vkCmdPushConstants(commands_, layout_.pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(step), &step);
-        vkCmdDispatch(commands_, groups(invocations), 1, 1);
-        compute_barrier(commands_);
+        vkCmdPushConstants(commands, layout_.pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(step), &step);
+        vkCmdDispatch(commands, groups(invocations), 1, 1);
+        compute_barrier(commands);
     }
-    compute_barrier(commands_, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);  // the counter, read below
-    VK_CHECK(vkEndCommandBuffer(commands_));
-
-    submit_and_wait(context_, commands_, fence_, progress, done);
+    compute_barrier(commands, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);  // the counter, read below
+    submission_.end_and_wait(progress, done);
     uint stored = 0;
     std::memcpy(&stored, counter.data(), sizeof(stored));
     if (stored <= p.capacity) {

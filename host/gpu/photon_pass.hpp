@@ -12,6 +12,7 @@
 #include "gpu/context.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/pipeline.hpp"
+#include "gpu/submit.hpp"
 #include "gpu/trace_resources.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -50,8 +51,7 @@ private:
     const TraceLayout& layout_;
     std::vector<std::uint32_t> photons_spirv_, grid_spirv_;
     std::map<std::pair<bool, ShaderFeatures>, std::unique_ptr<ComputePipeline>> pipelines_;
-    VkCommandBuffer commands_ = VK_NULL_HANDLE;
-    VkFence fence_ = VK_NULL_HANDLE;
+    Submission submission_;
     std::uint32_t capacity_ = 0;
 };
 

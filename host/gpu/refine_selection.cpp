@@ -19,28 +19,10 @@ std::uint64_t blocks_of(std::uint64_t items) { return (items + SELECT_BLOCK - 1)
 }  // namespace
 
 RefineSelection::RefineSelection(const Context& context, const TraceLayout& layout, const std::vector<std::uint32_t>& spirv)
-    : context_(context), layout_(layout), pipeline_(context, layout, spirv, ShaderFeatures{}, "refine selection") {
-    VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    info.commandPool = context.command_pool();
-    info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    info.commandBufferCount = 1;
-    VK_CHECK(vkAllocateCommandBuffers(context.device(), &info, &commands_));
-    context.set_name(VK_OBJECT_TYPE_COMMAND_BUFFER, commands_, "refine selection");
-    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    try {
-        VK_CHECK(vkCreateFence(context.device(), &fence_info, nullptr, &fence_));
-    } catch (...) {
-        vkFreeCommandBuffers(context.device(), context.command_pool(), 1, &commands_);
-        throw;
-    }
-    context.set_name(VK_OBJECT_TYPE_FENCE, fence_, "refine selection done");
-}
+    : context_(context), layout_(layout), pipeline_(context, layout, spirv, ShaderFeatures{}, "refine selection"),
+      submission_(context, "refine selection") {}
 
-RefineSelection::~RefineSelection() {
-    vkDeviceWaitIdle(context_.device());
-    if (fence_) vkDestroyFence(context_.device(), fence_, nullptr);
-    if (commands_) vkFreeCommandBuffers(context_.device(), context_.command_pool(), 1, &commands_);
-}
+RefineSelection::~RefineSelection() { vkDeviceWaitIdle(context_.device()); }
 
 std::vector<BufferNeed> RefineSelection::buffer_needs(std::uint64_t pixels) {
     const std::uint64_t blocks = blocks_of(pixels) + 1;
@@ -85,12 +67,10 @@ void RefineSelection::write_tables(double threshold, TraceResources& resources) 
     tables_for_ = threshold;
 }
 
-void RefineSelection::begin() const {
-    VK_CHECK(vkResetCommandBuffer(commands_, 0));
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    VK_CHECK(vkBeginCommandBuffer(commands_, &begin));
-    vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.handle());
+VkCommandBuffer RefineSelection::begin() const {
+    VkCommandBuffer commands = submission_.begin();
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.handle());
+    return commands;
 }
 
 void RefineSelection::record(VkCommandBuffer commands, const SelectStep& step, std::uint64_t items) const {
@@ -100,9 +80,8 @@ void RefineSelection::record(VkCommandBuffer commands, const SelectStep& step, s
 }
 
 void RefineSelection::end_and_submit(const ProgressFn& progress, double done) const {
-    compute_barrier(commands_, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);
-    VK_CHECK(vkEndCommandBuffer(commands_));
-    submit_and_wait(context_, commands_, fence_, progress, done);
+    compute_barrier(submission_.commands(), VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);
+    submission_.end_and_wait(progress, done);
 }
 
 std::uint32_t RefineSelection::choose(double threshold, bool by_spread, TraceResources& resources,
@@ -111,19 +90,19 @@ std::uint32_t RefineSelection::choose(double threshold, bool by_spread, TraceRes
     const std::uint64_t pixels = std::uint64_t(width_) * height_;
     // pixels_to_refine's rule: a threshold of 0 or less takes every candidate.
     SelectStep step{SELECT_FLAG, width_, height_, threshold <= 0.0 ? 1u : 0u, 0, 0, by_spread ? 1u : 0u, 0};
-    begin();
+    VkCommandBuffer commands = begin();
     VkDescriptorSet set = resources.descriptor_set();
-    vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout(), 0, 1, &set, 0, nullptr);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout(), 0, 1, &set, 0, nullptr);
     if (!encoded_) {
         step.kind = SELECT_ENCODE;
-        record(commands_, step, pixels);
+        record(commands, step, pixels);
     }
     step.kind = SELECT_FLAG;
-    record(commands_, step, pixels);
+    record(commands, step, pixels);
     step.kind = SELECT_BLOCKS;
-    record(commands_, step, 1);
+    record(commands, step, 1);
     step.kind = SELECT_SCATTER;
-    record(commands_, step, pixels);
+    record(commands, step, pixels);
     end_and_submit(progress, done);
     encoded_ = true;
     std::memcpy(&chosen_, static_cast<const uint*>(resources.working(BINDING_BLOCK_SUMS, 0).data()) + blocks_of(pixels),
@@ -133,10 +112,10 @@ std::uint32_t RefineSelection::choose(double threshold, bool by_spread, TraceRes
 
 void RefineSelection::merge(std::uint32_t first, std::uint32_t count, bool spread, TraceResources& resources,
                             const ProgressFn& progress, double done) {
-    begin();
+    VkCommandBuffer commands = begin();
     VkDescriptorSet set = resources.descriptor_set();
-    vkCmdBindDescriptorSets(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout(), 0, 1, &set, 0, nullptr);
-    record(commands_, SelectStep{SELECT_MERGE, width_, height_, 0, first, count, spread ? 1u : 0u, 0}, count);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.pipeline_layout(), 0, 1, &set, 0, nullptr);
+    record(commands, SelectStep{SELECT_MERGE, width_, height_, 0, first, count, spread ? 1u : 0u, 0}, count);
     end_and_submit(progress, done);
 }
 

@@ -12,6 +12,7 @@
 #include "gpu/layout.hpp"
 #include "gpu/memory_budget.hpp"
 #include "gpu/pipeline.hpp"
+#include "gpu/submit.hpp"
 #include "gpu/trace_resources.hpp"
 #include "image/image.hpp"
 #include "render/renderer.hpp"
@@ -54,15 +55,14 @@ private:
     // Records `step` over `items` pixels or list entries (a workgroup per SELECT_BLOCK of them),
     // after a barrier against the steps before.
     void record(VkCommandBuffer commands, const SelectStep& step, std::uint64_t items) const;
-    void begin() const;
+    VkCommandBuffer begin() const;
     void end_and_submit(const ProgressFn& progress, double done) const;
     void write_tables(double threshold, TraceResources& resources);
 
     const Context& context_;
     const TraceLayout& layout_;
     ComputePipeline pipeline_;
-    VkCommandBuffer commands_ = VK_NULL_HANDLE;
-    VkFence fence_ = VK_NULL_HANDLE;
+    Submission submission_;
     std::uint32_t width_ = 0, height_ = 0;
     bool encoded_ = false;  // the codes of the picture start() gave are made
     std::uint32_t chosen_ = 0;

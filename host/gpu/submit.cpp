@@ -22,6 +22,41 @@ void submit_and_wait(const Context& context, VkCommandBuffer commands, VkFence f
     if (cancel) throw RenderCancelled();
 }
 
+Submission::Submission(const Context& context, const std::string& name) : context_(context) {
+    VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    info.commandPool = context.command_pool();
+    info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    info.commandBufferCount = 1;
+    VK_CHECK(vkAllocateCommandBuffers(context.device(), &info, &commands_));
+    context.set_name(VK_OBJECT_TYPE_COMMAND_BUFFER, commands_, name);
+    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    try {
+        VK_CHECK(vkCreateFence(context.device(), &fence_info, nullptr, &fence_));
+    } catch (...) {
+        vkFreeCommandBuffers(context.device(), context.command_pool(), 1, &commands_);
+        throw;
+    }
+    context.set_name(VK_OBJECT_TYPE_FENCE, fence_, name + " done");
+}
+
+Submission::~Submission() {
+    vkDestroyFence(context_.device(), fence_, nullptr);
+    vkFreeCommandBuffers(context_.device(), context_.command_pool(), 1, &commands_);
+}
+
+VkCommandBuffer Submission::begin() const {
+    VK_CHECK(vkResetCommandBuffer(commands_, 0));
+    VkCommandBufferBeginInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(commands_, &info));
+    return commands_;
+}
+
+void Submission::end_and_wait(const ProgressFn& progress, double done) const {
+    VK_CHECK(vkEndCommandBuffer(commands_));
+    submit_and_wait(context_, commands_, fence_, progress, done);
+}
+
 void compute_barrier(VkCommandBuffer commands, VkAccessFlags dst, VkPipelineStageFlags dst_stage) {
     VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;

@@ -145,8 +145,11 @@ TEST(ParametricCells, PartialsLieWithinTheCellsBounds) {
             const double u0 = std::max(s.u0, c.u0 - wu), u1 = std::min(s.u1, c.u1 + wu);
             const double v0 = std::max(s.v0, c.v0 - wv), v1 = std::min(s.v1, c.v1 + wv);
             const SurfacePoint centre = evaluate_surface(s, 0.5 * (c.u0 + c.u1), 0.5 * (c.v0 + c.v1));
-            for (int k = 0; k < 3; ++k)
-                if (std::isfinite(centre.P[k])) EXPECT_NEAR(c.centre_point[k], centre.P[k], 1e-12 * (1.0 + std::abs(centre.P[k])));
+            for (int k = 0; k < 3; ++k) {
+                if (std::isfinite(centre.P[k])) {
+                    EXPECT_NEAR(c.centre_point[k], centre.P[k], 1e-12 * (1.0 + std::abs(centre.P[k])));
+                }
+            }
             for (int n = 0; n < 4; ++n) {
                 const double u = u0 + (u1 - u0) * unit(rng), v = v0 + (v1 - v0) * unit(rng);
                 const SurfacePoint p = evaluate_surface(s, u, v);
@@ -168,7 +171,9 @@ TEST(ParametricCells, PartialsLieWithinTheCellsBounds) {
                         EXPECT_TRUE(within(c.second.Suu[k], (pu.Pu[k] - p.Pu[k]) / hu, fd)) << "S_uu at (" << u << ", " << v << ")";
                         EXPECT_TRUE(within(c.second.Suv[k], (pu.Pv[k] - p.Pv[k]) / hu, fd)) << "S_uv at (" << u << ", " << v << ")";
                     }
-                    if (hv > 0.0) EXPECT_TRUE(within(c.second.Svv[k], (pv.Pv[k] - p.Pv[k]) / hv, fd)) << "S_vv at (" << u << ", " << v << ")";
+                    if (hv > 0.0) {
+                        EXPECT_TRUE(within(c.second.Svv[k], (pv.Pv[k] - p.Pv[k]) / hv, fd)) << "S_vv at (" << u << ", " << v << ")";
+                    }
                     ++checked;
                 }
             }
