@@ -33,9 +33,13 @@ echo
 median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
 run() {  # executable scene png: prints "render user"
   local args=("$2" --width "${size%x*}" --height "${size#*x}")
-  if grep -q '^\[animation\]' "$2"; then args+=(--frames 0 -o "${3%.png}_%d.png"); else args+=(-o "$3"); fi
+  local animated=false
+  grep -q '^\[animation\]' "$2" && animated=true
+  if $animated; then args+=(--frames 0 -o "${3%.png}_%d.png"); else args+=(-o "$3"); fi
+  # An animation's frame left from the last run would be resumed (skipped), not rendered.
+  rm -f "${3%.png}_0.png"
   /usr/bin/time -f "%U" -o "$out/time" "$1" render "${args[@]}" 2>"$out/log" >/dev/null
-  [ -f "$3" ] || mv "${3%.png}_0.png" "$3"
+  if $animated; then mv "${3%.png}_0.png" "$3"; fi
   # The timing line (notes about re-rendered bands may follow it); an animation's frame line.
   local render
   render=$(grep -E 'frame 0 \(1/1\), [0-9.]+ s' "$out/log" | sed -E 's/.*, ([0-9.]+) s.*/\1/' || true)
