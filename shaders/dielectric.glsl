@@ -117,8 +117,8 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media) {
         if (max3(through) < MIN_WEIGHT) break;
         media = beyond;
         from = p;
-        float error = hit_error(best.prim, ray, best.t, best.uv, best.error);
-        vec3 n = primitive_normal(best.prim, p, best.uv, error);
+        float error = best.error;
+        vec3 n = primitive_normal(best.prim, ray, best.t, p, best.uv, error);
         origin = past_surface(p, n, ray.dir, error);
     }
     return vec3(0.0);

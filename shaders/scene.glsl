@@ -17,10 +17,10 @@
 #include "shapes/implicit.glsl"
 
 // uv: the surface's own parameters at the hit, for shapes that have them; error: the error bound
-// of a Bezier or implicit hit, which only their search knows (hit_error completes the others').
-// Only families the
-// scene has are compiled in (lavapipe runs every case of a switch, the type being known only at
-// run time); planes_only, for the unbounded primitives of a scene with a BVH, leaves planes alone.
+// of a Bezier or implicit hit, which only their search knows (primitive_normal completes the
+// others'). Only families the scene has are compiled in (lavapipe runs every case of a switch,
+// the type being known only at run time); planes_only, for the unbounded primitives of a scene
+// with a BVH, leaves planes alone.
 bool primitive_intersect(Primitive p, Ray ray, float t_min, float t_max, bool planes_only, out float t_hit, out vec2 uv,
                          out float error) {
     uv = vec2(0.0);
@@ -42,35 +42,44 @@ bool primitive_intersect(Primitive p, Ray ray, float t_min, float t_max, bool pl
     return false;
 }
 
-// A hit's error bound (Hit.error), before primitive_normal completes an implicit one: the analytic
-// and parametric shapes' from the hit (here once per ray, not for every candidate hit of the
-// search), Bezier and implicit surfaces' as their search found it (`found`).
-float hit_error(uint index, Ray ray, float t, vec2 uv, float found) {
+// The unit normal at a hit on primitive `index` at t (p: the point there as the caller computed
+// it), and the hit's error bound (Hit.error): `error` comes in as the search found it (Bezier,
+// implicit) and goes out complete: the analytic and parametric shapes' computed from the hit
+// (here once per ray, not for every candidate hit of the search), implicit surfaces' plus the
+// band their enclosures cannot resolve, from the gradient at p. One switch, one fetch of the
+// primitive.
+vec3 primitive_normal(uint index, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
     Primitive prim = primitive_at(index);
     switch (prim.type) {
-        case SHAPE_SPHERE: if (SCENE_HAS_SPHERE) return sphere_hit_error(prim, ray, t); break;
-        case SHAPE_PLANE: if (SCENE_HAS_PLANE) return plane_hit_error(prim, ray, t); break;
-        case SHAPE_RECTANGLE: if (SCENE_HAS_RECTANGLE) return rectangle_hit_error(prim, ray, t); break;
-        case SHAPE_BOX: if (SCENE_HAS_BOX) return box_hit_error(prim, ray, t); break;
-#if LANCER_PARAMETRIC_SURFACES
-        case SHAPE_PARAMETRIC: return parametric_hit_error(prim, ray, t, uv);
-#endif
-    }
-    return found;
-}
-
-// The unit normal at a hit, and its error bound (Hit.error) completed from the intersector's:
-// implicit surfaces add the band their enclosures cannot resolve, from the gradient at p.
-vec3 primitive_normal(uint index, vec3 p, vec2 uv, inout float error) {
-    Primitive prim = primitive_at(index);
-    switch (prim.type) {
-        case SHAPE_SPHERE: if (SCENE_HAS_SPHERE) return sphere_normal(prim, p); break;
-        case SHAPE_PLANE: if (SCENE_HAS_PLANE) return plane_normal(prim); break;
-        case SHAPE_RECTANGLE: if (SCENE_HAS_RECTANGLE) return rectangle_normal(prim); break;
-        case SHAPE_BOX: if (SCENE_HAS_BOX) return box_normal(prim, p); break;
+        case SHAPE_SPHERE:
+            if (SCENE_HAS_SPHERE) {
+                error = sphere_hit_error(prim, ray, t);
+                return sphere_normal(prim, p);
+            }
+            break;
+        case SHAPE_PLANE:
+            if (SCENE_HAS_PLANE) {
+                error = plane_hit_error(prim, ray, t);
+                return plane_normal(prim);
+            }
+            break;
+        case SHAPE_RECTANGLE:
+            if (SCENE_HAS_RECTANGLE) {
+                error = rectangle_hit_error(prim, ray, t);
+                return rectangle_normal(prim);
+            }
+            break;
+        case SHAPE_BOX:
+            if (SCENE_HAS_BOX) {
+                error = box_hit_error(prim, ray, t);
+                return box_normal(prim, p);
+            }
+            break;
         case SHAPE_BEZIER: if (SCENE_HAS_BEZIER) return bezier_normal(prim, uv); break;
 #if LANCER_PARAMETRIC_SURFACES
-        case SHAPE_PARAMETRIC: return parametric_normal(prim, uv);
+        case SHAPE_PARAMETRIC:
+            error = parametric_hit_error(prim, ray, t, uv);
+            return parametric_normal(prim, uv);
 #endif
 #if LANCER_IMPLICIT_SURFACES
         case SHAPE_IMPLICIT: return implicit_normal(prim, p, error);
@@ -97,7 +106,7 @@ struct Nearest {
     float t;  // nearest hit so far, or t_max
     uint prim;
     vec2 uv;
-    float error;  // a Bezier or implicit hit's error bound, as its search found it (hit_error)
+    float error;  // a Bezier or implicit hit's error bound, as its search found it (primitive_normal completes it)
 };
 
 // How far a test must look: up to t_max, or a little past the best hit to see its ties.
@@ -196,8 +205,8 @@ bool closest_hit(Ray ray, float t_min, out Hit hit) {
     hit.t = best.t;
     hit.primitive = best.prim;
     hit.uv = best.uv;
-    hit.error = hit_error(best.prim, ray, best.t, best.uv, best.error);
-    hit.normal = primitive_normal(best.prim, ray.origin + best.t * ray.dir, best.uv, hit.error);
+    hit.error = best.error;
+    hit.normal = primitive_normal(best.prim, ray, best.t, ray.origin + best.t * ray.dir, best.uv, hit.error);
     return true;
 }
 
