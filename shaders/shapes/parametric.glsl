@@ -16,7 +16,9 @@
 //     narrows where that root can be, so a ray that misses is dropped after a step or two;
 //   * otherwise X is split in four, down to PARAMETRIC_LEVELS levels below the cell. A box at the
 //     last level that is still undecided (the ray tangent to the surface there, or a pole where
-//     S_u x S_v vanishes) is settled by Newton's method from its centre, unproved.
+//     S_u x S_v vanishes) is settled by Newton's method from its centre, unproved, its steps
+//     allowed half the box's size beyond it (a root near an edge between two such boxes is
+//     reached from either).
 // [J] comes from bounds the host proved per cell (ParametricCell): the partials' bounds over the
 // whole cell, whose centre's S is stored too, so that most cells are decided without evaluating S;
 // over a part of the cell, S's partials at its centre and the second partials' bounds.
@@ -194,7 +196,14 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
         bool done_with_box = no_root || !invertible;
         if (!done_with_box) {
             vec2 evaluated = x;
-            x = clamp(x - step, low, high);
+            // Kept in the box; in an unproved one, where J is nearly singular and a root near the
+            // box's edge is not reached by steps stopped at it, in the box widened by half its size.
+            vec2 reach_low = low, reach_high = high;
+            if (unproved) {
+                reach_low = max(low - 0.5 * (high - low), info.domain.xz);
+                reach_high = min(high + 0.5 * (high - low), info.domain.yw);
+            }
+            x = clamp(x - step, reach_low, reach_high);
             steps += 1;
             vec2 moved = abs(step) / cell_size;
             // Converged: the step is small, or the residual is at float's noise. (Where the ray is
@@ -227,7 +236,10 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
                 steps = 0;
                 converged = false;
             }
-            done_with_box = converged || any(isnan(x)) || steps >= PARAMETRIC_NEWTON_STEPS;
+            // A step that the box's edge stopped entirely (x did not move) will be stopped again:
+            // the root it heads for lies outside, and the box is left.
+            bool stuck = !converged && all(equal(x, evaluated));
+            done_with_box = converged || stuck || any(isnan(x)) || steps >= PARAMETRIC_NEWTON_STEPS;
         }
         newton = !done_with_box;
         if (done_with_box) {

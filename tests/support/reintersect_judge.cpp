@@ -211,9 +211,8 @@ std::string ReintersectJudge::summary() const {
     return s.str();
 }
 
-void ReintersectJudge::expect_all_pass(const std::string& name, bool roots) const {
+void ReintersectJudge::expect_all_pass(const std::string& name) const {
     for (int c = 0; c < kChecks; ++c) {
-        if (!roots && (c == Nearest || c == Spurious || c == Missed)) continue;
         int n = 0;
         for (const Tally& t : tallies_) n += t.failed[c];
         std::string examples;
@@ -226,7 +225,6 @@ void ReintersectJudge::expect_all_pass(const std::string& name, bool roots) cons
     // Rays excused near silhouettes are rare, or the excuse would hide real misses; but the grazing
     // rays are aimed near silhouettes on purpose: about half of them come from outside a convex
     // part, and of those 3 in 4 pass within 1e-5 of tangency (|n.d| < 0.005).
-    if (!roots) return;
     for (std::size_t k = 0; k < tallies_.size(); ++k) {
         const Tally& t = tallies_[k];
         EXPECT_LE(t.excused, k == kGrazing ? t.rays * 2 / 5 : t.rays * 3 / 100) << name << ": " << kKinds[k] << " rays excused";

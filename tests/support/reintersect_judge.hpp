@@ -67,9 +67,8 @@ public:
     void judge(const DeviceHits& h, std::size_t kind);
 
     std::string summary() const;
-    // One test failure per check that failed, with its examples. With `roots` false, the checks of
-    // the intersector's roots (nearest, spurious, missed) are only reported in the summary.
-    void expect_all_pass(const std::string& name, bool roots = true) const;
+    // One test failure per check that failed, with its examples.
+    void expect_all_pass(const std::string& name) const;
 
     int failures() const;
 
