@@ -34,8 +34,8 @@ for target in "${targets[@]}"; do
   mkdir -p "$work" "$artifacts"
   log="$build/fuzz-$target.log"
   echo "fuzz: $target for ${seconds} s" >&2
-  # -timeout: one input may take at most 10 s (the slowest legitimate one, a parametric surface
-  # at its limits, takes about 1 s under ASan); -rss_limit_mb: 2 GiB of memory at most.
+  # -timeout: one input may take at most 10 s (the slowest legitimate ones seen take about 4 s
+  # under ASan alone: an implicit surface of 2,000 characters whose roots the CPU reference finds); -rss_limit_mb: 2 GiB of memory at most.
   if "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len="${max_len[$target]}" \
        -dict="tests/fuzz/$target.dict" -seed="$seed" -artifact_prefix="$artifacts/" -print_final_stats=1 \
        "$work" "tests/fuzz/corpus/$target" "tests/fuzz/regressions/$target" >"$log" 2>&1; then
