@@ -81,11 +81,13 @@ int main(int argc, char** argv) {
     }
     std::printf("SPIR-V            %8zu words\n", spirv.size());
     gpu::ShaderFeatures features = packed.features;
+    // As lancer chooses (its expression surfaces' code is not in this module, so never "generated").
+    const gpu::SpirvCleanup cleanup = gpu::spirv_cleanup_for(features, false);
     t = Phase();
-    std::size_t specialized = gpu::specialize_spirv(spirv, features).size();
+    std::size_t specialized = gpu::specialize_spirv(spirv, features, cleanup).size();
     std::printf("specialise        %s  (%zu words; done again inside pipeline creation)\n", t.elapsed().c_str(), specialized);
     t = Phase();
-    gpu::ComputePipeline pipeline(context, layout, spirv, features);
+    gpu::ComputePipeline pipeline(context, layout, spirv, features, "tracer", cleanup);
     std::printf("create pipeline   %s\n", t.elapsed().c_str());
 
     t = Phase();

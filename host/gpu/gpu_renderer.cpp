@@ -89,7 +89,8 @@ void GpuRenderer::use_shaders(const gpu::ShaderTree& tree, const std::string& di
     std::vector<std::uint32_t> spirv =
         gpu::compile_compute(gpu::with_files(tree, generated_), gpu::kTraceShader, {}, display_root);
     // Prove the new code builds before dropping the old pipelines (the plain variant is cheap).
-    auto probe = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv, gpu::ShaderFeatures{});
+    auto probe = std::make_unique<gpu::PipelineBuild>(
+        context_, layout_, spirv, gpu::ShaderFeatures{}, gpu::spirv_cleanup_for(gpu::ShaderFeatures{}, !generated_.empty()));
     if (!probe->wait([] { return !cancellation_requested(); })) throw Cancelled();
     VK_CHECK(vkDeviceWaitIdle(context_->device()));  // old pipelines may still be in use
     pipelines_.clear();
@@ -134,7 +135,9 @@ void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated, bool photons
 
 void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress) {
     auto& slot = pipelines_[features];
-    if (!slot) slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv_, features);
+    if (!slot)
+        slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv_, features,
+                                                    gpu::spirv_cleanup_for(features, !generated_.empty()));
     pipeline_ = slot->wait([&] { return !progress || progress(0.0); });
     if (!pipeline_) throw RenderCancelled();
 }

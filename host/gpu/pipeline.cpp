@@ -57,7 +57,7 @@ void TraceLayout::release() noexcept {
 
 ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layout,
                                  const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
-                                 const std::string& pipeline_name)
+                                 const std::string& pipeline_name, SpirvCleanup cleanup)
     : device_(context.device()) {
     constexpr std::size_t kCount = std::size(kFeatures);
     std::array<VkBool32, kCount> values{};
@@ -75,7 +75,7 @@ ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layo
     specialization.dataSize = sizeof(values);
     specialization.pData = values.data();
 
-    const std::vector<std::uint32_t> specialized = cached_specialization(spirv, features);
+    const std::vector<std::uint32_t> specialized = cached_specialization(spirv, features, cleanup);
     VkShaderModuleCreateInfo module_info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     module_info.codeSize = specialized.size() * sizeof(std::uint32_t);
     module_info.pCode = specialized.data();
@@ -120,15 +120,15 @@ struct PipelineBuild::State {
 };
 
 PipelineBuild::PipelineBuild(std::shared_ptr<const Context> context, std::shared_ptr<const TraceLayout> layout,
-                             std::vector<std::uint32_t> spirv, const ShaderFeatures& features)
+                             std::vector<std::uint32_t> spirv, const ShaderFeatures& features, SpirvCleanup cleanup)
     : state_(std::make_shared<State>()) {
     state_->context = std::move(context);
     state_->layout = std::move(layout);
-    std::thread([state = state_, spirv = std::move(spirv), features]() mutable {
+    std::thread([state = state_, spirv = std::move(spirv), features, cleanup]() mutable {
         std::unique_ptr<ComputePipeline> pipeline;
         std::exception_ptr error;
         try {
-            pipeline = std::make_unique<ComputePipeline>(*state->context, *state->layout, spirv, features);
+            pipeline = std::make_unique<ComputePipeline>(*state->context, *state->layout, spirv, features, "tracer", cleanup);
         } catch (...) {
             error = std::current_exception();
         }

@@ -11,6 +11,7 @@
 
 #include "gpu/context.hpp"
 #include "gpu/layout.hpp"
+#include "gpu/spirv_specialize.hpp"
 
 namespace lancer::gpu {
 
@@ -36,7 +37,8 @@ class ComputePipeline {
 public:
     // `name` labels it for validation messages and debuggers, followed by the features it has on.
     ComputePipeline(const Context& context, const TraceLayout& layout, const std::vector<std::uint32_t>& spirv,
-                    const ShaderFeatures& features, const std::string& name = "tracer");
+                    const ShaderFeatures& features, const std::string& name = "tracer",
+                    SpirvCleanup cleanup = SpirvCleanup::dead_code);
     ~ComputePipeline();
     ComputePipeline(const ComputePipeline&) = delete;
     ComputePipeline& operator=(const ComputePipeline&) = delete;
@@ -56,7 +58,7 @@ private:
 class PipelineBuild {
 public:
     PipelineBuild(std::shared_ptr<const Context> context, std::shared_ptr<const TraceLayout> layout,
-                  std::vector<std::uint32_t> spirv, const ShaderFeatures& features);
+                  std::vector<std::uint32_t> spirv, const ShaderFeatures& features, SpirvCleanup cleanup);
     ~PipelineBuild();  // abandons a build still running
     PipelineBuild(const PipelineBuild&) = delete;
     PipelineBuild& operator=(const PipelineBuild&) = delete;

@@ -21,10 +21,11 @@ struct EntryHeader {
     char magic[8];                 // kMagic: also versions the entry format
     std::uint64_t input_hash;      // of the unspecialised module
     std::uint64_t features;        // one bit per LANCER_FEATURES flag, in table order
+    std::uint64_t cleanup;         // the SpirvCleanup
     std::uint64_t words;           // the module's length
     std::uint64_t output_hash;     // of the module's words: a torn or damaged file does not match
 };
-constexpr char kMagic[8] = {'l', 'a', 'n', 'c', 's', 'p', 'v', '1'};
+constexpr char kMagic[8] = {'l', 'a', 'n', 'c', 's', 'p', 'v', '2'};
 
 // Entries kept: editing shaders (lancer watch, view) makes a new one per edit, and each is
 // 50-200 KiB; the least recently written go first.
@@ -60,7 +61,7 @@ std::optional<std::vector<std::uint32_t>> read_entry(const std::string& path, co
     EntryHeader header{};
     if (!in.read(reinterpret_cast<char*>(&header), sizeof header)) return std::nullopt;
     if (std::memcmp(header.magic, kMagic, sizeof kMagic) != 0 || header.input_hash != wanted.input_hash ||
-        header.features != wanted.features || header.words == 0 || header.words > (std::uint64_t{1} << 24))
+        header.features != wanted.features || header.cleanup != wanted.cleanup || header.words == 0 || header.words > (std::uint64_t{1} << 24))
         return std::nullopt;
     std::vector<std::uint32_t> words(header.words);
     if (!in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * sizeof(std::uint32_t))))
@@ -106,16 +107,19 @@ std::optional<std::string> spirv_cache_directory() {
     return std::nullopt;
 }
 
-std::vector<std::uint32_t> cached_specialization(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features) {
+std::vector<std::uint32_t> cached_specialization(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
+                                                 SpirvCleanup cleanup) {
     const std::optional<std::string> dir = spirv_cache_directory();
-    if (!dir) return specialize_spirv(spirv, features);
+    if (!dir) return specialize_spirv(spirv, features, cleanup);
     EntryHeader key{};
     std::memcpy(key.magic, kMagic, sizeof kMagic);
     key.input_hash = hash_words(spirv);
     key.features = feature_bits(features);
-    const std::string path = fmt::format("{}/tracer-{:016x}-{:016x}.spv", *dir, key.input_hash, key.features);
+    key.cleanup = static_cast<std::uint64_t>(cleanup);
+    const std::string path =
+        fmt::format("{}/tracer-{:016x}-{:016x}-{}.spv", *dir, key.input_hash, key.features, key.cleanup);
     if (std::optional<std::vector<std::uint32_t>> hit = read_entry(path, key)) return std::move(*hit);
-    std::vector<std::uint32_t> specialized = specialize_spirv(spirv, features);
+    std::vector<std::uint32_t> specialized = specialize_spirv(spirv, features, cleanup);
     write_entry(path, key, specialized);
     return specialized;
 }

@@ -13,13 +13,15 @@
 #include <vector>
 
 #include "gpu/layout.hpp"
+#include "gpu/spirv_specialize.hpp"
 
 namespace lancer::gpu {
 
 // Where entries go; nullopt when the cache is off or no directory can be named.
 std::optional<std::string> spirv_cache_directory();
 
-// specialize_spirv(spirv, features), from the cache when an entry matches both exactly.
-std::vector<std::uint32_t> cached_specialization(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features);
+// specialize_spirv(spirv, features, cleanup), from the cache when an entry matches all three exactly.
+std::vector<std::uint32_t> cached_specialization(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
+                                                 SpirvCleanup cleanup = SpirvCleanup::dead_code);
 
 }  // namespace lancer::gpu

@@ -2,15 +2,41 @@
 
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include <spirv-tools/optimizer.hpp>
 
 namespace lancer::gpu {
 
-std::vector<std::uint32_t> specialize_spirv(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features) {
+namespace {
+
+// SPIRV-Tools' performance recipe (spirv-opt -O) without the passes measured to cost lavapipe's
+// JIT code: inlining and merge-return (lavapipe inlines itself; the merged returns become
+// loops), scalar replacement and if-conversion. `spirv-opt` with these flags reproduces it.
+const std::vector<std::string> kLocalVariablePasses = {
+    "--private-to-local", "--eliminate-local-single-block", "--eliminate-local-single-store",
+    "--eliminate-dead-code-aggressive", "--convert-local-access-chains", "--eliminate-local-single-block",
+    "--eliminate-local-single-store", "--eliminate-dead-code-aggressive", "--ssa-rewrite",
+    "--eliminate-dead-code-aggressive", "--ccp", "--eliminate-dead-branches", "--redundancy-elimination",
+    "--combine-access-chains", "--simplify-instructions", "--convert-local-access-chains",
+    "--eliminate-local-single-block", "--eliminate-local-single-store", "--eliminate-dead-code-aggressive",
+    "--ssa-rewrite", "--eliminate-dead-code-aggressive", "--vector-dce", "--eliminate-dead-inserts",
+    "--eliminate-dead-branches", "--simplify-instructions", "--copy-propagate-arrays", "--reduce-load-size",
+    "--eliminate-dead-code-aggressive", "--merge-blocks", "--redundancy-elimination", "--eliminate-dead-branches",
+    "--merge-blocks", "--simplify-instructions"};
+
+}  // namespace
+
+SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features, bool generated_code) {
+    return features.has_bezier || generated_code ? SpirvCleanup::dead_code : SpirvCleanup::local_variables;
+}
+
+std::vector<std::uint32_t> specialize_spirv(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
+                                            SpirvCleanup cleanup) {
     std::unordered_map<std::uint32_t, std::string> values;
     for (const FeatureSpec& f : kFeatures) values[f.id] = features.*f.member ? "true" : "false";
     spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_2);
+    optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
     optimizer.RegisterPass(spvtools::CreateSetSpecConstantDefaultValuePass(values))
         .RegisterPass(spvtools::CreateFreezeSpecConstantValuePass())
         .RegisterPass(spvtools::CreateFoldSpecConstantOpAndCompositePass());
@@ -20,6 +46,8 @@ std::vector<std::uint32_t> specialize_spirv(const std::vector<std::uint32_t>& sp
             .RegisterPass(spvtools::CreateAggressiveDCEPass())
             .RegisterPass(spvtools::CreateEliminateDeadFunctionsPass())
             .RegisterPass(spvtools::CreateBlockMergePass());
+    if (cleanup == SpirvCleanup::local_variables && !optimizer.RegisterPassesFromFlags(kLocalVariablePasses))
+        return spirv;
     // The module comes from glslang, and the driver (and the validation layer) check the result:
     // validating it here too would cost as much as the passes.
     spvtools::OptimizerOptions options;

@@ -11,9 +11,24 @@
 
 namespace lancer::gpu {
 
-// `spirv` with each LANCER_FEATURES constant frozen at its value in `features`, dead branches,
-// code and functions removed (SPIRV-Tools' optimizer). Returns `spirv` unchanged if the
-// optimizer fails (the driver then specialises it itself).
-std::vector<std::uint32_t> specialize_spirv(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features);
+// What SPIRV-Tools does to the module beyond freezing the constants.
+enum class SpirvCleanup : std::uint8_t {
+    dead_code,        // dead branches, code and functions removed
+    local_variables,  // also local variables turned into SSA values, loads and stores folded
+};
+
+// The cleanup that pays on lavapipe for a tracer with these features, `generated_code` saying
+// whether it includes expression surfaces' code (surface_codegen). Turning local variables into
+// SSA values before the driver sees the module takes a third off lavapipe's pipeline creation
+// (a warm start of `seed` 0.12 -> 0.08 s), but the JIT code of the Bezier clipper then runs
+// 7-9% slower and the parametric search 2-5% slower (docs/performance.md), so those keep the
+// dead-code cleanup alone.
+SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features, bool generated_code);
+
+// `spirv` with each LANCER_FEATURES constant frozen at its value in `features` and `cleanup`
+// done (SPIRV-Tools' optimizer). Returns `spirv` unchanged if the optimizer fails (the driver
+// then specialises it itself).
+std::vector<std::uint32_t> specialize_spirv(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
+                                            SpirvCleanup cleanup = SpirvCleanup::dead_code);
 
 }  // namespace lancer::gpu

@@ -56,6 +56,30 @@ TEST_F(SpirvCache, AMissIsSpecialisedAndStoredAHitIsReadBack) {
     EXPECT_EQ(entries().size(), 2u) << "one entry per feature set";
 }
 
+TEST_F(SpirvCache, EachCleanupHasItsOwnEntry) {
+    using gpu::SpirvCleanup;
+    const std::vector<std::uint32_t> dead_code = gpu::specialize_spirv(spirv_, features_, SpirvCleanup::dead_code);
+    const std::vector<std::uint32_t> local = gpu::specialize_spirv(spirv_, features_, SpirvCleanup::local_variables);
+    // What the cleanup is for: a module lavapipe's NIR passes go through faster.
+    EXPECT_LT(local.size(), dead_code.size() * 3 / 4) << "the local-variable passes did not shrink the module";
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_, SpirvCleanup::dead_code), dead_code);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_, SpirvCleanup::local_variables), local);
+    EXPECT_EQ(entries().size(), 2u);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_, SpirvCleanup::dead_code), dead_code);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_, SpirvCleanup::local_variables), local);
+}
+
+TEST(SpirvCleanupChoice, BezierAndExpressionSurfacesKeepTheDeadCodeCleanup) {
+    using gpu::SpirvCleanup;
+    gpu::ShaderFeatures spheres;
+    spheres.has_sphere = true;
+    EXPECT_EQ(gpu::spirv_cleanup_for(spheres, false), SpirvCleanup::local_variables);
+    EXPECT_EQ(gpu::spirv_cleanup_for(spheres, true), SpirvCleanup::dead_code);
+    gpu::ShaderFeatures patches = spheres;
+    patches.has_bezier = true;
+    EXPECT_EQ(gpu::spirv_cleanup_for(patches, false), SpirvCleanup::dead_code);
+}
+
 // A hit is not specialised again: an entry whose words were swapped for other (valid) ones, with
 // its checksum made to match, is what comes back.
 TEST_F(SpirvCache, AMatchingEntryIsUsedAsItIs) {
