@@ -4,6 +4,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
 namespace lancer::gpu {
@@ -11,21 +12,29 @@ namespace lancer::gpu {
 namespace {
 
 // SPIRV-Tools' performance recipe (spirv-opt -O) without the passes measured to cost lavapipe's
-// JIT code: inlining and merge-return (lavapipe inlines itself; the merged returns become
-// loops), scalar replacement and if-conversion. `spirv-opt` with these flags reproduces it.
+// JIT code (inlining and merge-return: lavapipe inlines itself, and the merged returns become
+// loops; scalar replacement; if-conversion) and without --simplify-instructions, whose folding
+// of OpCompositeInserts gave a struct of the wrong (structurally equal) type in SPIRV-Tools
+// 2022.4 (an invalid module for the BVH tracer). `spirv-opt` with these flags reproduces it.
 const std::vector<std::string> kLocalVariablePasses = {
     "--private-to-local", "--eliminate-local-single-block", "--eliminate-local-single-store",
     "--eliminate-dead-code-aggressive", "--convert-local-access-chains", "--eliminate-local-single-block",
     "--eliminate-local-single-store", "--eliminate-dead-code-aggressive", "--ssa-rewrite",
     "--eliminate-dead-code-aggressive", "--ccp", "--eliminate-dead-branches", "--redundancy-elimination",
-    "--combine-access-chains", "--simplify-instructions", "--convert-local-access-chains",
-    "--eliminate-local-single-block", "--eliminate-local-single-store", "--eliminate-dead-code-aggressive",
-    "--ssa-rewrite", "--eliminate-dead-code-aggressive", "--vector-dce", "--eliminate-dead-inserts",
-    "--eliminate-dead-branches", "--simplify-instructions", "--copy-propagate-arrays", "--reduce-load-size",
-    "--eliminate-dead-code-aggressive", "--merge-blocks", "--redundancy-elimination", "--eliminate-dead-branches",
-    "--merge-blocks", "--simplify-instructions"};
+    "--combine-access-chains", "--convert-local-access-chains", "--eliminate-local-single-block",
+    "--eliminate-local-single-store", "--eliminate-dead-code-aggressive", "--ssa-rewrite",
+    "--eliminate-dead-code-aggressive", "--vector-dce", "--eliminate-dead-inserts", "--eliminate-dead-branches",
+    "--copy-propagate-arrays", "--reduce-load-size", "--eliminate-dead-code-aggressive", "--merge-blocks",
+    "--redundancy-elimination", "--eliminate-dead-branches", "--merge-blocks"};
 
 }  // namespace
+
+std::string spirv_recipe(SpirvCleanup cleanup) {
+    std::string recipe = "specialise; 2 x (dead branches, dead code, dead functions, merge blocks)";
+    if (cleanup == SpirvCleanup::local_variables)
+        for (const std::string& flag : kLocalVariablePasses) recipe += " " + flag;
+    return recipe;
+}
 
 SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features, bool generated_code) {
     return features.has_bezier || generated_code ? SpirvCleanup::dead_code : SpirvCleanup::local_variables;
@@ -54,6 +63,11 @@ std::vector<std::uint32_t> specialize_spirv(const std::vector<std::uint32_t>& sp
     options.set_run_validator(false);
     std::vector<std::uint32_t> out;
     if (!optimizer.Run(spirv.data(), spirv.size(), &out, options)) return spirv;
+    // The longer recipe is checked: an optimizer bug must cost start-up time, not a driver crash.
+    if (cleanup != SpirvCleanup::dead_code) {
+        spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_2);
+        if (!tools.Validate(out)) return specialize_spirv(spirv, features, SpirvCleanup::dead_code);
+    }
     return out;
 }
 

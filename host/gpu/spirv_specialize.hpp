@@ -5,6 +5,7 @@
 // all, went through its NIR passes for every pipeline: 1.2 s of start-up for a sphere scene
 // on a 2-core machine, against 0.2 s for the specialised module (docs/performance.md).
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "gpu/layout.hpp"
@@ -24,6 +25,9 @@ enum class SpirvCleanup : std::uint8_t {
 // 7-9% slower and the parametric search 2-5% slower (docs/performance.md), so those keep the
 // dead-code cleanup alone.
 SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features, bool generated_code);
+
+// The passes `cleanup` runs, in words and spirv-opt flags: what a cached module depends on.
+std::string spirv_recipe(SpirvCleanup cleanup);
 
 // `spirv` with each LANCER_FEATURES constant frozen at its value in `features` and `cleanup`
 // done (SPIRV-Tools' optimizer). Returns `spirv` unchanged if the optimizer fails (the driver

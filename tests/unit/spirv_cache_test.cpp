@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/embedded_shaders.hpp"
+#include "gpu/shader_compiler.hpp"
 #include "gpu/spirv_cache.hpp"
 #include "gpu/spirv_specialize.hpp"
 #include "support/test_support.hpp"
@@ -150,6 +151,73 @@ TEST_F(SpirvCache, SwitchedOffOrUnwritableItStillSpecialises) {
     std::ofstream(file) << "not a directory";
     ::setenv("LANCER_CACHE_DIR", (file + "/cache").c_str(), 1);
     EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+}
+
+// A tree of two files: main.comp includes value.glsl, whose constant `value` the test edits.
+struct TwoFileTree {
+    std::string value = "1.0";
+    int lookups = 0;
+    gpu::ShaderTree tree() {
+        return [this](const std::string& name) -> std::optional<std::string> {
+            ++lookups;
+            if (name == "main.comp")
+                return "#version 450\n#extension GL_GOOGLE_include_directive : require\n#include \"value.glsl\"\n"
+                       "layout(local_size_x = 1) in;\nlayout(set = 0, binding = 0) buffer Out { float x; };\n"
+                       "void main() { x = VALUE; }\n";
+            if (name == "value.glsl") return "#define VALUE " + value + "\n";
+            return std::nullopt;
+        };
+    }
+};
+
+TEST_F(SpirvCache, ACompileIsReusedWhileItsIncludedFilesAreUnchanged) {
+    TwoFileTree files;
+    const std::vector<std::uint32_t> one = gpu::compile_compute(files.tree(), "main.comp");
+    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), one);
+    ASSERT_EQ(entries().size(), 1u);
+    files.lookups = 0;
+    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), one);
+    // The entry point for the key and for the manifest, its include for the manifest; a compile
+    // would read both once more.
+    EXPECT_EQ(files.lookups, 3) << "a hit reads the files, and compiles nothing";
+
+    files.value = "2.0";  // an included file changed: compiled again, the new module kept
+    const std::vector<std::uint32_t> two = gpu::compile_compute(files.tree(), "main.comp");
+    ASSERT_NE(two, one);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), two);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), two);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp", {{"UNUSED", "1"}}),
+              gpu::compile_compute(files.tree(), "main.comp", {{"UNUSED", "1"}}))
+        << "defines are part of the key";
+}
+
+TEST_F(SpirvCache, AFailedCompileIsNotKeptAndADamagedEntryIsCompiledAgain) {
+    TwoFileTree files;
+    files.value = "not_declared";
+    EXPECT_THROW(gpu::cached_compile(files.tree(), "main.comp"), gpu::ShaderCompileError);
+    EXPECT_TRUE(entries().empty());
+
+    files.value = "3.0";
+    const std::vector<std::uint32_t> fresh = gpu::compile_compute(files.tree(), "main.comp");
+    gpu::cached_compile(files.tree(), "main.comp");
+    ASSERT_EQ(entries().size(), 1u);
+    const fs::path entry = entries().front();
+    fs::resize_file(entry, fs::file_size(entry) - 4);  // torn
+    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), fresh);
+    {
+        std::fstream damaged(entry, std::ios::in | std::ios::out | std::ios::binary);
+        damaged.seekp(std::streamoff(fs::file_size(entry) - 4));
+        damaged.write("\x7f\x7f\x7f\x7f", 4);  // a word flipped
+    }
+    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), fresh);
+}
+
+TEST_F(SpirvCache, SwitchedOffItStillCompiles) {
+    TwoFileTree files;
+    ::setenv("LANCER_CACHE_DISABLE", "1", 1);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), gpu::compile_compute(files.tree(), "main.comp"));
+    EXPECT_TRUE(entries().empty());
+    ::unsetenv("LANCER_CACHE_DISABLE");
 }
 
 }  // namespace
