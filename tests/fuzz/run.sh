@@ -6,6 +6,7 @@
 #
 #   tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     (default 60 s; scene expression patch)
 #
+# LANCER_FUZZ_TIMEOUT (default 10) is the time one input may take before it counts as a hang.
 # LANCER_FUZZ_SEED fixes libFuzzer's random seed (CI uses 1, so that a red run can be replayed
 # mutation for mutation); unset, every run explores from a new seed.
 #
@@ -20,6 +21,7 @@ targets=("$@")
 ((${#targets[@]})) || targets=(scene expression patch)
 build="${LANCER_FUZZ_BUILD:-build-fuzz}"
 seed="${LANCER_FUZZ_SEED:-0}"  # 0: libFuzzer picks one
+timeout="${LANCER_FUZZ_TIMEOUT:-10}"  # seconds per input; more on a machine busy with other work
 
 # The sanitizers' options and leak suppressions are compiled into the fuzzers
 # (cmake/sanitizers.cmake); stack traces need llvm-symbolizer (package llvm).
@@ -34,9 +36,9 @@ for target in "${targets[@]}"; do
   mkdir -p "$work" "$artifacts"
   log="$build/fuzz-$target.log"
   echo "fuzz: $target for ${seconds} s" >&2
-  # -timeout: one input may take at most 10 s (the slowest legitimate ones seen take about 4 s
+  # -timeout: one input may take at most 10 s by default (the slowest legitimate ones seen take about 4 s
   # under ASan alone: an implicit surface of 2,000 characters whose roots the CPU reference finds); -rss_limit_mb: 2 GiB of memory at most.
-  if "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len="${max_len[$target]}" \
+  if "$binary" -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=2048 -max_len="${max_len[$target]}" \
        -dict="tests/fuzz/$target.dict" -seed="$seed" -artifact_prefix="$artifacts/" -print_final_stats=1 \
        "$work" "tests/fuzz/corpus/$target" "tests/fuzz/regressions/$target" >"$log" 2>&1; then
     runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
