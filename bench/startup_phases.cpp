@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
     }
     std::printf("SPIR-V            %8zu words\n", spirv.size());
     gpu::ShaderFeatures features = packed.features;
-    // As lancer chooses (its expression surfaces' code is not in this module, so never "generated").
+    // As lancer chooses (parametric surfaces' code is not in this module).
     const gpu::SpirvCleanup cleanup = gpu::spirv_cleanup_for(features, false);
     t = Phase();
     std::size_t specialized = gpu::specialize_spirv(spirv, features, cleanup).size();

@@ -36,8 +36,8 @@ std::string spirv_recipe(SpirvCleanup cleanup) {
     return recipe;
 }
 
-SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features, bool generated_code) {
-    return features.has_bezier || generated_code ? SpirvCleanup::dead_code : SpirvCleanup::local_variables;
+SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features, bool parametric) {
+    return features.has_bezier || parametric ? SpirvCleanup::dead_code : SpirvCleanup::local_variables;
 }
 
 std::vector<std::uint32_t> specialize_spirv(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,

@@ -70,7 +70,7 @@ TEST_F(SpirvCache, EachCleanupHasItsOwnEntry) {
     EXPECT_EQ(gpu::cached_specialization(spirv_, features_, SpirvCleanup::local_variables), local);
 }
 
-TEST(SpirvCleanupChoice, BezierAndExpressionSurfacesKeepTheDeadCodeCleanup) {
+TEST(SpirvCleanupChoice, BezierAndParametricSurfacesKeepTheDeadCodeCleanup) {
     using gpu::SpirvCleanup;
     gpu::ShaderFeatures spheres;
     spheres.has_sphere = true;
