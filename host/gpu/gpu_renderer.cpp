@@ -120,7 +120,7 @@ void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated, bool photons
     auto build = [&](const char* entry) {
         return generated.empty() && base_is_embedded_
                    ? gpu::embedded_spirv(entry)
-                   : gpu::cached_compile(gpu::with_files(base_tree_, generated), entry, {}, display_root_);
+                   : gpu::cached_compile(base_tree_, generated, entry, {}, display_root_);
     };
     if (generated != generated_) {
         std::vector<std::uint32_t> spirv = build(gpu::kTraceShader);

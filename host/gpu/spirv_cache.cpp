@@ -178,17 +178,20 @@ std::optional<std::string> spirv_cache_directory() {
     return std::nullopt;
 }
 
-std::vector<std::uint32_t> cached_compile(const ShaderTree& tree, const std::string& entry,
-                                          const std::vector<ShaderDefine>& defines, const std::string& display_root) {
+std::vector<std::uint32_t> cached_compile(const ShaderTree& base, const ShaderFiles& generated,
+                                          const std::string& entry, const std::vector<ShaderDefine>& defines,
+                                          const std::string& display_root) {
+    const ShaderTree tree = with_files(base, generated);
     const std::optional<std::string> dir = spirv_cache_directory();
     if (!dir) return compile_compute(tree, entry, defines, display_root);
-    // The entry point's text is in the key, so that an edit or a scene's generated code (which
-    // stands in for files of the tree) gets an entry of its own rather than replacing another's;
-    // the included files are checked against the entry's manifest.
+    // The generated files and the entry point's text are in the key, so that each scene's code
+    // and each edit of the entry point gets an entry of its own rather than replacing another's;
+    // the files it includes are checked against the entry's manifest.
     std::uint64_t key = hash_text(fmt::format("glslang {}.{}.{}{}", GLSLANG_VERSION_MAJOR, GLSLANG_VERSION_MINOR,
                                               GLSLANG_VERSION_PATCH, GLSLANG_VERSION_FLAVOR));
     key = hash_text(entry, key);
     for (const ShaderDefine& d : defines) key = hash_text(d.value, hash_text(d.name, key));
+    for (const auto& [name, contents] : generated) key = hash_text(contents, hash_text(name, key));
     if (std::optional<std::string> text = tree(entry)) key = hash_text(*text, key);
     const std::string path = fmt::format("{}/glsl-{:016x}.spv", *dir, key);
     if (std::optional<std::vector<std::uint32_t>> hit = read_compiled(path, key, tree)) return std::move(*hit);

@@ -22,12 +22,12 @@ namespace lancer::gpu {
 // Where entries go; nullopt when the cache is off or no directory can be named.
 std::optional<std::string> spirv_cache_directory();
 
-// compile_compute(tree, entry, defines, display_root), from the cache when an entry of the same
-// compiler, entry point text and defines was compiled from files that all read the same today
-// (every name the compile looked up: included files, and files it did not find). A compile
-// that fails is not kept.
-std::vector<std::uint32_t> cached_compile(const ShaderTree& tree, const std::string& entry,
-                                          const std::vector<ShaderDefine>& defines = {},
+// compile_compute(with_files(base, generated), entry, defines, display_root), from the cache
+// when an entry of the same compiler, generated files, entry point text and defines was compiled
+// from files that all read the same today (every name the compile looked up: included files,
+// and files it did not find). A compile that fails is not kept.
+std::vector<std::uint32_t> cached_compile(const ShaderTree& base, const ShaderFiles& generated,
+                                          const std::string& entry, const std::vector<ShaderDefine>& defines = {},
                                           const std::string& display_root = "");
 
 // specialize_spirv(spirv, features, cleanup), from the cache when an entry matches all three exactly.

@@ -173,10 +173,10 @@ struct TwoFileTree {
 TEST_F(SpirvCache, ACompileIsReusedWhileItsIncludedFilesAreUnchanged) {
     TwoFileTree files;
     const std::vector<std::uint32_t> one = gpu::compile_compute(files.tree(), "main.comp");
-    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), one);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp"), one);
     ASSERT_EQ(entries().size(), 1u);
     files.lookups = 0;
-    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), one);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp"), one);
     // The entry point for the key and for the manifest, its include for the manifest; a compile
     // would read both once more.
     EXPECT_EQ(files.lookups, 3) << "a hit reads the files, and compiles nothing";
@@ -184,38 +184,55 @@ TEST_F(SpirvCache, ACompileIsReusedWhileItsIncludedFilesAreUnchanged) {
     files.value = "2.0";  // an included file changed: compiled again, the new module kept
     const std::vector<std::uint32_t> two = gpu::compile_compute(files.tree(), "main.comp");
     ASSERT_NE(two, one);
-    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), two);
-    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), two);
-    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp", {{"UNUSED", "1"}}),
+    EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp"), two);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp"), two);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp", {{"UNUSED", "1"}}),
               gpu::compile_compute(files.tree(), "main.comp", {{"UNUSED", "1"}}))
         << "defines are part of the key";
+}
+
+TEST_F(SpirvCache, EachSetOfGeneratedFilesKeepsItsOwnEntry) {
+    // Two scenes' generated code standing in for the same included file, rendered in turn: each
+    // compile is kept, neither replaces the other.
+    TwoFileTree files;
+    const gpu::ShaderFiles scene_a{{"value.glsl", "#define VALUE 4.0\n"}}, scene_b{{"value.glsl", "#define VALUE 5.0\n"}};
+    const std::vector<std::uint32_t> a = gpu::compile_compute(gpu::with_files(files.tree(), scene_a), "main.comp");
+    const std::vector<std::uint32_t> b = gpu::compile_compute(gpu::with_files(files.tree(), scene_b), "main.comp");
+    ASSERT_NE(a, b);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), scene_a, "main.comp"), a);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), scene_b, "main.comp"), b);
+    EXPECT_EQ(entries().size(), 2u);
+    files.lookups = 0;
+    EXPECT_EQ(gpu::cached_compile(files.tree(), scene_a, "main.comp"), a);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), scene_b, "main.comp"), b);
+    EXPECT_EQ(files.lookups, 4) << "both were hits: the entry point twice each, the generated file not from the tree";
 }
 
 TEST_F(SpirvCache, AFailedCompileIsNotKeptAndADamagedEntryIsCompiledAgain) {
     TwoFileTree files;
     files.value = "not_declared";
-    EXPECT_THROW(gpu::cached_compile(files.tree(), "main.comp"), gpu::ShaderCompileError);
+    EXPECT_THROW(gpu::cached_compile(files.tree(), {}, "main.comp"), gpu::ShaderCompileError);
     EXPECT_TRUE(entries().empty());
 
     files.value = "3.0";
     const std::vector<std::uint32_t> fresh = gpu::compile_compute(files.tree(), "main.comp");
-    gpu::cached_compile(files.tree(), "main.comp");
+    gpu::cached_compile(files.tree(), {}, "main.comp");
     ASSERT_EQ(entries().size(), 1u);
     const fs::path entry = entries().front();
     fs::resize_file(entry, fs::file_size(entry) - 4);  // torn
-    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), fresh);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp"), fresh);
     {
         std::fstream damaged(entry, std::ios::in | std::ios::out | std::ios::binary);
         damaged.seekp(std::streamoff(fs::file_size(entry) - 4));
         damaged.write("\x7f\x7f\x7f\x7f", 4);  // a word flipped
     }
-    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), fresh);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp"), fresh);
 }
 
 TEST_F(SpirvCache, SwitchedOffItStillCompiles) {
     TwoFileTree files;
     ::setenv("LANCER_CACHE_DISABLE", "1", 1);
-    EXPECT_EQ(gpu::cached_compile(files.tree(), "main.comp"), gpu::compile_compute(files.tree(), "main.comp"));
+    EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp"), gpu::compile_compute(files.tree(), "main.comp"));
     EXPECT_TRUE(entries().empty());
     ::unsetenv("LANCER_CACHE_DISABLE");
 }
