@@ -17,8 +17,8 @@ struct Ray {
 // its offsets. 1e-7 of that is far above the error of every hit the reference computes (its
 // certified roots are accurate to about 1e-10 of the surface's size, its analytic ones to
 // double's rounding), and below the GPU's offsets (its hits' float error bounds,
-// shaders/common.glsl): the two backends then shadow the same points, edges included, and a
-// sheet thinner than the old 1e-4 is not stepped over.
+// shaders/common.glsl): the two backends then shadow the same points, edges included, and thin
+// sheets (Dini's surface far from the origin) are not stepped over.
 inline double ray_offset(const dvec3& p, const dvec3& origin) {
     const dvec3 d = p - origin;
     return 1e-7 * std::max({1.0, std::abs(d.x), std::abs(d.y), std::abs(d.z)});
