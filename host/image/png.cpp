@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <memory>
 
 #include <fcntl.h>
@@ -13,11 +14,43 @@
 #include "image/image.hpp"
 #include "image/image_file.hpp"
 
+#include <libdeflate.h>
+
+namespace lancer {
+namespace {
+// stb_image_write's own deflate takes 60 of the 75 ms that a 1280x720 picture's PNG cost, a
+// noticeable part of a render of a second; libdeflate (level 6) takes 15. Files come out 2-7%
+// larger than stb's level 8.
+unsigned char* deflate_for_png(unsigned char* data, int size, int* out_size, int /*stb_quality*/);
+}  // namespace
+}  // namespace lancer
+
+#define STBIW_ZLIB_COMPRESS lancer::deflate_for_png
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
 namespace lancer {
 namespace {
+
+unsigned char* deflate_for_png(unsigned char* data, int size, int* out_size, int /*stb_quality*/) {
+    std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)> compressor(
+        libdeflate_alloc_compressor(6), &libdeflate_free_compressor);
+    if (!compressor) return nullptr;
+    std::size_t bound = libdeflate_zlib_compress_bound(compressor.get(), static_cast<std::size_t>(size));
+    auto* out = static_cast<unsigned char*>(STBIW_MALLOC(bound));  // stb frees it with STBIW_FREE
+    if (!out) return nullptr;
+    std::size_t written = libdeflate_zlib_compress(compressor.get(), data, static_cast<std::size_t>(size), out, bound);
+    if (written == 0 || written > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+        STBIW_FREE(out);
+        return nullptr;
+    }
+    *out_size = static_cast<int>(written);
+    return out;
+}
+
+// Every row Paeth-filtered: stb's per-row choice (each row filtered five ways) costs a third of
+// the encoding for files 0-5% smaller. Set once, before any thread writes a PNG.
+[[maybe_unused]] const bool paeth_rows = (stbi_write_force_png_filter = 4, true);
 
 std::string os_error(const std::string& what, const std::string& path) {
     return what + " '" + path + "': " + std::strerror(errno);
