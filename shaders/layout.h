@@ -31,6 +31,9 @@ using uint = std::uint32_t;
 // Workgroup shape: 8x8 = 64 invocations (lavapipe: 64-256 all within noise, 4x4 halves speed).
 LANCER_CONST WORKGROUP_X = 8;
 LANCER_CONST WORKGROUP_Y = 8;
+#ifdef __cplusplus
+static_assert(WORKGROUP_X == 8 && WORKGROUP_Y == 8, "trace.comp's z_order_position orders an 8 x 8 workgroup");
+#endif
 
 // Primitive::type values. Each has one GLSL file in shaders/shapes/ and one C++ file in
 // host/cpu/shapes/ with the same name.
