@@ -51,22 +51,26 @@ void add_crossing(float xa, float ea, float xb, float eb, inout vec2 range) {
 }
 
 // Where the convex hull of the points (k/3, lo[k]) and (k/3, hi[k]) meets the axis e = 0, as
-// an interval of [0, 1] (empty when x > y). The hull meets the axis in the span of all
-// crossings of segments between pairs of its points. Written without a loop over pairs: a
-// loop whose inner bound varies is not unrolled, and every iteration counts against
-// lavapipe's per-invocation loop limit (see loop_limit_reached in trace.comp).
+// an interval of [0, 1] (empty when x > y). Since lo[k] <= hi[k] at each x, the hull's boundary
+// is the lower hull of the lo points, the upper hull of the hi points and the verticals at
+// x = 0 and 1: the hull meets the axis in the span of the crossings of lo-lo and hi-hi segments
+// and of those two verticals (segments inside the hull cross within that span, so the lo-hi
+// pairs and the inner verticals are left out: the teapot 7% faster, the same picture).
+// Written without a loop over pairs: a loop whose inner bound varies is not unrolled, and
+// every iteration counts against lavapipe's per-invocation loop limit (see loop_limit_reached
+// in trace.comp).
 vec2 hull_axis_interval(vec4 lo, vec4 hi) {
     vec2 range = vec2(1.0, 0.0);
     [[unroll]] for (int i = 0; i < 4; ++i) {
         float xi = float(i) / 3.0;
-        add_crossing(xi, lo[i], xi, hi[i], range);  // the vertical segment, and lo[i] == 0
-        if (hi[i] == 0.0) range = vec2(min(range.x, xi), max(range.y, xi));
+        if (i == 0 || i == 3) {
+            add_crossing(xi, lo[i], xi, hi[i], range);  // the vertical segment, and lo[i] == 0
+            if (hi[i] == 0.0) range = vec2(min(range.x, xi), max(range.y, xi));
+        }
         [[unroll]] for (int j = 0; j < 4; ++j) {
             if (j <= i) continue;
             float xj = float(j) / 3.0;
             add_crossing(xi, lo[i], xj, lo[j], range);
-            add_crossing(xi, lo[i], xj, hi[j], range);
-            add_crossing(xi, hi[i], xj, lo[j], range);
             add_crossing(xi, hi[i], xj, hi[j], range);
         }
     }
