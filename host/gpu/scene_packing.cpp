@@ -77,7 +77,7 @@ struct PrimitivePacker {
         info.inverse2 = vec4(float(inv[0][2]), float(inv[1][2]), float(inv[2][2]), float(inv[3][2]));
         info.domain = vec4(float(p.surface.u0), float(p.surface.u1), float(p.surface.v0), float(p.surface.v1));
         out.surfaces.push_back(info);
-        for (const auto& cell : surface::subdivide_surface(p.surface)) {
+        for (const auto& cell : *surface::surface_cells(p.surface)) {
             // Bounds rounded outward to float; an unbounded one becomes float's largest value,
             // which the search treats as no bound (the packed arrays hold only finite floats).
             auto bound = [](double x, bool upper) {

@@ -95,11 +95,12 @@ Shape read_parametric(TableReader& t) {
         }
     }
     s.to_world = read_transform(t);
-    std::vector<surface::SurfaceCell> cells;
+    std::shared_ptr<const std::vector<surface::SurfaceCell>> cells;
     try {
         // The loader proves the surface can be cut into the GPU's cells (and bounds it by them);
-        // the GPU cuts it again when it packs the scene, so the scene does not carry them.
-        cells = surface::subdivide_surface(s);
+        // the scene does not carry them: the GPU's packer asks again, and surface_cells keeps
+        // them for it.
+        cells = surface::surface_cells(s);
     } catch (const surface::FloatEvaluationError& e) {
         throw SceneError(column_in_string(*t.node(axes[e.expression]), t.file(), e.column), e.what());
     } catch (const UserError& e) {
@@ -110,7 +111,7 @@ Shape read_parametric(TableReader& t) {
         throw SceneError(t.location(), std::string("parametric surface: ") + e.what());
     }
     dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-    for (const auto& cell : cells) {
+    for (const auto& cell : *cells) {
         lo = glm::min(lo, cell.lo);
         hi = glm::max(hi, cell.hi);
     }

@@ -4,6 +4,7 @@
 // (through a BVH) and runs Newton from seeds inside each cell it enters, so cells must be small
 // enough for Newton to converge from their seeds, and their boxes tight.
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -48,5 +49,13 @@ struct SurfaceCell {
 // Throws UserError when more than max_cells are needed, or when a cell at the depth limit still
 // has an unbounded box (the surface goes to infinity inside the domain).
 std::vector<SurfaceCell> subdivide_surface(const ParametricSurface& surface, const CellOptions& options = {});
+
+// subdivide_surface's cells, kept for the surfaces asked for last: the loader cuts each surface
+// to prove its bounds and the GPU's packer cuts it again (the scene keeps only the bounds), so
+// the second cut, and a `watch` reload of an unchanged surface, is a lookup. Keyed by everything
+// the cells depend on (the expressions' nodes without their source columns, the domain, the
+// transform and the options, bit for bit). Failures are not kept: each call throws anew.
+std::shared_ptr<const std::vector<SurfaceCell>> surface_cells(const ParametricSurface& surface,
+                                                              const CellOptions& options = {});
 
 }  // namespace lancer::surface

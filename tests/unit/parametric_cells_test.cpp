@@ -238,5 +238,55 @@ TEST(ParametricCells, BadDomainsAreUserErrors) {
     EXPECT_THROW(subdivide_surface(s), UserError);
 }
 
+// The loader and the GPU's packer both ask for a surface's cells: the second asks for a surface
+// built anew from the same text, and must get the cells the first computed, not cut them again.
+TEST(ParametricCells, AnEqualSurfaceGetsTheCellsCutBefore) {
+    const ParametricSurface torus = test::make_surface(test::surface_spec("torus"));
+    auto first = surface_cells(torus);
+    auto again = surface_cells(test::make_surface(test::surface_spec("torus")));
+    EXPECT_EQ(first.get(), again.get());
+    const std::vector<SurfaceCell> cut = subdivide_surface(torus);
+    ASSERT_EQ(first->size(), cut.size());
+    for (std::size_t i = 0; i < cut.size(); ++i) {
+        EXPECT_EQ(first->at(i).lo, cut[i].lo);
+        EXPECT_EQ(first->at(i).hi, cut[i].hi);
+    }
+}
+
+// Anything the cells depend on makes another entry: a constant, the domain, the transform, the
+// options.
+TEST(ParametricCells, ASurfaceThatDiffersGetsItsOwnCells) {
+    const ParametricSurface torus = test::make_surface(test::surface_spec("torus"));
+    auto base = surface_cells(torus);
+
+    ParametricSurface constant = test::make_surface(test::surface_spec("torus"));
+    auto it = std::find_if(constant.x.nodes.begin(), constant.x.nodes.end(),
+                           [](const Node& n) { return n.op == Op::Constant && n.value != 0.0; });
+    ASSERT_NE(it, constant.x.nodes.end());
+    it->value = std::nextafter(it->value, 1e300);  // one ulp
+    auto changed = surface_cells(constant);
+    EXPECT_NE(changed.get(), base.get());
+
+    ParametricSurface domain = test::make_surface(test::surface_spec("torus"));
+    domain.u1 = 0.5 * (domain.u0 + domain.u1);
+    auto half = surface_cells(domain);
+    EXPECT_NE(half.get(), base.get());
+    EXPECT_LT(half->size(), base->size());
+
+    ParametricSurface moved = test::make_surface(test::surface_spec("torus"));
+    moved.to_world = glm::translate(glm::dmat4(1.0), glm::dvec3(5.0, 0.0, 0.0));
+    auto shifted = surface_cells(moved);
+    ASSERT_NE(shifted.get(), base.get());
+    EXPECT_EQ(shifted->front().lo.x, subdivide_surface(moved).front().lo.x);
+    EXPECT_GT(shifted->front().lo.x, base->front().lo.x + 4.0);
+
+    CellOptions coarse;
+    coarse.max_size_fraction = 1.0 / 8.0;
+    auto fewer = surface_cells(torus, coarse);
+    EXPECT_NE(fewer.get(), base.get());
+    EXPECT_LT(fewer->size(), base->size());
+    EXPECT_EQ(surface_cells(torus).get(), base.get());  // still kept
+}
+
 }  // namespace
 }  // namespace lancer::surface
