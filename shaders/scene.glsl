@@ -175,11 +175,22 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, out Nearest be
             uint near_child = n.first;
             uint far_child = n.first + 1u;
             float limit = reach(best);
-            float t_near = box_entry(node_at(near_child).lo.xyz, node_at(near_child).hi.xyz, ray.origin, inv_dir, limit);
-            float t_far = box_entry(node_at(far_child).lo.xyz, node_at(far_child).hi.xyz, ray.origin, inv_dir, limit);
-            if (t_far < t_near) {
+            vec3 lo_a = node_at(near_child).lo.xyz, hi_a = node_at(near_child).hi.xyz;
+            vec3 lo_b = node_at(far_child).lo.xyz, hi_b = node_at(far_child).hi.xyz;
+            float t_near = box_entry(lo_a, hi_a, ray.origin, inv_dir, limit);
+            float t_far = box_entry(lo_b, hi_b, ray.origin, inv_dir, limit);
+            // The child whose centre comes first along the ray first, rather than the one whose
+            // box the ray enters first: rays of neighbouring pixels then agree on the order, and
+            // a SIMD group's lanes stay on one path (`many` 3.5%, the teapot 2.5% faster on
+            // lavapipe). Which hit is nearest does not depend on the order (ties go by key).
+            if (dot((lo_b + hi_b) - (lo_a + hi_a), ray.dir) < 0.0) {
                 uint c = near_child; near_child = far_child; far_child = c;
                 float f = t_near; t_near = t_far; t_far = f;
+            }
+            if (t_near == INFINITY) {  // the ray misses the first: the second alone, if it enters it
+                near_child = far_child;
+                t_near = t_far;
+                t_far = INFINITY;
             }
             visit = t_near != INFINITY;
             if (visit) {
