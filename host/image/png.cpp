@@ -6,6 +6,7 @@
 #include <memory>
 
 #include <fcntl.h>
+#include <libdeflate.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -13,8 +14,6 @@
 #include "core/temporary_name.hpp"
 #include "image/image.hpp"
 #include "image/image_file.hpp"
-
-#include <libdeflate.h>
 
 namespace lancer {
 namespace {
