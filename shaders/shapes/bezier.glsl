@@ -61,12 +61,14 @@ void add_crossing(float xa, float ea, float xb, float eb, inout vec2 range) {
 // in trace.comp).
 vec2 hull_axis_interval(vec4 lo, vec4 hi) {
     vec2 range = vec2(1.0, 0.0);
+    // The verticals at x = 0 and 1 (add_crossing also takes lo == 0; hi == 0 is taken here).
+    add_crossing(0.0, lo[0], 0.0, hi[0], range);
+    add_crossing(1.0, lo[3], 1.0, hi[3], range);
+    if (hi[0] == 0.0) range = vec2(min(range.x, 0.0), max(range.y, 0.0));
+    if (hi[3] == 0.0) range = vec2(min(range.x, 1.0), max(range.y, 1.0));
+    // The lower and the upper hull's edges, among the lo-lo and hi-hi segments.
     [[unroll]] for (int i = 0; i < 4; ++i) {
         float xi = float(i) / 3.0;
-        if (i == 0 || i == 3) {
-            add_crossing(xi, lo[i], xi, hi[i], range);  // the vertical segment, and lo[i] == 0
-            if (hi[i] == 0.0) range = vec2(min(range.x, xi), max(range.y, xi));
-        }
         [[unroll]] for (int j = 0; j < 4; ++j) {
             if (j <= i) continue;
             float xj = float(j) / 3.0;
