@@ -416,7 +416,8 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(SCENE_HAS_RECTANGLE, 13, has_rectangle, true)                                                  \
     X(SCENE_HAS_BOX, 14, has_box, true)                                                              \
     X(SCENE_HAS_MICROFACET, 15, has_microfacet, true) /* a material with model = "microfacet" */      \
-    X(SCENE_HAS_PHOTONS, 16, has_photons, true)     /* photon mapping: gather at diffuse hits */
+    X(SCENE_HAS_PHOTONS, 16, has_photons, true)     /* photon mapping: gather at diffuse hits */ \
+    X(SCENE_HAS_RATIONAL_PATCHES, 17, has_rational_patches, true) /* a Bezier leaf's weights not all 1 */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

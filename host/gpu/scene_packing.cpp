@@ -147,11 +147,16 @@ struct PrimitivePacker {
                     // A rational patch is the same for weights scaled by any positive factor, but
                     // float is not: weights of 1e-50 would all be 0. Scaled (by a power of two,
                     // exactly) so that the largest is in [1, 2): weights whose largest is 1 stay.
+                    // Equal weights become 1: a polynomial patch, which the GPU clips without
+                    // the homogeneous coordinate (SCENE_HAS_RATIONAL_PATCHES).
+                    const auto [lightest, heaviest] = std::minmax_element(leaf.weights.begin(), leaf.weights.end());
                     int exponent = 0;
-                    std::frexp(*std::max_element(leaf.weights.begin(), leaf.weights.end()), &exponent);
+                    std::frexp(*heaviest, &exponent);
                     PatchLeaf g{};
-                    for (int k = 0; k < 16; ++k)
-                        g.points[k] = v4(leaf.points[k] - origin, std::ldexp(leaf.weights[k], 1 - exponent));
+                    for (int k = 0; k < 16; ++k) {
+                        double w = *lightest == *heaviest ? 1.0 : std::ldexp(leaf.weights[k], 1 - exponent);
+                        g.points[k] = v4(leaf.points[k] - origin, w);
+                    }
                     g.origin = v4(origin, double(i));
                     g.domain = vec4(float(u0), float(u1), float(v0), float(v1));
                     auto index = static_cast<uint>(out.patches.size());
@@ -406,6 +411,8 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         f.has_box |= p.type == SHAPE_BOX;
     }
     f.has_bezier = !packed.patches.empty();
+    for (const PatchLeaf& leaf : packed.patches)
+        for (const vec4& point : leaf.points) f.has_rational_patches |= point.w != 1.0f;
     f.has_bvh = !packed.nodes.empty();
     f.has_textures = !packed.textures.empty();
     f.has_patterns = !packed.patterns.empty();

@@ -1,12 +1,14 @@
 // The GPU computes in float, the reference in double. Where float cannot follow (a
 // constant beyond float's range, weights below it), the GPU must either draw what the reference
 // draws or the scene must be refused at load; never a different picture without a word.
+#include <algorithm>
 #include <string>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "gpu/scene_packing.hpp"
 #include "scene/load_scene.hpp"
 #include "support/test_support.hpp"
 
@@ -52,6 +54,25 @@ TEST(FloatRange, TinyRationalWeightsRenderOnTheGpuAsTheReferenceDoes) {
     Rgb8Image gpu = to_srgb8(test::render_on(test::Backend::Gpu, tiny));
     test::expect_same_picture("tiny-weights-gpu-vs-cpu", gpu, to_srgb8(test::render_on(test::Backend::Cpu, tiny)));
     test::expect_same_picture("tiny-weights-vs-unit-weights", gpu, to_srgb8(test::render_on(test::Backend::Gpu, unit)));
+}
+
+// Equal weights are a polynomial patch, whatever their value: packed with weight 1, so that the
+// GPU clips it without the homogeneous coordinate; unequal weights keep it (and their ratios).
+TEST(FloatRange, EqualWeightsArePackedAsAPolynomialPatch) {
+    for (const char* w : {"1e-50", "1", "3.5"}) {
+        gpu::PackedScene packed = gpu::pack_scene(test::scene_from_text(std::string(kStage) + bulging_patch(w)));
+        EXPECT_FALSE(packed.features.has_rational_patches) << w;
+        for (const gpu::PatchLeaf& leaf : packed.patches)
+            for (const gpu::vec4& point : leaf.points) ASSERT_EQ(point.w, 1.0f) << w;
+    }
+    std::string varied = bulging_patch("1");
+    varied.replace(varied.rfind("1]"), 2, "3]");  // the last weight 3: a rational patch
+    gpu::PackedScene packed = gpu::pack_scene(test::scene_from_text(std::string(kStage) + varied));
+    EXPECT_TRUE(packed.features.has_rational_patches);
+    float heaviest = 0.0f;
+    for (const gpu::PatchLeaf& leaf : packed.patches)
+        for (const gpu::vec4& point : leaf.points) heaviest = std::max(heaviest, point.w);
+    EXPECT_GT(heaviest, 1.0f);
 }
 
 // "u*1e40/1e40" is u in double and NaN in float: refused, at the constant.
