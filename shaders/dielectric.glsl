@@ -82,6 +82,12 @@ vec3 refraction(vec3 d, vec3 n, float eta, float cos_i, float cos_t) {
 
 const uint MAX_SHADOW_CROSSINGS = 16u;
 
+// The primitive that last blocked a shadow ray to each of the first 4 lights, tested first by
+// the next shadow ray to that light (scene.glsl's SHADOW_HINTS): the samples of a pixel and their
+// bounces mostly meet the same blocker. Which primitive is found first does not change whether
+// the light is blocked, so the picture is the same.
+uvec4 shadow_blockers = uvec4(NO_PRIMITIVE);
+
 // The fraction of a light's colour that reaches the surface point `from` from the light point q,
 // along a straight shadow ray that starts at `origin` (just off the surface) inside `media`: 0
 // if an opaque surface is in the way; each transparent surface that changes the innermost
@@ -89,8 +95,8 @@ const uint MAX_SHADOW_CROSSINGS = 16u;
 // along the way. No refraction and no Fresnel (no caustics; with photon mapping, transparent
 // surfaces block shadow rays and the caustic photons bring that light). More than MAX_SHADOW_CROSSINGS
 // surfaces block the light. Distances are measured between surface points, not from the offset
-// origins, so absorption sees the true thickness.
-vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media) {
+// origins, so absorption sees the true thickness. `light`: the light's index (shadow_blockers).
+vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media, uint light) {
     vec3 through = vec3(1.0);
     for (uint k = 0u; k <= MAX_SHADOW_CROSSINGS; ++k) {
         vec3 to_light = q - origin;
@@ -103,9 +109,11 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media) {
         // (One call of trace_scene for both cases: each call site inlines the whole intersection
         // code, which lavapipe then compiles, even where it is dead.)
         const bool any_hit_blocks = !SCENE_HAS_TRANSPARENCY || SCENE_HAS_PHOTONS;
-        if (!trace_scene(ray, 0.0, dist, any_hit_blocks, best)) {
+        uint hint = SHADOW_HINTS && any_hit_blocks && light < 4u ? shadow_blockers[light] : NO_PRIMITIVE;
+        if (!trace_scene(ray, 0.0, dist, any_hit_blocks, hint, best)) {
             return any_hit_blocks ? through : through * absorption_over(medium, length(q - from));
         }
+        if (SHADOW_HINTS && any_hit_blocks && light < 4u) shadow_blockers[light] = best.prim;
         if (any_hit_blocks || k == MAX_SHADOW_CROSSINGS) break;
         uint mat = primitive_at(best.prim).material;
         Material m = material_at(mat);

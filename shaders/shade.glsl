@@ -36,7 +36,7 @@ const float MIN_LIGHT = 1.0 / 65536.0;
 // A microfacet material's light is pi f (N.L) times the light's (its colour is irradiance over
 // pi): in `diffuse`, with `pigment` holding the indices (n1, n2) of a glass's interface.
 void add_light(inout vec3 color, Material m, vec3 pigment, vec3 p, vec3 n, vec3 shading_n, vec3 view_dir, vec3 mirrored,
-               vec3 origin, Light light, vec3 q, uint count, Media media, vec3 scale, inout float rays) {
+               vec3 origin, Light light, uint light_index, vec3 q, uint count, Media media, vec3 scale, inout float rays) {
     vec3 l = normalize(q - p);
     if (dot(n, l) <= 0.0) return;  // light behind the surface: no shadow ray needed
     bool micro = SCENE_HAS_MICROFACET && m.model != MODEL_PHONG;
@@ -53,7 +53,7 @@ void add_light(inout vec3 color, Material m, vec3 pigment, vec3 p, vec3 n, vec3 
     vec3 intensity = light_intensity(light, q, p, count);
     if ((micro || (SCENE_HAS_TRANSPARENCY && is_transparent(m))) && max3(scale * (diffuse + shine) * intensity) < MIN_LIGHT) return;
     rays += 1.0;
-    vec3 through = transmittance(p, origin, q, media);
+    vec3 through = transmittance(p, origin, q, media, light_index);
     if (max3(through) <= 0.0) return;  // in the shadow of an opaque surface
     intensity *= through;
     color += diffuse * intensity;
@@ -87,7 +87,7 @@ vec3 shade_local(Material m, vec3 pigment, vec3 p, vec3 n, float error, vec3 sha
             count = light_sample_count(light);
         }
         vec3 q = light_sample_position(light, i, s, seed);
-        add_light(color, m, pigment, p, n, shading_n, view_dir, mirrored, origin, light, q, count, media, scale, rays);
+        add_light(color, m, pigment, p, n, shading_n, view_dir, mirrored, origin, light, i, q, count, media, scale, rays);
         if (++s >= count) {
             s = 0u;
             ++i;
