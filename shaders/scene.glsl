@@ -107,7 +107,6 @@ struct Nearest {
     uint prim;
     vec2 uv;
     float error;  // a Bezier or implicit hit's error bound, as its search found it (primitive_normal completes it)
-    uvec2 key;    // stable_key of prim, kept so that a tie is settled without fetching prim again
 };
 
 // How far a test must look: up to t_max, or a little past the best hit to see its ties.
@@ -120,11 +119,11 @@ bool consider_primitive(uint i, Primitive p, Ray ray, float t_min, bool planes_o
     vec2 uv;
     if (!primitive_intersect(p, ray, t_min, reach(best), planes_only, t, uv, error)) return false;
     if (best.prim != NO_PRIMITIVE && t >= best.t - (TIE * best.t + error + best.error)) {
-        uvec2 a = stable_key(p), b = best.key;
+        uvec2 a = stable_key(p), b = stable_key(primitive_at(best.prim));
         if (!(a.x < b.x || (a.x == b.x && a.y < b.y))) return false;
     }
     // An equally near twin keeps the nearer t: where that is the other's, so is its error bound.
-    best = Nearest(min(t, best.t), i, uv, t < best.t ? error : max(error, best.error), stable_key(p));
+    best = Nearest(min(t, best.t), i, uv, t < best.t ? error : max(error, best.error));
     return true;
 }
 
@@ -135,41 +134,60 @@ bool consider(uint i, Ray ray, float t_min, bool planes_only, inout Nearest best
 // For shadow rays: whether primitive i is hit before best.t, which it then becomes. No ties to
 // settle: the first hit ends the search.
 bool blocks(uint i, Ray ray, float t_min, bool planes_only, inout Nearest best) {
-    Primitive p = primitive_at(i);
     float t, error;
     vec2 uv;
-    if (!primitive_intersect(p, ray, t_min, best.t, planes_only, t, uv, error)) return false;
-    best = Nearest(t, i, uv, error, stable_key(p));
+    if (!primitive_intersect(primitive_at(i), ray, t_min, best.t, planes_only, t, uv, error)) return false;
+    best = Nearest(t, i, uv, error);
     return true;
 }
 
-// Shadow rays may test a hint first: the primitive that blocked the last shadow ray to the same
-// light (dielectric.glsl's shadow_blockers), which saves the BVH traversal wherever it still
-// blocks (`many` 11% faster on lavapipe). Only with a BVH (without one, `seed` was 2-6% slower)
-// and where every shape is cheap to test: a stale hint costs a test, and a Bezier leaf's or an
-// expression surface's test costs more than the traversals it saves (the teapot was 15% slower).
+// The primitives outside the BVH (with a BVH, everything bounded is in it: the rest are planes;
+// without one, all of them): the nearest hit, or with any_hit whether there is one.
+bool unbounded_hit(Ray ray, float t_min, bool any_hit, inout Nearest best) {
+    for (uint i = frame.primitive_count - frame.unbounded_count; i < frame.primitive_count; ++i) {
+        if (consider(i, ray, t_min, SCENE_HAS_BVH, best) && any_hit) return true;
+    }
+    return false;
+}
+
+// Where every shape of the scene is cheap to test, shadow rays take a lean path through the
+// primitives outside the BVH (lean_unbounded_hit). Scenes with Bezier patches or expression
+// surfaces keep the one path: lavapipe's code for their searches got 6-12% slower with a second
+// one, even one the host had left dead (docs/performance.md).
 #if LANCER_PARAMETRIC_SURFACES || LANCER_IMPLICIT_SURFACES
-const bool SHADOW_HINTS = false;
+const bool CHEAP_SHAPES = false;
 #else
-const bool SHADOW_HINTS = SCENE_HAS_BVH && !SCENE_HAS_BEZIER;
+const bool CHEAP_SHAPES = !SCENE_HAS_BEZIER;
 #endif
+
+// Shadow hints: a shadow ray first tests the primitive that blocked the last shadow ray to the
+// same light (dielectric.glsl's shadow_blockers), which saves the BVH traversal wherever it still
+// blocks (`many` 11% faster on lavapipe). Only with a BVH: without one, `seed` was 2-6% slower.
+const bool SHADOW_HINTS = CHEAP_SHAPES && SCENE_HAS_BVH;
+
+// unbounded_hit for a shadow ray, with the hint (any primitive, or NO_PRIMITIVE) first and
+// without the nearest hit's bookkeeping (`seed` 5% faster on lavapipe).
+bool lean_unbounded_hit(Ray ray, float t_min, uint hint, inout Nearest best) {
+    if (SHADOW_HINTS && hint != NO_PRIMITIVE && blocks(hint, ray, t_min, false, best)) return true;
+    for (uint i = frame.primitive_count - frame.unbounded_count; i < frame.primitive_count; ++i) {
+        if (blocks(i, ray, t_min, SCENE_HAS_BVH, best)) return true;
+    }
+    return false;
+}
 
 // Nearest hit in (t_min, t_max) over all primitives; with any_hit, the first hit found, and
 // primitive `hint` tested first (NO_PRIMITIVE: none; see SHADOW_HINTS).
 bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, out Nearest best) {
-    best = Nearest(t_max, NO_PRIMITIVE, vec2(0.0), 0.0, uvec2(0u));
-    uint bounded = frame.primitive_count - frame.unbounded_count;
-    bool hinted = SHADOW_HINTS && any_hit && hint != NO_PRIMITIVE;
-    for (int k = hinted ? -1 : 0; k < int(frame.unbounded_count); ++k) {
-        uint i = k < 0 ? hint : bounded + uint(k);
-        // With a BVH, everything bounded is in it: the rest are planes (but the hint may be any
-        // primitive). Shadow rays skip the nearest hit's bookkeeping here (`seed` 5% faster on
-        // lavapipe), not in the BVH's leaves below, where the same made the teapot 10% slower
-        // (docs/performance.md).
-        if (any_hit ? blocks(i, ray, t_min, SCENE_HAS_BVH && k >= 0, best) : consider(i, ray, t_min, SCENE_HAS_BVH, best)) {
-            if (any_hit) return true;
-        }
+    best = Nearest(t_max, NO_PRIMITIVE, vec2(0.0), 0.0);
+    // The branch on CHEAP_SHAPES alone, a specialisation constant, is one the host removes
+    // (spirv_specialize.hpp) before lavapipe sees the module.
+    bool found;
+    if (CHEAP_SHAPES) {
+        found = any_hit ? lean_unbounded_hit(ray, t_min, hint, best) : unbounded_hit(ray, t_min, any_hit, best);
+    } else {
+        found = unbounded_hit(ray, t_min, any_hit, best);
     }
+    if (found) return true;
     if (!SCENE_HAS_BVH || frame.node_count == 0u) return best.prim != NO_PRIMITIVE;
 
     vec3 inv_dir = safe_inverse(ray.dir);
