@@ -109,11 +109,11 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media, uint light) {
         // (One call of trace_scene for both cases: each call site inlines the whole intersection
         // code, which lavapipe then compiles, even where it is dead.)
         const bool any_hit_blocks = !SCENE_HAS_TRANSPARENCY || SCENE_HAS_PHOTONS;
-        uint hint = SHADOW_HINTS && any_hit_blocks && light < 4u ? shadow_blockers[light] : NO_PRIMITIVE;
-        if (!trace_scene(ray, 0.0, dist, any_hit_blocks, hint, best)) {
+        bool hinted = SHADOW_HINTS && any_hit_blocks && light < 4u;
+        if (!trace_scene(ray, 0.0, dist, any_hit_blocks, hinted ? shadow_blockers[light] : NO_PRIMITIVE, best)) {
             return any_hit_blocks ? through : through * absorption_over(medium, length(q - from));
         }
-        if (SHADOW_HINTS && any_hit_blocks && light < 4u) shadow_blockers[light] = best.prim;
+        if (hinted) shadow_blockers[light] = best.prim;
         if (any_hit_blocks || k == MAX_SHADOW_CROSSINGS) break;
         uint mat = primitive_at(best.prim).material;
         Material m = material_at(mat);

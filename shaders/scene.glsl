@@ -183,7 +183,7 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, out
     // (spirv_specialize.hpp) before lavapipe sees the module.
     bool found;
     if (CHEAP_SHAPES) {
-        found = any_hit ? lean_unbounded_hit(ray, t_min, hint, best) : unbounded_hit(ray, t_min, any_hit, best);
+        found = any_hit ? lean_unbounded_hit(ray, t_min, hint, best) : unbounded_hit(ray, t_min, false, best);
     } else {
         found = unbounded_hit(ray, t_min, any_hit, best);
     }
