@@ -6,6 +6,7 @@
 #include "gpu/submit.hpp"
 #include "gpu/vk_check.hpp"
 #include "image/difference_tables.hpp"
+#include "image/image.hpp"
 
 namespace lancer::gpu {
 namespace {

@@ -1,6 +1,7 @@
 #pragma once
 // Images as the renderers produce them (linear float RGB plus a per-pixel ray count) and as
 // they are written (8-bit sRGB).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -38,12 +39,20 @@ struct Rgb8Image {
     const std::uint8_t* at(int x, int y) const { return &bytes[(static_cast<std::size_t>(y) * width + x) * 3]; }
 };
 
-// sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1], to 0..255.
+// sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1], to 0..255, as
+// evaluated in float with powf and rounded: the definition of every 8-bit code lancer writes.
+std::uint8_t encode_srgb8_by_formula(float linear);
+// The same codes, bit for bit, from tables: what pictures are encoded with.
 std::uint8_t encode_srgb8(float linear);
+// For each code k (1..255), the least float that encode_srgb8() maps to k or above (entry 0 is
+// 0). encode_srgb8 is non-decreasing, so the code of a float f is the largest k with f >=
+// entry k, and 0 when there is none (negative, NaN).
+const std::array<float, 256>& srgb8_level_starts();
 float decode_srgb8(std::uint8_t encoded);
 
-// Each channel tone-mapped (image/tone.hpp), clamped to [0, 1] and sRGB-encoded.
-Rgb8Image to_srgb8(const FloatImage& image, const ToneMapping& mapping = {});
+// Each channel times `scale` (a sum of samples over their count), tone-mapped (image/tone.hpp),
+// clamped to [0, 1] and sRGB-encoded.
+Rgb8Image to_srgb8(const FloatImage& image, const ToneMapping& mapping = {}, float scale = 1.0f);
 
 // Writes a PNG atomically: to a temporary file in the same directory, then rename(), so the
 // destination is either the old file or the complete new one. Throws UserError on I/O failure.

@@ -60,29 +60,7 @@ int next_preview_divisor(int divisor, double preview_ms, double budget_ms, int m
 
 Rgb8Image display_image(const FloatImage& sums, std::uint32_t samples_done, bool final_pass, const ToneMapping& tone) {
     if (final_pass) return to_srgb8(sums, tone);
-    return quick_srgb8(sums, 1.0f / float(std::max<std::uint32_t>(1, samples_done)), tone);
-}
-
-Rgb8Image quick_srgb8(const FloatImage& image, float scale, const ToneMapping& tone) {
-    const bool identity = tone.exposure == 0.0 && tone.tone == Tone::Clamp;
-    // Linear [0, 1] in 65536 steps: the sRGB curve's steepest part (12.92 near black) moves
-    // 255 * 12.92 / 65535 = 0.05 of a level per step, so rounding stays within one level.
-    constexpr int kSteps = 65535;
-    static const std::vector<std::uint8_t> table = [] {
-        std::vector<std::uint8_t> t(kSteps + 1);
-        for (int i = 0; i <= kSteps; ++i) t[i] = encode_srgb8(float(i) / kSteps);
-        return t;
-    }();
-    Rgb8Image out{image.width, image.height, std::vector<std::uint8_t>(image.pixels.size() * 3)};
-    for (std::size_t i = 0; i < image.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            float v = image.pixels[i][c] * scale;
-            if (!identity) v = tone_map(v, tone);
-            // NaN compares false both ways and lands on 0, as in encode_srgb8.
-            int index = v > 0.0f ? (v < 1.0f ? int(v * kSteps + 0.5f) : kSteps) : 0;
-            out.bytes[i * 3 + c] = table[index];
-        }
-    return out;
+    return to_srgb8(sums, tone, 1.0f / float(std::max<std::uint32_t>(1, samples_done)));
 }
 
 }  // namespace lancer::view

@@ -43,14 +43,9 @@ int next_preview_divisor(int divisor, double preview_ms, double budget_ms, int m
 
 // The image after `samples_done` of a pass sequence: sums / samples_done (pass sums are not
 // divided until the last pass, which divides itself; then samples_done is the whole grid and
-// `final_pass` is true). The final picture is converted exactly as `lancer render` writes it;
-// the ones before it, seen for a moment, with quick_srgb8. Both through the scene's tone mapping.
+// `final_pass` is true). Each is converted as `lancer render` writes a picture, through the
+// scene's tone mapping; the final one gives exactly its bytes.
 Rgb8Image display_image(const FloatImage& sums, std::uint32_t samples_done, bool final_pass,
                         const ToneMapping& tone = {});
-
-// 8-bit sRGB of `scale` times each linear pixel (then tone-mapped), through a table instead of
-// pow(): within one level of to_srgb8 and about 4x faster, for previews and partial pictures,
-// which are on screen for a moment and are converted while the next pass waits.
-Rgb8Image quick_srgb8(const FloatImage& image, float scale = 1.0f, const ToneMapping& tone = {});
 
 }  // namespace lancer::view

@@ -200,7 +200,7 @@ void RenderWorker::refine(const Scene& scene, std::uint64_t generation, bool mov
         ShownFrame f = describe(scene, generation);
         f.kind = ShownFrame::Kind::Preview;
         auto convert_start = Clock::now();
-        f.image = quick_srgb8(preview, 1.0f, scene.render.tone);
+        f.image = to_srgb8(preview, scene.render.tone);
         f.convert_ms = ms_since(convert_start);
         f.preview_divisor = preview_divisor_;
         f.render_ms = ms_since(start);

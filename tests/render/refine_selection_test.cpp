@@ -17,6 +17,7 @@
 #include "gpu/refine_selection.hpp"
 #include "image/adaptive.hpp"
 #include "image/difference_tables.hpp"
+#include "image/image.hpp"
 #include "render/host_adaptive_picture.hpp"
 #include "support/test_support.hpp"
 

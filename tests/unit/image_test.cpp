@@ -1,5 +1,8 @@
+#include <bit>
 #include <cmath>
 #include <filesystem>
+#include <limits>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -21,6 +24,33 @@ TEST(Srgb, ClampsOutOfRangeAndNaN) {
     EXPECT_EQ(encode_srgb8(-1.0f), 0);
     EXPECT_EQ(encode_srgb8(7.0f), 255);
     EXPECT_EQ(encode_srgb8(std::nanf("")), 0);
+}
+
+// Pictures are encoded from tables (image/srgb.cpp); every code must be the formula's. Checked
+// where the tables could go wrong: at and around every level start, at the start of every run
+// of floats that shares a table entry, at the ends and at random.
+TEST(Srgb, TablesGiveTheFormulasCodes) {
+    for (float start : srgb8_level_starts()) {
+        const auto at = std::bit_cast<std::uint32_t>(start);
+        for (std::uint32_t u = at < 64 ? 0 : at - 64; u <= at + 64; ++u)
+            ASSERT_EQ(encode_srgb8(std::bit_cast<float>(u)), encode_srgb8_by_formula(std::bit_cast<float>(u))) << u;
+    }
+    const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
+    for (std::uint32_t run = 0; run <= one; run += 1u << 16)
+        for (std::uint32_t u : {run, run + 1, run - 1, run + 0xffffu}) {
+            const float f = std::bit_cast<float>(u);
+            ASSERT_EQ(encode_srgb8(f), encode_srgb8_by_formula(f)) << u;
+        }
+    std::mt19937 random(7);
+    std::uniform_int_distribution<std::uint32_t> pattern(0, one + 4096);
+    for (int i = 0; i < 1'000'000; ++i) {
+        const float f = std::bit_cast<float>(pattern(random));
+        ASSERT_EQ(encode_srgb8(f), encode_srgb8_by_formula(f)) << f;
+    }
+    for (float f : {-1.0f, -0.0f, 0.0f, 1.0f, 7.0f, std::numeric_limits<float>::infinity(),
+                    -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(),
+                    std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::max()})
+        EXPECT_EQ(encode_srgb8(f), encode_srgb8_by_formula(f)) << f;
 }
 
 TEST(Srgb, DecodeInvertsEncode) {
