@@ -234,7 +234,10 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
             uint, node_count,      /* 0 when nothing is bounded */                                \
             uint, unbounded_count) /* the last unbounded_count primitives are tested by every ray */ \
     SCALARS(uint, loop_probe, /* always 2: the trip count of trace.comp's loop_limit_reached() probe */ \
-            uint, reserved0, uint, reserved1, uint, reserved2)
+            uint, sphere_end,      /* the unbounded primitives, sorted by type: where each family's end */ \
+            uint, plane_end,       /* (SHAPE_SPHERE ... SHAPE_IMPLICIT); the next family starts there, */ \
+            uint, rectangle_end)   /* the first at primitive_count - unbounded_count (scene.glsl) */ \
+    SCALARS(uint, box_end, uint, bezier_end, uint, parametric_end, uint, reserved0)
 
 // A light as photon mapping sees it (one per Light, in the same order).
 #define LANCER_ROWS_Emitter(VEC4, VEC4S, SCALARS)                                                   \

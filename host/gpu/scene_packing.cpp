@@ -385,6 +385,8 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     Bvh built;
     const Bvh& bvh = options.cache ? options.cache->build(boxes) : (built = build_bvh(boxes));
     for (std::uint32_t index : bvh.order) packed.primitives.push_back(bounded[index]);
+    // By family, so that the shader tests each family in a loop of its own (scene.glsl).
+    std::stable_sort(unbounded.begin(), unbounded.end(), [](const Primitive& a, const Primitive& b) { return a.type < b.type; });
     packed.primitives.insert(packed.primitives.end(), unbounded.begin(), unbounded.end());
     packed.unbounded_count = static_cast<uint>(unbounded.size());
     for (const lancer::BvhNode& n : bvh.nodes) {
@@ -486,6 +488,15 @@ FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {
     f.light_count = static_cast<uint>(packed.lights.size());
     f.node_count = static_cast<uint>(packed.nodes.size());
     f.unbounded_count = packed.unbounded_count;
+    // Where each family of the unbounded primitives (sorted by type) ends.
+    static_assert(SHAPE_SPHERE == 0 && SHAPE_PLANE == 1 && SHAPE_RECTANGLE == 2 && SHAPE_BOX == 3 && SHAPE_BEZIER == 4 &&
+                  SHAPE_PARAMETRIC == 5 && SHAPE_IMPLICIT == 6, "FrameParams' family ends follow the shape types' order");
+    uint* ends[] = {&f.sphere_end, &f.plane_end, &f.rectangle_end, &f.box_end, &f.bezier_end, &f.parametric_end};
+    std::size_t i = packed.primitives.size() - packed.unbounded_count;
+    for (uint type = 0; type < std::size(ends); ++type) {
+        while (i < packed.primitives.size() && packed.primitives[i].type <= type) ++i;
+        *ends[type] = static_cast<uint>(i);
+    }
     f.loop_probe = 2;
     return f;
 }
