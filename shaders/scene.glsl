@@ -18,15 +18,16 @@
 
 // uv: the surface's own parameters at the hit, for shapes that have them; error: the error bound
 // of a Bezier or implicit hit, which only their search knows (primitive_normal completes the
-// others'). `type` is p's (a constant where the caller knows the family: the switch then folds
-// away). Only families the scene has are compiled in (lavapipe runs every case of a switch,
-// the type being known only at run time).
-bool shape_intersect(uint type, Primitive p, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv, out float error) {
+// others'). Only families the scene has are compiled in (lavapipe runs every case of a switch,
+// the type being known only at run time); `bounded` (a constant: p is in the BVH) leaves planes
+// out.
+bool shape_intersect(uint type, Primitive p, Ray ray, float t_min, float t_max, bool bounded, out float t_hit, out vec2 uv,
+                     out float error) {
     uv = vec2(0.0);
     error = 0.0;
     switch (type) {
         case SHAPE_SPHERE: return SCENE_HAS_SPHERE && sphere_intersect(p, ray, t_min, t_max, t_hit);
-        case SHAPE_PLANE: return SCENE_HAS_PLANE && plane_intersect(p, ray, t_min, t_max, t_hit);
+        case SHAPE_PLANE: return SCENE_HAS_PLANE && !bounded && plane_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_RECTANGLE: return SCENE_HAS_RECTANGLE && rectangle_intersect(p, ray, t_min, t_max, t_hit, uv);
         case SHAPE_BOX: return SCENE_HAS_BOX && box_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_BEZIER: return SCENE_HAS_BEZIER && bezier_intersect(p, ray, t_min, t_max, t_hit, uv, error);
@@ -122,19 +123,19 @@ bool keep_if_nearer(uint i, Primitive p, float t, vec2 uv, float error, inout Ne
     return true;
 }
 
-// Tests primitive i, which is p, of family `type`, and keeps it if it is nearer.
-bool consider_primitive(uint i, uint type, Primitive p, Ray ray, float t_min, inout Nearest best) {
+// Tests primitive i of a BVH leaf, which is p, and keeps it if it is nearer.
+bool consider_in_leaf(uint i, Primitive p, Ray ray, float t_min, inout Nearest best) {
     float t, error;
     vec2 uv;
-    return shape_intersect(type, p, ray, t_min, reach(best), t, uv, error) && keep_if_nearer(i, p, t, uv, error, best);
+    return shape_intersect(p.type, p, ray, t_min, reach(best), true, t, uv, error) && keep_if_nearer(i, p, t, uv, error, best);
 }
 
-// For shadow rays: whether primitive i, which is p, of family `type`, is hit before best.t,
-// which it then becomes. No ties to settle: the first hit ends the search.
-bool blocks(uint i, uint type, Primitive p, Ray ray, float t_min, inout Nearest best) {
+// For shadow rays: whether primitive i, which is p, is hit before best.t, which it then
+// becomes. No ties to settle: the first hit ends the search.
+bool blocks(uint i, Primitive p, Ray ray, float t_min, bool bounded, inout Nearest best) {
     float t, error;
     vec2 uv;
-    if (!shape_intersect(type, p, ray, t_min, best.t, t, uv, error)) return false;
+    if (!shape_intersect(p.type, p, ray, t_min, best.t, bounded, t, uv, error)) return false;
     best = Nearest(t, i, uv, error);
     return true;
 }
@@ -229,7 +230,7 @@ const bool SHADOW_HINTS = CHEAP_SHAPES && SCENE_HAS_BVH;
 bool lean_unbounded_hit(Ray ray, float t_min, uint hint, inout Nearest best) {
     if (SHADOW_HINTS && hint != NO_PRIMITIVE) {
         Primitive p = primitive_at(hint);
-        if (blocks(hint, p.type, p, ray, t_min, best)) return true;
+        if (blocks(hint, p, ray, t_min, false, best)) return true;
     }
     LANCER_FAMILY_LOOPS(best.t, LANCER_KEEP_FIRST)
     return false;
@@ -313,7 +314,11 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, out
         }
         for (uint i = n.first; i < n.first + n.count; ++i) {
             Primitive p = primitive_at(i);
-            if (consider_primitive(i, p.type, p, ray, t_min, best) && any_hit) return true;
+            if (CHEAP_SHAPES) {
+                if (any_hit ? blocks(i, p, ray, t_min, true, best) : consider_in_leaf(i, p, ray, t_min, best) && any_hit) return true;
+            } else if (consider_in_leaf(i, p, ray, t_min, best) && any_hit) {
+                return true;
+            }
         }
         visit = false;
     }
