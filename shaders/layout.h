@@ -232,7 +232,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     SCALARS(uint, primitive_count, /* all primitives: the BVH's, then the unbounded ones (planes) */ \
             uint, light_count,                                                                    \
             uint, node_count,      /* 0 when nothing is bounded */                                \
-            uint, unbounded_count) /* the last unbounded_count primitives are tested by every ray */ \
+            uint, unbounded_count) /* the last unbounded_count primitives (outside the BVH) are tested by every ray */ \
     SCALARS(uint, loop_probe, /* always 2: the trip count of trace.comp's loop_limit_reached() probe */ \
             uint, sphere_end,      /* the unbounded primitives, sorted by type: where each family's end */ \
             uint, plane_end,       /* (SHAPE_SPHERE ... SHAPE_IMPLICIT); the next family starts there, */ \
@@ -420,7 +420,8 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(SCENE_HAS_BOX, 14, has_box, true)                                                              \
     X(SCENE_HAS_MICROFACET, 15, has_microfacet, true) /* a material with model = "microfacet" */      \
     X(SCENE_HAS_PHOTONS, 16, has_photons, true)     /* photon mapping: gather at diffuse hits */ \
-    X(SCENE_HAS_RATIONAL_PATCHES, 17, has_rational_patches, true) /* a Bezier leaf's weights not all 1 */
+    X(SCENE_HAS_RATIONAL_PATCHES, 17, has_rational_patches, true) /* a Bezier leaf's weights not all 1 */ \
+    X(BVH_HAS_ANALYTIC, 18, bvh_has_analytic, true) /* a sphere, rectangle or box in the BVH; else all outside it */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

@@ -19,17 +19,18 @@
 // uv: the surface's own parameters at the hit, for shapes that have them; error: the error bound
 // of a Bezier or implicit hit, which only their search knows (primitive_normal completes the
 // others'). Only families the scene has are compiled in (lavapipe runs every case of a switch,
-// the type being known only at run time); `bounded` (a constant: p is in the BVH) leaves planes
-// out.
+// the type being known only at run time); `bounded` (a constant: p is in the BVH) leaves out
+// planes, never in it, and the analytic shapes where none is (BVH_HAS_ANALYTIC).
 bool shape_intersect(uint type, Primitive p, Ray ray, float t_min, float t_max, bool bounded, out float t_hit, out vec2 uv,
                      out float error) {
     uv = vec2(0.0);
     error = 0.0;
     switch (type) {
-        case SHAPE_SPHERE: return SCENE_HAS_SPHERE && sphere_intersect(p, ray, t_min, t_max, t_hit);
+        case SHAPE_SPHERE: return SCENE_HAS_SPHERE && (!bounded || BVH_HAS_ANALYTIC) && sphere_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_PLANE: return SCENE_HAS_PLANE && !bounded && plane_intersect(p, ray, t_min, t_max, t_hit);
-        case SHAPE_RECTANGLE: return SCENE_HAS_RECTANGLE && rectangle_intersect(p, ray, t_min, t_max, t_hit, uv);
-        case SHAPE_BOX: return SCENE_HAS_BOX && box_intersect(p, ray, t_min, t_max, t_hit);
+        case SHAPE_RECTANGLE:
+            return SCENE_HAS_RECTANGLE && (!bounded || BVH_HAS_ANALYTIC) && rectangle_intersect(p, ray, t_min, t_max, t_hit, uv);
+        case SHAPE_BOX: return SCENE_HAS_BOX && (!bounded || BVH_HAS_ANALYTIC) && box_intersect(p, ray, t_min, t_max, t_hit);
         case SHAPE_BEZIER: return SCENE_HAS_BEZIER && bezier_intersect(p, ray, t_min, t_max, t_hit, uv, error);
 #if LANCER_PARAMETRIC_SURFACES
         case SHAPE_PARAMETRIC: return parametric_intersect(p, ray, t_min, t_max, t_hit, uv);
@@ -140,8 +141,8 @@ bool blocks(uint i, Primitive p, Ray ray, float t_min, bool bounded, inout Neare
     return true;
 }
 
-// The primitives outside the BVH (with a BVH, everything bounded is in it: the rest are planes;
-// without one, all of them) are sorted by family (host/gpu/scene_packing.cpp), and each family
+// The primitives outside the BVH (with a BVH, the planes, and the spheres, rectangles and boxes
+// where BVH_HAS_ANALYTIC is false; without one, all of them) are sorted by family (host/gpu/scene_packing.cpp), and each family
 // is tested in a loop of its own that calls its intersection directly: lavapipe would otherwise
 // run every family's code for every primitive (`seed`'s rectangle cost its spheres' tests 14%).
 // Not through shape_intersect with a constant type: lavapipe inlines the whole switch at each
@@ -165,7 +166,7 @@ uint family_begin(uint type) { return type == SHAPE_SPHERE ? frame.primitive_cou
 // specialisation constants alone is one the host removes (spirv_specialize.hpp) where the
 // family is absent.
 #define LANCER_FAMILY_LOOP(TYPE, IN_SCENE, INTERSECT, LIMIT, ON_HIT)                                 \
-    if ((IN_SCENE) && (!SCENE_HAS_BVH || TYPE == SHAPE_PLANE)) {                                   \
+    if ((IN_SCENE) && (!SCENE_HAS_BVH || TYPE == SHAPE_PLANE || (!BVH_HAS_ANALYTIC && TYPE <= SHAPE_BOX))) { \
         for (uint i = family_begin(TYPE); i < family_end(TYPE); ++i) {                             \
             Primitive p = primitive_at(i);                                                         \
             float limit = LIMIT;                                                                   \

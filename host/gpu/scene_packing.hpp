@@ -1,8 +1,8 @@
 #pragma once
 // Scene model -> the GPU's arrays (LANCER_SCENE_ARRAYS in shaders/layout.h): primitives ordered
-// for the BVH (bounded ones in leaf order, then the unbounded planes), the flattened BVH,
-// materials, lights, patch leaves, parametric cells, implicit surfaces, textures and patterns;
-// and which optional
+// for the BVH (the BVH's in leaf order, then the rest sorted by shape type: planes, and a few
+// analytic shapes beside patches or expression surfaces), the flattened BVH, materials, lights,
+// patch leaves, parametric cells, implicit surfaces, textures and patterns; and which optional
 // shader features the scene needs. Pure data conversion, no Vulkan.
 #include <cstddef>
 #include <span>

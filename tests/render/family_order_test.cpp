@@ -1,8 +1,11 @@
 // The primitives outside the BVH reach the GPU sorted by shape family, with the frame saying
 // where each family ends: shaders/scene.glsl tests each family in a loop of its own, so a
-// primitive outside its family's range would never be tested. (That the pictures do not depend
-// on the order is the image tests' business: ties go by a stable key.)
+// primitive outside its family's range would never be tested. Beside expensive shapes in a BVH,
+// a few analytic ones stay outside it. (That the pictures do not depend on the order is the
+// image tests' business: ties go by a stable key.)
 #include <string>
+
+#include <fmt/format.h>
 
 #include <gtest/gtest.h>
 
@@ -71,6 +74,74 @@ TEST(FamilyOrder, PrimitivesOutsideTheBvhAreSortedByFamilyWithTheirEnds) {
     EXPECT_EQ(packed.primitives[0].object, 0u);
     EXPECT_EQ(packed.primitives[1].object, 2u);
     EXPECT_EQ(packed.primitives[2].object, 5u);
+}
+
+// A bicubic patch (16 leaves with subdivision 2), and `spheres` small spheres beside it.
+std::string patch_and_spheres(int spheres) {
+    std::string text = R"(
+    [camera]
+    eye = [0, 1, -6]
+    look_at = [0, 0, 0]
+    [material.m]
+    color = [0.8, 0.5, 0.2]
+    [[object]]
+    type = "rectangle"
+    corner = [-3, -1, -3]
+    edge_u = [6, 0, 0]
+    edge_v = [0, 0, 6]
+    material = "m"
+    [[object]]
+    type = "bezier"
+    subdivision = 2
+    material = "m"
+    control_points = [)";
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) text += fmt::format("{}[{}, {}, {}]", i + j == 0 ? "" : ", ", i, j, (i % 3) * (j % 3));
+    text += "]\n";
+    for (int k = 0; k < spheres; ++k)
+        text += fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, 2, 0]\nradius = 0.2\nmaterial = \"m\"\n", k);
+    return text;
+}
+
+// Types of the primitives in the BVH (the first ones) and outside it.
+std::pair<std::string, std::string> where(const gpu::PackedScene& packed) {
+    std::string inside, outside;
+    const std::size_t in_bvh = packed.primitives.size() - packed.unbounded_count;
+    for (std::size_t i = 0; i < packed.primitives.size(); ++i) (i < in_bvh ? inside : outside) += char('0' + packed.primitives[i].type);
+    return {inside, outside};
+}
+
+// Beside Bezier leaves in a BVH, a few analytic shapes stay outside it, so that the leaves'
+// tests do not run their code (BVH_HAS_ANALYTIC off); many of them go in as usual.
+TEST(FamilyOrder, FewAnalyticShapesStayOutsideABvhOfPatches) {
+    const gpu::PackedScene few = gpu::pack_scene(test::scene_from_text(patch_and_spheres(2)));
+    ASSERT_FALSE(few.nodes.empty());
+    EXPECT_FALSE(few.features.bvh_has_analytic);
+    EXPECT_EQ(where(few).first, std::string(16, '0' + gpu::SHAPE_BEZIER));
+    EXPECT_EQ(where(few).second, "002");  // two spheres, then the rectangle
+
+    const gpu::PackedScene many = gpu::pack_scene(test::scene_from_text(patch_and_spheres(9)));
+    EXPECT_TRUE(many.features.bvh_has_analytic);
+    EXPECT_EQ(where(many).second, "");
+    EXPECT_EQ(where(many).first.size(), 16u + 9u + 1u);
+}
+
+// Without expensive shapes, everything bounded is in the BVH.
+TEST(FamilyOrder, AnalyticShapesAloneAreAllInTheBvh) {
+    std::string text = R"(
+    [camera]
+    eye = [0, 1, -6]
+    look_at = [0, 0, 0]
+    [material.m]
+    color = [0.8, 0.5, 0.2]
+    )";
+    for (int k = 0; k < 20; ++k)
+        text += fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, 0, 0]\nradius = 0.2\nmaterial = \"m\"\n", k);
+    text += "[[object]]\ntype = \"plane\"\nnormal = [0, 1, 0]\nmaterial = \"m\"\n";
+    const gpu::PackedScene packed = gpu::pack_scene(test::scene_from_text(text));
+    EXPECT_TRUE(packed.features.bvh_has_analytic);
+    EXPECT_EQ(where(packed).first, std::string(20, '0' + gpu::SHAPE_SPHERE));
+    EXPECT_EQ(where(packed).second, "1");  // the plane
 }
 
 }  // namespace
