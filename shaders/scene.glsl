@@ -1,6 +1,7 @@
 // Scene buffers and the query every ray needs: the nearest hit, or any hit for shadow rays
 // (trace_scene; dielectric.glsl's transmittance traces shadow rays). Bounded primitives are
-// found through the BVH; unbounded ones (planes) are tested by every ray.
+// found through the BVH; the rest (planes, and a few analytic shapes beside patches or
+// expression surfaces: BVH_HAS_ANALYTIC) are tested by every ray, family by family.
 #ifndef LANCER_SCENE_GLSL
 #define LANCER_SCENE_GLSL
 
