@@ -274,7 +274,8 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, out
                 bool found = false;
                 while (sp > 0) {
                     --sp;
-                    if (stack_t[sp] <= reach(best)) {
+                    // A shadow ray's limit never changes: what it pushed, it still has to visit.
+                    if (any_hit || stack_t[sp] <= reach(best)) {
                         node = stack[sp];
                         found = true;
                         break;
@@ -308,7 +309,7 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, out
             if (visit) {
                 if (t_far != INFINITY) {
                     stack[sp] = far_child;
-                    stack_t[sp] = t_far;
+                    if (!any_hit) stack_t[sp] = t_far;
                     ++sp;
                 }
                 node = near_child;
