@@ -143,9 +143,10 @@ bool blocks(uint i, Primitive p, Ray ray, float t_min, bool bounded, inout Neare
 }
 
 // The primitives outside the BVH (with a BVH, the planes, and the spheres, rectangles and boxes
-// where BVH_HAS_ANALYTIC is false; without one, all of them) are sorted by family (host/gpu/scene_packing.cpp), and each family
-// is tested in a loop of its own that calls its intersection directly: lavapipe would otherwise
-// run every family's code for every primitive (`seed`'s rectangle cost its spheres' tests 14%).
+// where BVH_HAS_ANALYTIC is false; without one, all of them) are sorted by family
+// (host/gpu/scene_packing.cpp), and each family is tested in a loop of its own that calls its
+// intersection directly: lavapipe would otherwise run every family's code for every primitive
+// (`seed`'s rectangle cost its spheres' tests 14%).
 // Not through shape_intersect with a constant type: lavapipe inlines the whole switch at each
 // of the loops before it folds it, and took 0.4 s longer to create the pipeline.
 uint family_end(uint type) {
@@ -163,9 +164,10 @@ uint family_end(uint type) {
 uint family_begin(uint type) { return type == SHAPE_SPHERE ? frame.primitive_count - frame.unbounded_count : family_end(type - 1u); }
 
 // One family's loop: INTERSECT tests p against the ray up to `limit` (LIMIT), setting t (and
-// uv, error where the family has them); ON_HIT then uses the hit. The condition on the
-// specialisation constants alone is one the host removes (spirv_specialize.hpp) where the
-// family is absent.
+// uv, error where the family has them); ON_HIT then uses the hit. With a BVH, only planes and
+// (without BVH_HAS_ANALYTIC) the analytic families, SHAPE_SPHERE to SHAPE_BOX, are outside it.
+// The condition on the specialisation constants alone is one the host removes
+// (spirv_specialize.hpp) where the family is absent.
 #define LANCER_FAMILY_LOOP(TYPE, IN_SCENE, INTERSECT, LIMIT, ON_HIT)                                 \
     if ((IN_SCENE) && (!SCENE_HAS_BVH || TYPE == SHAPE_PLANE || (!BVH_HAS_ANALYTIC && TYPE <= SHAPE_BOX))) { \
         for (uint i = family_begin(TYPE); i < family_end(TYPE); ++i) {                             \
