@@ -76,6 +76,11 @@ TEST(FamilyOrder, PrimitivesOutsideTheBvhAreSortedByFamilyWithTheirEnds) {
     EXPECT_EQ(packed.primitives[2].object, 5u);
 }
 
+// A small sphere object centred at (x, y, 0).
+std::string small_sphere(int x, int y) {
+    return fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, {}, 0]\nradius = 0.2\nmaterial = \"m\"\n", x, y);
+}
+
 // A bicubic patch (16 leaves with subdivision 2), and `spheres` small spheres beside it.
 std::string patch_and_spheres(int spheres) {
     std::string text = R"(
@@ -99,7 +104,7 @@ std::string patch_and_spheres(int spheres) {
         for (int i = 0; i < 4; ++i) text += fmt::format("{}[{}, {}, {}]", i + j == 0 ? "" : ", ", i, j, (i % 3) * (j % 3));
     text += "]\n";
     for (int k = 0; k < spheres; ++k)
-        text += fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, 2, 0]\nradius = 0.2\nmaterial = \"m\"\n", k);
+        text += small_sphere(k, 2);
     return text;
 }
 
@@ -136,7 +141,7 @@ TEST(FamilyOrder, AnalyticShapesAloneAreAllInTheBvh) {
     color = [0.8, 0.5, 0.2]
     )";
     for (int k = 0; k < 20; ++k)
-        text += fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, 0, 0]\nradius = 0.2\nmaterial = \"m\"\n", k);
+        text += small_sphere(k, 0);
     text += "[[object]]\ntype = \"plane\"\nnormal = [0, 1, 0]\nmaterial = \"m\"\n";
     const gpu::PackedScene packed = gpu::pack_scene(test::scene_from_text(text));
     EXPECT_TRUE(packed.features.bvh_has_analytic);
