@@ -15,23 +15,32 @@
 namespace lancer {
 namespace {
 
-const char* kMixed = R"(
+// A camera and the material every object uses.
+const std::string kCameraAndMaterial = R"(
     [camera]
     eye = [0, 1, -6]
     look_at = [0, 0, 0]
     [material.m]
     color = [0.8, 0.5, 0.2]
-    [[object]]
-    type = "sphere"
-    center = [0, 0, 0]
-    radius = 1
-    material = "m"
+)";
+
+// A rectangle under the objects.
+const std::string kFloorRectangle = R"(
     [[object]]
     type = "rectangle"
     corner = [-3, -1, -3]
     edge_u = [6, 0, 0]
     edge_v = [0, 0, 6]
     material = "m"
+)";
+
+const std::string kMixed = kCameraAndMaterial + R"(
+    [[object]]
+    type = "sphere"
+    center = [0, 0, 0]
+    radius = 1
+    material = "m"
+)" + kFloorRectangle + R"(
     [[object]]
     type = "sphere"
     center = [2, 0, 0]
@@ -83,18 +92,7 @@ std::string small_sphere(int x, int y) {
 
 // A bicubic patch (16 leaves with subdivision 2), and `spheres` small spheres beside it.
 std::string patch_and_spheres(int spheres) {
-    std::string text = R"(
-    [camera]
-    eye = [0, 1, -6]
-    look_at = [0, 0, 0]
-    [material.m]
-    color = [0.8, 0.5, 0.2]
-    [[object]]
-    type = "rectangle"
-    corner = [-3, -1, -3]
-    edge_u = [6, 0, 0]
-    edge_v = [0, 0, 6]
-    material = "m"
+    std::string text = kCameraAndMaterial + kFloorRectangle + R"(
     [[object]]
     type = "bezier"
     subdivision = 2
@@ -133,13 +131,7 @@ TEST(FamilyOrder, FewAnalyticShapesStayOutsideABvhOfPatches) {
 
 // Without expensive shapes, everything bounded is in the BVH.
 TEST(FamilyOrder, AnalyticShapesAloneAreAllInTheBvh) {
-    std::string text = R"(
-    [camera]
-    eye = [0, 1, -6]
-    look_at = [0, 0, 0]
-    [material.m]
-    color = [0.8, 0.5, 0.2]
-    )";
+    std::string text = kCameraAndMaterial;
     for (int k = 0; k < 20; ++k)
         text += small_sphere(k, 0);
     text += "[[object]]\ntype = \"plane\"\nnormal = [0, 1, 0]\nmaterial = \"m\"\n";
