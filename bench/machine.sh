@@ -8,6 +8,12 @@ machine_description() {
   local model cores flags vec=()
   model=$(lscpu | sed -nE 's/^Model name: *//p' | head -n 1)
   cores=$(nproc)
+  # Virtual machines often report only "AMD EPYC": the family and model tell Zen 3 (25/1),
+  # Zen 4 (25/17) and Zen 5 (26/2) apart, and Intel's generations alike.
+  local family number
+  family=$(lscpu | sed -nE 's/^CPU family: *//p' | head -n 1)
+  number=$(lscpu | sed -nE 's/^Model: *//p' | head -n 1)
+  [ -n "$family" ] && model="$model (family $family, model ${number:-?})"
   flags=" $(lscpu | sed -nE 's/^Flags: *//p') "
   for f in avx avx2 fma avx512f avx512vl avx512bw; do [[ $flags == *" $f "* ]] && vec+=("$f"); done
   echo "CPU: ${model:-unknown}, ${cores} cores, vector extensions: ${vec[*]:-none beyond SSE}"
