@@ -163,14 +163,25 @@ uint family_end(uint type) {
 
 uint family_begin(uint type) { return type == SHAPE_SPHERE ? frame.primitive_count - frame.unbounded_count : family_end(type - 1u); }
 
+// Whether the ray enters, before `limit`, the box the host put around the primitives of family
+// `type` outside the BVH (FrameParams::family_lo, hi; rounded outward like the BVH's boxes).
+// Where a family of several is boxed (SPHERES_BOXED, ...), a ray that misses its box skips the
+// family's loop: lavapipe runs an `if`'s body for every SIMD lane whatever the condition, and
+// saves work only where a loop runs fewer times (`seed` 0.87x the time).
+bool enters_family_box(uint type, Ray ray, float limit) {
+    return box_entry(frame.family_lo[type].xyz, frame.family_hi[type].xyz, ray.origin, safe_inverse(ray.dir), limit) != INFINITY;
+}
+
 // One family's loop: INTERSECT tests p against the ray up to `limit` (LIMIT), setting t (and
 // uv, error where the family has them); ON_HIT then uses the hit. With a BVH, only planes and
 // (without BVH_HAS_ANALYTIC) the analytic families, SHAPE_SPHERE to SHAPE_BOX, are outside it.
 // The condition on the specialisation constants alone is one the host removes
 // (spirv_specialize.hpp) where the family is absent.
-#define LANCER_FAMILY_LOOP(TYPE, IN_SCENE, INTERSECT, LIMIT, ON_HIT)                                 \
+#define LANCER_FAMILY_LOOP(TYPE, IN_SCENE, BOXED, INTERSECT, LIMIT, ON_HIT)                          \
     if ((IN_SCENE) && (!SCENE_HAS_BVH || TYPE == SHAPE_PLANE || (!BVH_HAS_ANALYTIC && TYPE <= SHAPE_BOX))) { \
-        for (uint i = family_begin(TYPE); i < family_end(TYPE); ++i) {                             \
+        uint first = family_begin(TYPE), last = family_end(TYPE);                                  \
+        if ((BOXED) && !enters_family_box(TYPE, ray, LIMIT)) last = first;                          \
+        for (uint i = first; i < last; ++i) {                                                      \
             Primitive p = primitive_at(i);                                                         \
             float limit = LIMIT;                                                                   \
             float t, error = 0.0;                                                                  \
@@ -181,24 +192,25 @@ uint family_begin(uint type) { return type == SHAPE_SPHERE ? frame.primitive_cou
 
 #if LANCER_PARAMETRIC_SURFACES
 #define LANCER_PARAMETRIC_LOOP(LIMIT, ON_HIT) \
-    LANCER_FAMILY_LOOP(SHAPE_PARAMETRIC, true, parametric_intersect(p, ray, t_min, limit, t, uv), LIMIT, ON_HIT)
+    LANCER_FAMILY_LOOP(SHAPE_PARAMETRIC, true, false, parametric_intersect(p, ray, t_min, limit, t, uv), LIMIT, ON_HIT)
 #else
 #define LANCER_PARAMETRIC_LOOP(LIMIT, ON_HIT)
 #endif
 #if LANCER_IMPLICIT_SURFACES
 #define LANCER_IMPLICIT_LOOP(LIMIT, ON_HIT) \
-    LANCER_FAMILY_LOOP(SHAPE_IMPLICIT, true, implicit_intersect(p, ray, t_min, limit, t, uv, error), LIMIT, ON_HIT)
+    LANCER_FAMILY_LOOP(SHAPE_IMPLICIT, true, false, implicit_intersect(p, ray, t_min, limit, t, uv, error), LIMIT, ON_HIT)
 #else
 #define LANCER_IMPLICIT_LOOP(LIMIT, ON_HIT)
 #endif
 
 // Every family's loop, in the order of the shape types.
 #define LANCER_FAMILY_LOOPS(LIMIT, ON_HIT)                                                                        \
-    LANCER_FAMILY_LOOP(SHAPE_SPHERE, SCENE_HAS_SPHERE, sphere_intersect(p, ray, t_min, limit, t), LIMIT, ON_HIT)       \
-    LANCER_FAMILY_LOOP(SHAPE_PLANE, SCENE_HAS_PLANE, plane_intersect(p, ray, t_min, limit, t), LIMIT, ON_HIT)          \
-    LANCER_FAMILY_LOOP(SHAPE_RECTANGLE, SCENE_HAS_RECTANGLE, rectangle_intersect(p, ray, t_min, limit, t, uv), LIMIT, ON_HIT) \
-    LANCER_FAMILY_LOOP(SHAPE_BOX, SCENE_HAS_BOX, box_intersect(p, ray, t_min, limit, t), LIMIT, ON_HIT)                \
-    LANCER_FAMILY_LOOP(SHAPE_BEZIER, SCENE_HAS_BEZIER, bezier_intersect(p, ray, t_min, limit, t, uv, error), LIMIT, ON_HIT) \
+    LANCER_FAMILY_LOOP(SHAPE_SPHERE, SCENE_HAS_SPHERE, SPHERES_BOXED, sphere_intersect(p, ray, t_min, limit, t), LIMIT, ON_HIT) \
+    LANCER_FAMILY_LOOP(SHAPE_PLANE, SCENE_HAS_PLANE, false, plane_intersect(p, ray, t_min, limit, t), LIMIT, ON_HIT)    \
+    LANCER_FAMILY_LOOP(SHAPE_RECTANGLE, SCENE_HAS_RECTANGLE, RECTANGLES_BOXED,                                     \
+                       rectangle_intersect(p, ray, t_min, limit, t, uv), LIMIT, ON_HIT)                            \
+    LANCER_FAMILY_LOOP(SHAPE_BOX, SCENE_HAS_BOX, BOXES_BOXED, box_intersect(p, ray, t_min, limit, t), LIMIT, ON_HIT)   \
+    LANCER_FAMILY_LOOP(SHAPE_BEZIER, SCENE_HAS_BEZIER, false, bezier_intersect(p, ray, t_min, limit, t, uv, error), LIMIT, ON_HIT) \
     LANCER_PARAMETRIC_LOOP(LIMIT, ON_HIT)                                                                        \
     LANCER_IMPLICIT_LOOP(LIMIT, ON_HIT)
 

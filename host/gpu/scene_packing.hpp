@@ -4,6 +4,7 @@
 // analytic shapes beside patches or expression surfaces), the flattened BVH, materials, lights,
 // patch leaves, parametric cells, implicit surfaces, textures and patterns; and which optional
 // shader features the scene needs. Pure data conversion, no Vulkan.
+#include <array>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -17,6 +18,9 @@
 
 namespace lancer::gpu {
 
+// The shape types below SHAPE_BEZIER: spheres, planes, rectangles, boxes.
+inline constexpr std::size_t kAnalyticFamilies = SHAPE_BEZIER;
+
 struct PackedScene {
 #define LANCER_PACKED_ARRAY(NAME, slot, kind, Element, member, reader, what) std::vector<Element> member;
     LANCER_SCENE_ARRAYS(LANCER_PACKED_ARRAY)
@@ -26,6 +30,9 @@ struct PackedScene {
     // Objects the GPU's float cannot resolve at their distance from the anchor: for the notes.
     std::vector<std::string> float_notes;
     uint unbounded_count = 0;
+    // By shape type, the bounds of the spheres, rectangles and boxes outside the BVH (planes have
+    // none): the shader skips a family's loop for rays that miss its box (scene.glsl).
+    std::array<Aabb, kAnalyticFamilies> family_bounds{};
     uint photon_count = 0;  // photons per pass, with photon mapping
     // The scene's shape families and shading features: has_bezier, has_bvh, has_textures, ...
     // (output_hits and check_loop_limit are the renderer's to set).
