@@ -238,7 +238,9 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
             uint, plane_end,       /* (SHAPE_SPHERE ... SHAPE_IMPLICIT); the next family starts there, */ \
             uint, rectangle_end)   /* the first at primitive_count - unbounded_count (scene.glsl) */ \
     SCALARS(uint, box_end, uint, bezier_end, uint, parametric_end, uint, reserved0)               \
-    VEC4S(family_lo, 4) VEC4S(family_hi, 4) /* by shape type: a box around the spheres, rectangles, boxes outside the BVH */
+    VEC4S(family_lo, 8) VEC4S(family_hi, 8) /* [2 type], [2 type + 1]: boxes around the two halves of the */ \
+    SCALARS(uint, sphere_split, uint, reserved1,   /* spheres, rectangles, boxes outside the BVH, which end */ \
+            uint, rectangle_split, uint, box_split) /* and start at *_split (gpu/family_boxes.hpp) */
 
 // A light as photon mapping sees it (one per Light, in the same order).
 #define LANCER_ROWS_Emitter(VEC4, VEC4S, SCALARS)                                                   \
@@ -423,9 +425,12 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(SCENE_HAS_PHOTONS, 16, has_photons, true)     /* photon mapping: gather at diffuse hits */ \
     X(SCENE_HAS_RATIONAL_PATCHES, 17, has_rational_patches, true) /* a Bezier leaf's weights not all 1 */ \
     X(BVH_HAS_ANALYTIC, 18, bvh_has_analytic, true) /* a sphere, rectangle or box in the BVH; else all outside it */ \
-    X(SPHERES_BOXED, 19, spheres_boxed, true)       /* a ray that misses FrameParams::family_lo, hi[type] */ \
-    X(RECTANGLES_BOXED, 20, rectangles_boxed, true) /* skips that family's loop (scene.glsl): set where 2 or */ \
-    X(BOXES_BOXED, 21, boxes_boxed, true)           /* more of its kind are outside the BVH */
+    X(SPHERES_BOXED, 19, spheres_boxed, true)       /* a ray that misses the box around a family outside */ \
+    X(RECTANGLES_BOXED, 20, rectangles_boxed, true) /* the BVH (FrameParams::family_lo, hi) skips its loop */ \
+    X(BOXES_BOXED, 21, boxes_boxed, true)           /* (scene.glsl); with *_SPLIT, the family in two halves, */ \
+    X(SPHERES_SPLIT, 22, spheres_split, true)       /* each with a box: a ray that misses one skips that */ \
+    X(RECTANGLES_SPLIT, 23, rectangles_split, true) /* half (scene_packing.cpp says where either pays) */ \
+    X(BOXES_SPLIT, 24, boxes_split, true)
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

@@ -31,12 +31,6 @@ namespace {
 constexpr std::size_t kMinPrimitivesForBvh = 16;
 // At most this many spheres, rectangles and boxes stay outside a BVH of expensive shapes.
 constexpr std::size_t kMaxAnalyticOutsideBvh = 8;
-// The analytic families outside a BVH get a box around them (PackedScene::family_bounds) where
-// they have at least this many members and their box's area is at most this share of the box
-// around every bounded primitive (the odds that a ray entering that box enters theirs).
-constexpr std::size_t kMinBoxedFamily = 3;
-constexpr double kMaxBoxedFamilyArea = 0.5;
-
 bool is_analytic(uint type) { return type == SHAPE_SPHERE || type == SHAPE_RECTANGLE || type == SHAPE_BOX; }
 
 vec4 v4(const dvec3& v, double w = 0.0) { return vec4(float(v.x), float(v.y), float(v.z), float(w)); }
@@ -392,27 +386,31 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         expensive |= p.type == SHAPE_BEZIER || p.type == SHAPE_PARAMETRIC || p.type == SHAPE_IMPLICIT;
     }
     const bool analytic_outside = expensive && analytic <= kMaxAnalyticOutsideBvh;
-    std::vector<Primitive> bounded, unbounded;
+    std::vector<Primitive> bounded;
+    std::vector<std::pair<Primitive, std::optional<Aabb>>> unbounded;
     std::vector<Aabb> boxes;
-    std::array<std::size_t, kAnalyticFamilies> outside{};
     for (const auto& [p, box] : prims) {
         if (use_bvh && box && !(analytic_outside && is_analytic(p.type))) {
             bounded.push_back(p);
             boxes.push_back(*box);
         } else {
-            unbounded.push_back(p);
-            if (box && p.type < kAnalyticFamilies) {
-                packed.family_bounds[p.type].extend(*box);
-                ++outside[p.type];
-            }
+            unbounded.emplace_back(p, box);
         }
     }
     Bvh built;
     const Bvh& bvh = options.cache ? options.cache->build(boxes) : (built = build_bvh(boxes));
     for (std::uint32_t index : bvh.order) packed.primitives.push_back(bounded[index]);
     // By family, so that the shader tests each family in a loop of its own (scene.glsl).
-    std::stable_sort(unbounded.begin(), unbounded.end(), [](const Primitive& a, const Primitive& b) { return a.type < b.type; });
-    packed.primitives.insert(packed.primitives.end(), unbounded.begin(), unbounded.end());
+    std::stable_sort(unbounded.begin(), unbounded.end(), [](const auto& a, const auto& b) { return a.first.type < b.first.type; });
+    Aabb everything;
+    for (const auto& [p, box] : prims)
+        if (box) everything.extend(*box);
+    for (uint type : {SHAPE_SPHERE, SHAPE_RECTANGLE, SHAPE_BOX}) {
+        auto begin = std::find_if(unbounded.begin(), unbounded.end(), [&](const auto& e) { return e.first.type == type; });
+        auto end = std::find_if(begin, unbounded.end(), [&](const auto& e) { return e.first.type != type; });
+        packed.families[type] = box_family(std::span(begin, end), everything);
+    }
+    for (const auto& e : unbounded) packed.primitives.push_back(e.first);
     packed.unbounded_count = static_cast<uint>(unbounded.size());
     for (const lancer::BvhNode& n : bvh.nodes) {
         gpu::BvhNode g{};
@@ -440,19 +438,12 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         f.has_rectangle |= p.type == SHAPE_RECTANGLE;
         f.has_box |= p.type == SHAPE_BOX;
     }
-    // A family box pays where it stands for several tests and rays often miss it; around one
-    // shape, or around walls that enclose everything (the Cornell box: 1.05x the time), it is
-    // one more test.
-    Aabb everything;
-    for (const auto& [p, box] : prims)
-        if (box) everything.extend(*box);
-    auto boxed = [&](uint type) {
-        return outside[type] >= kMinBoxedFamily &&
-               packed.family_bounds[type].surface_area() <= kMaxBoxedFamilyArea * everything.surface_area();
-    };
-    f.spheres_boxed = boxed(SHAPE_SPHERE);
-    f.rectangles_boxed = boxed(SHAPE_RECTANGLE);
-    f.boxes_boxed = boxed(SHAPE_BOX);
+    f.spheres_boxed = packed.families[SHAPE_SPHERE].boxed;
+    f.rectangles_boxed = packed.families[SHAPE_RECTANGLE].boxed;
+    f.boxes_boxed = packed.families[SHAPE_BOX].boxed;
+    f.spheres_split = packed.families[SHAPE_SPHERE].split;
+    f.rectangles_split = packed.families[SHAPE_RECTANGLE].split;
+    f.boxes_split = packed.families[SHAPE_BOX].split;
     f.has_bezier = !packed.patches.empty();
     for (const PatchLeaf& leaf : packed.patches)
         for (const vec4& point : leaf.points) f.has_rational_patches |= point.w != 1.0f;
@@ -538,10 +529,16 @@ FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {
         while (i < packed.primitives.size() && packed.primitives[i].type <= type) ++i;
         *ends[type] = static_cast<uint>(i);
     }
-    for (std::size_t type = 0; type < packed.family_bounds.size(); ++type) {
-        const Aabb& box = packed.family_bounds[type];
-        pack_box(box.empty() ? Aabb{dvec3(0.0), dvec3(0.0)} : box, f.family_lo[type], f.family_hi[type]);
+    // The family boxes (family_boxes.hpp): two per family, the second unused unless it is split.
+    for (std::size_t type = 0; type < packed.families.size(); ++type) {
+        for (int h = 0; h < 2; ++h) {
+            const Aabb& box = packed.families[type].halves[h];
+            pack_box(box.empty() ? Aabb{dvec3(0.0), dvec3(0.0)} : box, f.family_lo[2 * type + h], f.family_hi[2 * type + h]);
+        }
     }
+    f.sphere_split = f.primitive_count - f.unbounded_count + packed.families[SHAPE_SPHERE].split_at;
+    f.rectangle_split = f.plane_end + packed.families[SHAPE_RECTANGLE].split_at;
+    f.box_split = f.rectangle_end + packed.families[SHAPE_BOX].split_at;
     f.loop_probe = 2;
     return f;
 }

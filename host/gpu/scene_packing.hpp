@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "accel/bvh.hpp"
+#include "gpu/family_boxes.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/memory_budget.hpp"
 #include "render/renderer.hpp"
@@ -30,9 +31,9 @@ struct PackedScene {
     // Objects the GPU's float cannot resolve at their distance from the anchor: for the notes.
     std::vector<std::string> float_notes;
     uint unbounded_count = 0;
-    // By shape type, the bounds of the spheres, rectangles and boxes outside the BVH (planes have
-    // none): the shader skips a family's loop for rays that miss its box (scene.glsl).
-    std::array<Aabb, kAnalyticFamilies> family_bounds{};
+    // By shape type, the boxes around the spheres, rectangles and boxes outside the BVH (planes
+    // have none; gpu/family_boxes.hpp).
+    std::array<FamilyBoxes, kAnalyticFamilies> families{};
     uint photon_count = 0;  // photons per pass, with photon mapping
     // The scene's shape families and shading features: has_bezier, has_bvh, has_textures, ...
     // (output_hits and check_loop_limit are the renderer's to set).

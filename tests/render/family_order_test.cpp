@@ -1,7 +1,7 @@
 // The primitives outside the BVH reach the GPU sorted by shape family, with the frame saying
 // where each family ends: shaders/scene.glsl tests each family in a loop of its own, so a
 // primitive outside its family's range would never be tested. Beside expensive shapes in a BVH,
-// a few analytic ones stay outside it. Families of several get a box around them. (That the pictures do not depend on the order is the
+// a few analytic ones stay outside it. (That the pictures do not depend on the order is the
 // image tests' business: ties go by a stable key.)
 #include <string>
 
@@ -139,38 +139,6 @@ TEST(FamilyOrder, AnalyticShapesAloneAreAllInTheBvh) {
     EXPECT_TRUE(packed.features.bvh_has_analytic);
     EXPECT_EQ(where(packed).first, std::string(20, '0' + gpu::SHAPE_SPHERE));
     EXPECT_EQ(where(packed).second, "1");  // the plane
-}
-
-// A family of three or more analytic shapes outside the BVH gets a box that holds each member's
-// float bounds (a ray missing it skips the family's loop, so a box one ulp short would lose
-// silhouettes); a lone shape, or walls around everything, gets none.
-TEST(FamilyOrder, FamiliesOfSeveralGetABoxThatHoldsThem) {
-    const Scene scene = test::scene_from_text(kMixed);
-    const gpu::PackedScene packed = gpu::pack_scene(scene);
-    EXPECT_TRUE(packed.features.spheres_boxed) << "three spheres in 0.4 of the scene's box area";
-    EXPECT_FALSE(packed.features.rectangles_boxed) << "one rectangle";
-    EXPECT_FALSE(packed.features.boxes_boxed) << "one box";
-    const gpu::FrameParams frame = gpu::pack_frame(scene, packed);
-    const gpu::vec4 lo = frame.family_lo[gpu::SHAPE_SPHERE], hi = frame.family_hi[gpu::SHAPE_SPHERE];
-    for (uint i = 0; i < frame.sphere_end; ++i) {
-        const gpu::vec4 s = packed.primitives[i].p0;  // (centre, radius) as the shader reads them
-        for (int k = 0; k < 3; ++k) {
-            EXPECT_LT(lo[k], double(s[k]) - double(s.w)) << "sphere " << i << " axis " << k;
-            EXPECT_GT(hi[k], double(s[k]) + double(s.w)) << "sphere " << i << " axis " << k;
-        }
-    }
-    EXPECT_NEAR(lo.x, -2.5, 1e-5);  // no larger than the spheres need, but for the BVH's padding
-    EXPECT_NEAR(hi.y, 1.0, 1e-5);
-
-    std::string walls = kCameraAndMaterial;
-    for (int k = 0; k < 3; ++k)
-        walls += fmt::format("[[object]]\ntype = \"rectangle\"\ncorner = [-2, {}, -2]\nedge_u = [4, 0, 0]\nedge_v = [0, 0, 4]\n"
-                             "material = \"m\"\n",
-                             k - 1);
-    walls += small_sphere(0, 0);
-    const gpu::PackedScene room = gpu::pack_scene(test::scene_from_text(walls));
-    EXPECT_FALSE(room.features.rectangles_boxed) << "three rectangles around everything";
-    EXPECT_FALSE(room.features.spheres_boxed) << "one sphere";
 }
 
 }  // namespace
