@@ -10,32 +10,17 @@
 #include <gtest/gtest.h>
 
 #include "gpu/scene_packing.hpp"
+#include "render/packing_scenes.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
 namespace {
 
-const std::string kBoxesCameraAndMaterial = R"(
-    [camera]
-    eye = [0, 1, -12]
-    look_at = [0, 0, 0]
-    [material.m]
-    color = [0.8, 0.5, 0.2]
-)";
+using test::kPackingCameraAndMaterial;
+using test::sphere_object;
 
-std::string boxed_sphere(double x, double y, double r) {
-    return fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, {}, 0]\nradius = {}\nmaterial = \"m\"\n", x, y, r);
-}
-
-// A floor rectangle (16 x 16) under the objects, so that the scene's box is larger than theirs.
-const std::string kWideFloor = R"(
-    [[object]]
-    type = "rectangle"
-    corner = [-8, -1, -8]
-    edge_u = [16, 0, 0]
-    edge_v = [0, 0, 16]
-    material = "m"
-)";
+// A rectangle under the objects, so that the scene's box is larger than theirs.
+const std::string kWideFloor = test::floor_rectangle(8);
 
 // Every member of the family in [first, end) lies inside the packed box `half` (strictly: the
 // box is rounded outward and padded like the BVH's).
@@ -51,7 +36,7 @@ void expect_holds(const gpu::PackedScene& packed, const gpu::FrameParams& frame,
 }
 
 TEST(FamilyBoxes, ThreeSpheresGetOneBoxThatHoldsThem) {
-    const Scene scene = test::scene_from_text(kBoxesCameraAndMaterial + kWideFloor + boxed_sphere(-2, 0, 0.5) + boxed_sphere(0, 0, 1) + boxed_sphere(2, 0, 0.5));
+    const Scene scene = test::scene_from_text(kPackingCameraAndMaterial + kWideFloor + sphere_object(-2, 0, 0.5) + sphere_object(0, 0, 1) + sphere_object(2, 0, 0.5));
     const gpu::PackedScene packed = gpu::pack_scene(scene);
     EXPECT_TRUE(packed.features.spheres_boxed);
     EXPECT_FALSE(packed.features.spheres_split) << "fewer than five";
@@ -66,8 +51,8 @@ TEST(FamilyBoxes, ThreeSpheresGetOneBoxThatHoldsThem) {
 
 // Six spheres in two clusters: cut between them, each half's box around its own three.
 TEST(FamilyBoxes, FiveOrMoreAreCutInTwoHalvesWithABoxEach) {
-    std::string text = kBoxesCameraAndMaterial + kWideFloor;
-    for (double x : {4.0, -4.5, 5.0, -3.5, 4.5, -4.0}) text += boxed_sphere(x, 0, 0.3);
+    std::string text = kPackingCameraAndMaterial + kWideFloor;
+    for (double x : {4.0, -4.5, 5.0, -3.5, 4.5, -4.0}) text += sphere_object(x, 0, 0.3);
     const Scene scene = test::scene_from_text(text);
     const gpu::PackedScene packed = gpu::pack_scene(scene);
     ASSERT_TRUE(packed.features.spheres_boxed);
@@ -84,22 +69,22 @@ TEST(FamilyBoxes, FiveOrMoreAreCutInTwoHalvesWithABoxEach) {
 
 TEST(FamilyBoxes, NoBoxWhereItWouldNotPay) {
     // Two spheres: one box test more, and at most one sphere test less.
-    const gpu::PackedScene two = gpu::pack_scene(test::scene_from_text(kBoxesCameraAndMaterial + kWideFloor + boxed_sphere(-1, 0, 0.5) + boxed_sphere(1, 0, 0.5)));
+    const gpu::PackedScene two = gpu::pack_scene(test::scene_from_text(kPackingCameraAndMaterial + kWideFloor + sphere_object(-1, 0, 0.5) + sphere_object(1, 0, 0.5)));
     EXPECT_FALSE(two.features.spheres_boxed);
     // Spheres filling most of the scene: a ray that enters the scene's box enters theirs.
     const gpu::PackedScene spread =
-        gpu::pack_scene(test::scene_from_text(kBoxesCameraAndMaterial + boxed_sphere(-4, 0, 1) + boxed_sphere(0, 0, 1) + boxed_sphere(4, 0, 1)));
+        gpu::pack_scene(test::scene_from_text(kPackingCameraAndMaterial + sphere_object(-4, 0, 1) + sphere_object(0, 0, 1) + sphere_object(4, 0, 1)));
     EXPECT_FALSE(spread.features.spheres_boxed);
     // Walls around everything (the Cornell box): every ray is inside their box.
-    std::string room = kBoxesCameraAndMaterial + boxed_sphere(0, 0, 0.2);
+    std::string room = kPackingCameraAndMaterial + sphere_object(0, 0, 0.2);
     for (int k = 0; k < 3; ++k)
         room += fmt::format("[[object]]\ntype = \"rectangle\"\ncorner = [-2, {}, -2]\nedge_u = [4, 0, 0]\nedge_v = [0, 0, 4]\n"
                             "material = \"m\"\n",
                             k - 1);
     EXPECT_FALSE(gpu::pack_scene(test::scene_from_text(room)).features.rectangles_boxed);
     // In a BVH (16 or more bounded shapes), nothing is outside it to box.
-    std::string many = kBoxesCameraAndMaterial;
-    for (int k = 0; k < 20; ++k) many += boxed_sphere(k, 0, 0.2);
+    std::string many = kPackingCameraAndMaterial;
+    for (int k = 0; k < 20; ++k) many += sphere_object(k, 0, 0.2);
     const gpu::PackedScene bvh = gpu::pack_scene(test::scene_from_text(many));
     EXPECT_FALSE(bvh.nodes.empty());
     EXPECT_FALSE(bvh.features.spheres_boxed);

@@ -10,31 +10,18 @@
 #include <gtest/gtest.h>
 
 #include "gpu/scene_packing.hpp"
+#include "render/packing_scenes.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
 namespace {
 
-// A camera and the material every object uses.
-const std::string kCameraAndMaterial = R"(
-    [camera]
-    eye = [0, 1, -6]
-    look_at = [0, 0, 0]
-    [material.m]
-    color = [0.8, 0.5, 0.2]
-)";
+using test::kPackingCameraAndMaterial;
 
 // A rectangle under the objects.
-const std::string kFloorRectangle = R"(
-    [[object]]
-    type = "rectangle"
-    corner = [-3, -1, -3]
-    edge_u = [6, 0, 0]
-    edge_v = [0, 0, 6]
-    material = "m"
-)";
+const std::string kFloorRectangle = test::floor_rectangle(3);
 
-const std::string kMixed = kCameraAndMaterial + R"(
+const std::string kMixed = kPackingCameraAndMaterial + R"(
     [[object]]
     type = "sphere"
     center = [0, 0, 0]
@@ -86,13 +73,11 @@ TEST(FamilyOrder, PrimitivesOutsideTheBvhAreSortedByFamilyWithTheirEnds) {
 }
 
 // A small sphere object centred at (x, y, 0).
-std::string small_sphere(int x, int y) {
-    return fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, {}, 0]\nradius = 0.2\nmaterial = \"m\"\n", x, y);
-}
+std::string small_sphere(int x, int y) { return test::sphere_object(x, y, 0.2); }
 
 // A bicubic patch (16 leaves with subdivision 2), and `spheres` small spheres beside it.
 std::string patch_and_spheres(int spheres) {
-    std::string text = kCameraAndMaterial + kFloorRectangle + R"(
+    std::string text = kPackingCameraAndMaterial + kFloorRectangle + R"(
     [[object]]
     type = "bezier"
     subdivision = 2
@@ -131,7 +116,7 @@ TEST(FamilyOrder, FewAnalyticShapesStayOutsideABvhOfPatches) {
 
 // Without expensive shapes, everything bounded is in the BVH.
 TEST(FamilyOrder, AnalyticShapesAloneAreAllInTheBvh) {
-    std::string text = kCameraAndMaterial;
+    std::string text = kPackingCameraAndMaterial;
     for (int k = 0; k < 20; ++k)
         text += small_sphere(k, 0);
     text += "[[object]]\ntype = \"plane\"\nnormal = [0, 1, 0]\nmaterial = \"m\"\n";
