@@ -429,7 +429,7 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(RECTANGLES_BOXED, 20, rectangles_boxed, true) /* the BVH (FrameParams::family_lo, hi) skips its loop */ \
     X(BOXES_BOXED, 21, boxes_boxed, true)           /* (scene.glsl); with *_SPLIT, the family in two halves, */ \
     X(SPHERES_SPLIT, 22, spheres_split, true)       /* each with a box: a ray that misses one skips that */ \
-    X(RECTANGLES_SPLIT, 23, rectangles_split, true) /* half (scene_packing.cpp says where either pays) */ \
+    X(RECTANGLES_SPLIT, 23, rectangles_split, true) /* half (gpu/family_boxes.cpp says where either pays) */ \
     X(BOXES_SPLIT, 24, boxes_split, true)
 
 #ifdef __cplusplus

@@ -183,10 +183,10 @@ uint family_split(uint type) {
 }
 
 // One family's loop: INTERSECT tests p against the ray up to `limit` (LIMIT), setting t (and
-// uv, error where the family has them); ON_HIT then uses the hit. BOXED, SPLIT: its boxes. With a BVH, only planes and
-// (without BVH_HAS_ANALYTIC) the analytic families, SHAPE_SPHERE to SHAPE_BOX, are outside it.
-// The condition on the specialisation constants alone is one the host removes
-// (spirv_specialize.hpp) where the family is absent.
+// uv, error where the family has them); ON_HIT then uses the hit. BOXED and SPLIT say whether it
+// has a box or two (above). With a BVH, only planes and (without BVH_HAS_ANALYTIC) the analytic
+// families, SHAPE_SPHERE to SHAPE_BOX, are outside it. The conditions on the specialisation
+// constants alone are ones the host removes (spirv_specialize.hpp) where they are false.
 #define LANCER_FAMILY_LOOP(TYPE, IN_SCENE, BOXED, SPLIT, INTERSECT, LIMIT, ON_HIT)                   \
     if ((IN_SCENE) && (!SCENE_HAS_BVH || TYPE == SHAPE_PLANE || (!BVH_HAS_ANALYTIC && TYPE <= SHAPE_BOX))) { \
         uint first = family_begin(TYPE), last = family_end(TYPE);                                  \

@@ -31,6 +31,7 @@ namespace {
 constexpr std::size_t kMinPrimitivesForBvh = 16;
 // At most this many spheres, rectangles and boxes stay outside a BVH of expensive shapes.
 constexpr std::size_t kMaxAnalyticOutsideBvh = 8;
+
 bool is_analytic(uint type) { return type == SHAPE_SPHERE || type == SHAPE_RECTANGLE || type == SHAPE_BOX; }
 
 vec4 v4(const dvec3& v, double w = 0.0) { return vec4(float(v.x), float(v.y), float(v.z), float(w)); }
