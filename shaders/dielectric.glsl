@@ -110,7 +110,9 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media, uint light) {
         // code, which lavapipe then compiles, even where it is dead.)
         const bool any_hit_blocks = !SCENE_HAS_TRANSPARENCY || SCENE_HAS_PHOTONS;
         bool hinted = SHADOW_HINTS && any_hit_blocks && light < 4u;
-        if (!trace_scene(ray, 0.0, dist, any_hit_blocks, hinted ? shadow_blockers[light] : NO_PRIMITIVE, best)) {
+        // The light's direction grid (point and spot lights: q is the light's position).
+        uint grid = any_hit_blocks && DIRECTION_GRID_LIGHT + light < DIRECTION_GRID_COUNT ? DIRECTION_GRID_LIGHT + light : NO_GRID;
+        if (!trace_scene(ray, 0.0, dist, any_hit_blocks, hinted ? shadow_blockers[light] : NO_PRIMITIVE, grid, best)) {
             return any_hit_blocks ? through : through * absorption_over(medium, length(q - from));
         }
         if (hinted) shadow_blockers[light] = best.prim;

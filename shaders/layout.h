@@ -45,6 +45,9 @@ LANCER_CONST SHAPE_BEZIER = 4;     // data = index of its PatchLeaf
 LANCER_CONST SHAPE_PARAMETRIC = 5; // data = index of its ParametricCell, p0 = (box min, 0), p1 = (box max, 0)
 LANCER_CONST SHAPE_IMPLICIT = 6;   // data = index of its ImplicitInfo, p0 = (box min, 0), p1 = (box max, 0) in its own coordinates
 
+// A primitive index that names none.
+LANCER_CONST NO_PRIMITIVE = 0xffffffffu;
+
 // Material::pattern values.
 LANCER_CONST PATTERN_SOLID = 0;
 LANCER_CONST PATTERN_CHECKER = 1;
@@ -67,6 +70,14 @@ LANCER_CONST PATTERN_MAX_COLORS = 8;  // stops of a colour ramp (scene/limits.hp
 // Material::highlight values.
 LANCER_CONST HIGHLIGHT_PHONG = 0;
 LANCER_CONST HIGHLIGHT_BLINN = 1;
+
+// The direction grids (DirectionGrid): the eye's, its mirror image's in a flat mirror
+// (FrameParams::mirror_plane), then one for each of the first lights.
+LANCER_CONST DIRECTION_GRID_EYE = 0;
+LANCER_CONST DIRECTION_GRID_MIRROR = 1;
+LANCER_CONST DIRECTION_GRID_LIGHT = 2;
+LANCER_CONST DIRECTION_GRID_COUNT = 8;
+LANCER_CONST NO_GRID = 0xffffffffu;
 
 // Light::type values.
 LANCER_CONST LIGHT_POINT = 0;
@@ -218,6 +229,21 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
             uint, jitter,  /* area: 1 = each sample at a hashed place in its cell, 0 = at its centre */ \
             uint, reserved)
 
+// A grid over the directions from one point, the eye or a point or spot light
+// (gpu/direction_grids.hpp): a ray along a half-line from `origin` (a camera ray, or a shadow
+// ray's segment, which ends at its light) can hit only the primitives its direction's cell lists.
+// A direction w has the cell of (dot(w, across_u), dot(w, across_v)) / dot(w, axis); none where
+// dot(w, axis) <= 0 or outside the window: no primitive of the BVH lies that way.
+#define LANCER_ROWS_DirectionGrid(VEC4, VEC4S, SCALARS)                                             \
+    VEC4(origin)   /* xyz */                                                                        \
+    VEC4(axis)     /* xyz: unit */                                                                  \
+    VEC4(across_u) /* xyz: unit, across the axis */                                                 \
+    VEC4(across_v) /* xyz: unit, across both */                                                     \
+    VEC4(window)   /* (u0, v0, columns per unit of u, rows per unit of v) */                        \
+    SCALARS(uint, columns, uint, rows,                                                              \
+            uint, first_cell, /* in grid_cells: the starts of its columns * rows lists, then their end */ \
+            uint, valid)      /* 0: its rays go through the BVH */
+
 // Per-render constants (a uniform block). The camera is given as the vectors from which the
 // shader forms ray directions: dir = forward + ndc_x * right + ndc_y * up, with ndc in [-1, 1].
 #define LANCER_ROWS_FrameParams(VEC4, VEC4S, SCALARS)                                             \
@@ -237,7 +263,8 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
             uint, sphere_end,      /* the unbounded primitives, sorted by type: where each family's end */ \
             uint, plane_end,       /* (SHAPE_SPHERE ... SHAPE_IMPLICIT); the next family starts there, */ \
             uint, rectangle_end)   /* the first at primitive_count - unbounded_count (scene.glsl) */ \
-    SCALARS(uint, box_end, uint, bezier_end, uint, parametric_end, uint, reserved0)               \
+    SCALARS(uint, box_end, uint, bezier_end, uint, parametric_end,                                \
+            uint, mirror_plane) /* a flat mirror whose reflections of camera rays take DIRECTION_GRID_MIRROR, or NO_PRIMITIVE */ \
     VEC4S(family_lo, 8) VEC4S(family_hi, 8) /* [2 type], [2 type + 1]: boxes around the two halves of the */ \
     SCALARS(uint, sphere_split, uint, reserved1,   /* spheres, rectangles, boxes outside the BVH, which end */ \
             uint, rectangle_split, uint, box_split) /* and start at *_split (gpu/family_boxes.hpp) */
@@ -315,6 +342,7 @@ LANCER_STRUCT(Material)
 LANCER_STRUCT(TextureInfo)
 LANCER_STRUCT(PatternInfo)
 LANCER_STRUCT(Light)
+LANCER_STRUCT(DirectionGrid)
 LANCER_STRUCT(FrameParams)
 LANCER_STRUCT(BandParams)
 LANCER_STRUCT(Emitter)
@@ -361,7 +389,10 @@ LANCER_CONST RESOURCE_INT = 4;
     X(PERMUTATION, 11, RESOURCE_INT, int, permutation, permutation_at, "noise permutation") /* Perlin's */ \
     X(IMPLICITS, 12, RESOURCE_ROWS, ImplicitInfo, implicits, implicit_at, "implicit surfaces")          \
     X(ENERGY, 13, RESOURCE_UINT, uint, energy_tables, energy_table_at, "microfacet energy tables") /* float bits */ \
-    X(EMITTERS, 14, RESOURCE_ROWS, Emitter, emitters, emitter_at, "photon emitters")
+    X(EMITTERS, 14, RESOURCE_ROWS, Emitter, emitters, emitter_at, "photon emitters")                   \
+    X(GRIDS, 31, RESOURCE_ROWS, DirectionGrid, grids, grid_at, "direction grids")                        \
+    X(GRID_CELLS, 32, RESOURCE_UINT, uint, grid_cells, grid_cell_at, "direction grid cells")             \
+    X(GRID_ENTRIES, 33, RESOURCE_UINT, uint, grid_entries, grid_entry_at, "direction grid entries") /* pairs: primitive, float bits of its nearest distance */
 
 #define LANCER_RESOURCES(X)                                                          \
     X(FRAME, 0, RESOURCE_UNIFORM, FrameParams, frame, frame, "frame parameters")     \
@@ -430,7 +461,8 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(BOXES_BOXED, 21, boxes_boxed, true)           /* (scene.glsl); with *_SPLIT, the family in two halves, */ \
     X(SPHERES_SPLIT, 22, spheres_split, true)       /* each with a box: a ray that misses one skips that */ \
     X(RECTANGLES_SPLIT, 23, rectangles_split, true) /* half (gpu/family_boxes.cpp says where either pays) */ \
-    X(BOXES_SPLIT, 24, boxes_split, true)
+    X(BOXES_SPLIT, 24, boxes_split, true)                                                            \
+    X(DIRECTION_GRIDS, 25, direction_grids, true)   /* camera and shadow rays through DirectionGrids, not the BVH */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");
@@ -444,6 +476,7 @@ LANCER_ASSERT_SIZE(Material)
 LANCER_ASSERT_SIZE(TextureInfo)
 LANCER_ASSERT_SIZE(PatternInfo)
 LANCER_ASSERT_SIZE(Light)
+LANCER_ASSERT_SIZE(DirectionGrid)
 LANCER_ASSERT_SIZE(FrameParams)
 LANCER_ASSERT_SIZE(BandParams)
 LANCER_ASSERT_SIZE(Emitter)

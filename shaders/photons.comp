@@ -100,7 +100,7 @@ void main() {
     uint bounces = 0u, passes = 0u;
     while (bounces < photon_params.max_bounces) {
         Hit hit;
-        if (!closest_hit(ray, 0.0, hit)) return;
+        if (!closest_hit(ray, 0.0, NO_GRID, hit)) return;
         vec3 p = ray.origin + hit.t * ray.dir;
         if (SCENE_HAS_TRANSPARENCY && media.count > 0u) power *= absorption_over(innermost(media), length(p - from));
         vec3 n = hit.normal;

@@ -91,8 +91,6 @@ vec3 primitive_normal(uint index, Ray ray, float t, vec3 p, vec2 uv, inout float
 
 const int BVH_STACK_SIZE = 64;  // the builder bounds the tree depth by 60 (host/accel/bvh.cpp)
 
-const uint NO_PRIMITIVE = 0xffffffffu;
-
 // Two hits this close are one point found twice (neighbouring patch leaves and parametric cells
 // share their edges): within their searches' error bounds of each other, or 1e-6 of t for the
 // rounding of roots found to float's noise. The primitive with the smaller stable key wins, so
@@ -271,9 +269,39 @@ bool lean_unbounded_hit(Ray ray, float t_min, uint hint, inout Nearest best) {
     return false;
 }
 
+// A camera ray, its reflection in a flat mirror or a shadow ray through direction grid g
+// (layout.h's DirectionGrid) instead of the BVH: a camera ray starts at the grid's origin, the
+// eye, and goes along ray.dir; a reflection goes along ray.dir on a half-line from the eye's
+// mirror image (the host's grid allows for its start just off the mirror); a shadow ray's segment
+// ends at its light, the grid's origin, so it lies along ray.origin - origin. The cell of that
+// direction lists every primitive of the BVH the ray can hit, nearest to the origin first: the
+// search ends at the first farther from the origin than the ray's start plus the best hit, or
+// than a shadow ray's start.
+bool grid_hit(DirectionGrid g, Ray ray, float t_min, bool any_hit, inout Nearest best) {
+    vec3 w = any_hit ? ray.origin - g.origin.xyz : ray.dir;
+    float z = dot(w, g.axis.xyz);
+    vec2 c = (vec2(dot(w, g.across_u.xyz), dot(w, g.across_v.xyz)) / z - g.window.xy) * g.window.zw;
+    uint first = 0u, last = 0u;
+    if (z > 0.0 && c.x >= 0.0 && c.y >= 0.0 && c.x < float(g.columns) && c.y < float(g.rows)) {
+        uint cell = g.first_cell + uint(c.y) * g.columns + uint(c.x);
+        first = grid_cell_at(cell);
+        last = grid_cell_at(cell + 1u);
+    }
+    float start = length(ray.origin - g.origin.xyz);  // 0 for a camera ray
+    for (uint e = first; e < last; ++e) {
+        if (uintBitsToFloat(grid_entry_at(2u * e + 1u)) > (any_hit ? start : start + reach(best))) break;
+        uint i = grid_entry_at(2u * e);
+        Primitive p = primitive_at(i);
+        if (any_hit ? blocks(i, p, ray, t_min, true, best) : consider_in_leaf(i, p, ray, t_min, best) && any_hit) return true;
+    }
+    return best.prim != NO_PRIMITIVE;
+}
+
 // Nearest hit in (t_min, t_max) over all primitives; with any_hit, the first hit found, and
-// primitive `hint` tested first (NO_PRIMITIVE: none; see SHADOW_HINTS).
-bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, out Nearest best) {
+// primitive `hint` tested first (NO_PRIMITIVE: none; see SHADOW_HINTS). `grid`: the direction
+// grid the ray may take instead of the BVH (DIRECTION_GRID_EYE for camera rays,
+// DIRECTION_GRID_LIGHT + k for shadow rays to light k), or NO_GRID.
+bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, uint grid, out Nearest best) {
     best = Nearest(t_max, NO_PRIMITIVE, vec2(0.0), 0.0);
     // The branch on CHEAP_SHAPES alone, a specialisation constant, is one the host removes
     // (spirv_specialize.hpp) before lavapipe sees the module.
@@ -285,6 +313,9 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, out
     }
     if (found) return true;
     if (!SCENE_HAS_BVH || frame.node_count == 0u) return best.prim != NO_PRIMITIVE;
+    if (DIRECTION_GRIDS) {  // a condition on the constant alone: the host removes it where false
+        if (grid != NO_GRID && grid_at(grid).valid != 0u) return grid_hit(grid_at(grid), ray, t_min, any_hit, best);
+    }
 
     vec3 inv_dir = safe_inverse(ray.dir);
     uint stack[BVH_STACK_SIZE];
@@ -361,9 +392,9 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, out
     return best.prim != NO_PRIMITIVE;
 }
 
-bool closest_hit(Ray ray, float t_min, out Hit hit) {
+bool closest_hit(Ray ray, float t_min, uint grid, out Hit hit) {
     Nearest best;
-    if (!trace_scene(ray, t_min, INFINITY, false, NO_PRIMITIVE, best)) return false;
+    if (!trace_scene(ray, t_min, INFINITY, false, NO_PRIMITIVE, grid, best)) return false;
     hit.t = best.t;
     hit.primitive = best.prim;
     hit.uv = best.uv;

@@ -50,10 +50,12 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
     uint passes = 0u;
     Branch pending[PENDING_SIZE];
     uint waiting = 0u;
+    uint grid = DIRECTION_GRID_EYE;  // the camera ray's
     for (;;) {
         rays += 1.0;
         Hit hit;
-        bool found = closest_hit(ray, 0.0, hit);
+        bool found = closest_hit(ray, 0.0, grid, hit);
+        grid = NO_GRID;
         if (SCENE_HAS_TRANSPARENCY && media.count > 0u) {
             weight *= absorption_over(innermost(media), found ? length(ray.origin + hit.t * ray.dir - from) : INFINITY);
         }
@@ -146,6 +148,8 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
                     weight = reflected.weight;
                     depth = reflected.depth;
                     goes_on = true;
+                    // A camera ray's reflection in the flat mirror (see FrameParams::mirror_plane).
+                    if (DIRECTION_GRIDS && depth == 1u && hit.primitive == frame.mirror_plane) grid = DIRECTION_GRID_MIRROR;
                 }
             }
         }
@@ -175,7 +179,7 @@ Ray camera_ray(vec2 s) {
 
 vec4 first_hit(vec2 s) {
     Hit hit;
-    if (!closest_hit(camera_ray(s), 0.0, hit)) return vec4(-1.0, 0.0, 0.0, -1.0);
+    if (!closest_hit(camera_ray(s), 0.0, DIRECTION_GRID_EYE, hit)) return vec4(-1.0, 0.0, 0.0, -1.0);
     return vec4(hit.t, surface_uv(hit), surface_part(hit));
 }
 

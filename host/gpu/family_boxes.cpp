@@ -35,7 +35,7 @@ FamilyBoxes box_family(std::span<PrimitiveWithBox> members, const Aabb& scene_bo
     family.split_at = static_cast<uint>(n);
     if (n < kMinSplit) return family;
     // Along the longest axis, the cut of least area times count (the surface area heuristic).
-    const dvec3 extent = whole.extent();
+    const glm::dvec3 extent = whole.extent();
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     std::stable_sort(members.begin(), members.end(),
                      [&](const auto& a, const auto& b) { return a.second->center()[axis] < b.second->center()[axis]; });

@@ -10,6 +10,7 @@
 
 #include "accel/bvh.hpp"
 #include "accel/shape_bounds.hpp"
+#include "gpu/direction_grids.hpp"
 #include "gpu/float_anchor.hpp"
 #include "core/finite.hpp"
 #include "core/perlin_permutation.hpp"
@@ -461,6 +462,34 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         f.has_spot_lights |= l.type == LightType::Spot;
         f.has_falloff |= l.falloff != Falloff::None;
     }
+    // Direction grids for camera and shadow rays, where every shape is cheap to test (the
+    // shader's CHEAP_SHAPES) and any hit blocks a shadow ray (no transparency).
+    bool cheap = true;
+    for (const Primitive& p : packed.primitives)
+        cheap &= p.type != SHAPE_BEZIER && p.type != SHAPE_PARAMETRIC && p.type != SHAPE_IMPLICIT;
+    f.direction_grids = f.has_bvh && cheap && !f.has_transparency;
+    if (f.direction_grids) {
+        std::vector<Aabb> packed_boxes;
+        packed_boxes.reserve(bvh.order.size());
+        for (std::uint32_t index : bvh.order) packed_boxes.push_back(boxes[index]);
+        // The eye as the shader has it (pack_frame), so that camera rays start at the grid's origin.
+        const CameraBasis cam = make_camera_basis(scene.camera, scene.render.width, scene.render.height);
+        const vec4 eye = v4(cam.eye);
+        // The first plane that is a flat mirror: its reflections of camera rays take a grid too.
+        std::optional<Mirror> mirror;
+        for (std::size_t i = packed.primitives.size() - packed.unbounded_count; i < packed.primitives.size() && !mirror; ++i) {
+            const Primitive& p = packed.primitives[i];
+            const lancer::Material& m = scene.materials[p.material];
+            if (p.type != SHAPE_PLANE || !(m.reflection > 0.0) || m.microfacet() || m.bump) continue;
+            mirror = Mirror{dvec3(p.p0.x, p.p0.y, p.p0.z), glm::normalize(dvec3(p.p1.x, p.p1.y, p.p1.z))};
+            packed.mirror_plane = static_cast<uint>(i);
+        }
+        DirectionGrids grids = direction_grids({dvec3(eye.x, eye.y, eye.z), cam.forward, cam.right, cam.up},
+                                               mirror ? &*mirror : nullptr, packed.lights, packed_boxes);
+        packed.grids = std::move(grids.grids);
+        packed.grid_cells = std::move(grids.cells);
+        packed.grid_entries = std::move(grids.entries);
+    }
     return packed;
 }
 
@@ -540,6 +569,7 @@ FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {
     f.sphere_split = f.primitive_count - f.unbounded_count + packed.families[SHAPE_SPHERE].split_at;
     f.rectangle_split = f.plane_end + packed.families[SHAPE_RECTANGLE].split_at;
     f.box_split = f.rectangle_end + packed.families[SHAPE_BOX].split_at;
+    f.mirror_plane = packed.mirror_plane;
     f.loop_probe = 2;
     return f;
 }

@@ -31,6 +31,8 @@ struct PackedScene {
     // Objects the GPU's float cannot resolve at their distance from the anchor: for the notes.
     std::vector<std::string> float_notes;
     uint unbounded_count = 0;
+    // The plane whose reflections of camera rays take the mirror's direction grid, or NO_PRIMITIVE.
+    uint mirror_plane = NO_PRIMITIVE;
     // By shape type, the boxes around the spheres, rectangles and boxes outside the BVH (planes
     // have none; gpu/family_boxes.hpp).
     std::array<FamilyBoxes, kAnalyticFamilies> families{};

@@ -90,7 +90,7 @@ void main() {
     float error = 0.0;
     for (int k = 0; k < 3; ++k) {
         Hit hit;
-        bool found = closest_hit(next, 0.0, hit);
+        bool found = closest_hit(next, 0.0, NO_GRID, hit);
         float t = found ? hit.t : -1.0, e = found ? hit.error : 0.0;
         if (k == 0) {
             if (!found) break;
