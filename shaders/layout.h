@@ -462,7 +462,8 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(SPHERES_SPLIT, 22, spheres_split, true)       /* each with a box: a ray that misses one skips that */ \
     X(RECTANGLES_SPLIT, 23, rectangles_split, true) /* half (gpu/family_boxes.cpp says where either pays) */ \
     X(BOXES_SPLIT, 24, boxes_split, true)                                                            \
-    X(DIRECTION_GRIDS, 25, direction_grids, true)   /* camera and shadow rays through DirectionGrids, not the BVH */
+    X(DIRECTION_GRIDS, 25, direction_grids, true)   /* camera and shadow rays through DirectionGrids, not the BVH */ \
+    X(GRIDS_ONLY, 26, grids_only, false)            /* every ray takes a grid: the BVH's traversal compiled out */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

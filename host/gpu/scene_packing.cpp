@@ -486,6 +486,16 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         }
         DirectionGrids grids = direction_grids({dvec3(eye.x, eye.y, eye.z), cam.forward, cam.right, cam.up},
                                                mirror ? &*mirror : nullptr, packed.lights, packed_boxes);
+        // Where every ray takes a grid, the shader leaves the BVH's traversal out: camera rays,
+        // the mirror's reflections of them (no other surface reflects: those reflections end at
+        // their first hit) and shadow rays to point and spot lights, each light with its grid.
+        auto valid = [&](uint k) { return grids.grids[k].valid != 0; };
+        bool every_ray = valid(DIRECTION_GRID_EYE) && (!mirror || valid(DIRECTION_GRID_MIRROR)) && !f.has_photons &&
+                         !f.has_microfacet && packed.lights.size() <= DIRECTION_GRID_COUNT - DIRECTION_GRID_LIGHT;
+        for (std::size_t k = 0; k < packed.lights.size() && every_ray; ++k) every_ray = valid(DIRECTION_GRID_LIGHT + uint(k));
+        for (std::size_t i = 0; i < packed.primitives.size() && every_ray; ++i)
+            every_ray = !(scene.materials[packed.primitives[i].material].reflection > 0.0) || i == packed.mirror_plane;
+        f.grids_only = every_ray;
         packed.grids = std::move(grids.grids);
         packed.grid_cells = std::move(grids.cells);
         packed.grid_entries = std::move(grids.entries);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <memory>
 #include <regex>
 #include <sstream>
@@ -130,7 +131,7 @@ protected:
     void TearDown() override {
         if (child && child->running()) {
             child->interrupt();
-            EXPECT_EQ(child->wait_exit(), 0) << log();
+            expect_clean_exit();
         }
         if (child) {
             EXPECT_EQ(log().find("validation"), std::string::npos) << log();
@@ -154,6 +155,24 @@ protected:
     void keys(const std::string& names) { ASSERT_EQ(xdotool("key --delay 20 " + names), 0); }
 
     std::string log() const { return child ? child->log() : ""; }
+    // Waits for the viewer to exit and expects status 0. In the sanitizer build one failure is
+    // not the viewer's: LeakSanitizer's own leak check at exit crashes now and then while the
+    // whole suite loads the machine ("Tracer caught signal 11", then "LeakSanitizer has
+    // encountered a fatal error" and status 1; google/sanitizers#1353): once in a CI run on
+    // 2026-12-01, never in 360 runs of these tests alone. That is reported and let through; a
+    // leak it finds ("detected memory leaks"), or any other failure, still fails the test.
+    void expect_clean_exit() {
+        const int status = child->wait_exit();
+        const std::string text = log();
+        const bool leak_check_crashed = status == 1 && text.find("LeakSanitizer has encountered a fatal error") != std::string::npos &&
+                                        text.find("Tracer caught signal") != std::string::npos &&
+                                        text.find("detected memory leaks") == std::string::npos;
+        if (leak_check_crashed) {
+            std::cerr << "view test: LeakSanitizer's leak check crashed at the viewer's exit (not a leak; see expect_clean_exit)\n";
+            return;
+        }
+        EXPECT_EQ(status, 0) << text;
+    }
     bool wait_for_count(const std::string& what, int n, seconds timeout = seconds(60)) {
         return test::ChildProcess::wait_until([&] { return test::count_occurrences(log(), what) >= n; }, timeout);
     }
@@ -279,14 +298,14 @@ TEST_F(View, PSavesThePngLancerRenderMakesOfThatView) {
 TEST_F(View, EscapeExitsZeroWithEveryVulkanObjectReleased) {
     start();
     keys("Right Escape");
-    EXPECT_EQ(child->wait_exit(), 0) << log();
+    expect_clean_exit();
     EXPECT_EQ(log().find("validation"), std::string::npos) << log();
 }
 
 TEST_F(View, InterruptExitsZeroToo) {
     start();
     child->interrupt();
-    EXPECT_EQ(child->wait_exit(), 0) << log();
+    expect_clean_exit();
 }
 
 TEST_F(View, MouseDragOrbitsAndTheWheelDollies) {
@@ -371,7 +390,7 @@ TEST_F(View, FAgainStopsARecordingAndEscapeDuringOneQuitsCleanly) {
     keys("l");
     ASSERT_TRUE(test::ChildProcess::wait_until([&] { return fs::exists(dir / "scene-light-1/frame_000.png"); })) << log();
     keys("Escape");
-    EXPECT_EQ(child->wait_exit(), 0) << log();
+    expect_clean_exit();
 }
 
 TEST_F(View, SceneEditsReloadAndBrokenScenesKeepTheLastGoodPicture) {
