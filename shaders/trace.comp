@@ -149,7 +149,10 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
                     depth = reflected.depth;
                     goes_on = true;
                     // A camera ray's reflection in the flat mirror (see FrameParams::mirror_plane).
-                    if (DIRECTION_GRIDS && depth == 1u && hit.primitive == frame.mirror_plane) grid = DIRECTION_GRID_MIRROR;
+                    // The condition on the constant alone is one the host removes where it is false.
+                    if (DIRECTION_GRIDS) {
+                        if (depth == 1u && hit.primitive == frame.mirror_plane) grid = DIRECTION_GRID_MIRROR;
+                    }
                 }
             }
         }

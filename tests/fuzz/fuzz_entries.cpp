@@ -1,6 +1,7 @@
 #include "fuzz/fuzz_entries.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <string_view>
 #include <vector>
 
@@ -172,6 +173,29 @@ void check_renderers_input(const Scene& accepted, const std::string& when) {
         require_finite_floats(l.position, when + ": light");
         require_finite_floats(l.color, when + ": light");
     }
+    // Direction grids: finite frames and windows, cells within the arrays, entries that name
+    // primitives of the BVH, nearest first.
+    const std::size_t in_bvh = packed.primitives.size() - packed.unbounded_count;
+    for (const gpu::DirectionGrid& g : packed.grids) {
+        if (!g.valid) continue;
+        for (const auto& v : {g.origin, g.axis, g.across_u, g.across_v, g.window}) require_finite_floats(v, when + ": direction grid");
+        const std::size_t cells = std::size_t(g.columns) * g.rows;
+        require(g.columns > 0 && g.rows > 0 && g.first_cell + cells < packed.grid_cells.size(), when + ": direction grid cells");
+        for (std::size_t c = g.first_cell; c < g.first_cell + cells; ++c) {
+            const uint first = packed.grid_cells[c], end = packed.grid_cells[c + 1];
+            require(first <= end && 2 * std::size_t(end) <= packed.grid_entries.size(), when + ": direction grid cell");
+            float last = 0.0f;
+            for (uint e = first; e < end; ++e) {
+                float near;
+                std::memcpy(&near, &packed.grid_entries[2 * e + 1], sizeof near);
+                require(packed.grid_entries[2 * e] < in_bvh, when + ": direction grid entry names no primitive of the BVH");
+                require(std::isfinite(near) && near >= last, when + ": direction grid entries not nearest first");
+                last = near;
+            }
+        }
+    }
+    if (packed.features.grids_only)
+        require(packed.grids.at(gpu::DIRECTION_GRID_EYE).valid != 0, when + ": every ray takes a grid, but the eye has none");
     FloatImage image = CpuRenderer(1).render(scene, {});
     for (const auto& pixel : image.pixels) require_finite_floats(pixel, when + ": a pixel of the CPU reference");
 }
