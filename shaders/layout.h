@@ -229,9 +229,10 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
             uint, jitter,  /* area: 1 = each sample at a hashed place in its cell, 0 = at its centre */ \
             uint, reserved)
 
-// A grid over the directions from one point, the eye or a point or spot light
-// (gpu/direction_grids.hpp): a ray along a half-line from `origin` (a camera ray, or a shadow
-// ray's segment, which ends at its light) can hit only the primitives its direction's cell lists.
+// A grid over the directions from one point, the eye, its mirror image in a flat mirror, or a
+// point or spot light (gpu/direction_grids.hpp): a ray along a half-line from `origin` (a camera
+// ray, its reflection in the mirror, or a shadow ray's segment, which ends at its light) can hit
+// only the primitives its direction's cell lists.
 // A direction w has the cell of (dot(w, across_u), dot(w, across_v)) / dot(w, axis); none where
 // dot(w, axis) <= 0 or outside the window: no primitive of the BVH lies that way.
 #define LANCER_ROWS_DirectionGrid(VEC4, VEC4S, SCALARS)                                             \

@@ -300,7 +300,8 @@ bool grid_hit(DirectionGrid g, Ray ray, float t_min, bool any_hit, inout Nearest
 // Nearest hit in (t_min, t_max) over all primitives; with any_hit, the first hit found, and
 // primitive `hint` tested first (NO_PRIMITIVE: none; see SHADOW_HINTS). `grid`: the direction
 // grid the ray may take instead of the BVH (DIRECTION_GRID_EYE for camera rays,
-// DIRECTION_GRID_LIGHT + k for shadow rays to light k), or NO_GRID.
+// DIRECTION_GRID_MIRROR for their reflections in the flat mirror, DIRECTION_GRID_LIGHT + k for
+// shadow rays to light k), or NO_GRID (never where GRIDS_ONLY).
 bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, uint grid, out Nearest best) {
     best = Nearest(t_max, NO_PRIMITIVE, vec2(0.0), 0.0);
     // The branch on CHEAP_SHAPES alone, a specialisation constant, is one the host removes

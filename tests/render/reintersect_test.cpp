@@ -303,6 +303,7 @@ TEST_P(Reintersect, HitsLieOnTheSurfaceAndRestartedRaysLeaveIt) {
         io[kSlots * i + 2] = vec4(vec3(rays[i].tangent), 0.0f);
     }
     gpu::ShaderFeatures features = packed.features;
+    features.grids_only = false;  // its rays start anywhere (NO_GRID): they need the BVH
     test::GpuKernel kernel(kKernel, gpu::surface_functions_glsl(world), features);
     std::vector<vec4> out = kernel.run(packed, frame, io, static_cast<std::uint32_t>(rays.size()));
 
