@@ -83,6 +83,14 @@ TEST(FuzzInvariants, BreakOnANonFiniteOrDegenerateScene) {
     Scene nan_radius = scene;
     std::get<Sphere>(nan_radius.objects[0].shape).radius = std::nan("");
     EXPECT_THROW(fuzz::check_scene_invariants(nan_radius, "NaN radius"), fuzz::InvariantBroken);
+    Scene nan_center = scene;
+    std::get<Sphere>(nan_center.objects[0].shape).center.y = std::nan("");
+    try {  // the message is put together only on failure: it still says where and what
+        fuzz::check_scene_invariants(nan_center, "frame 7");
+        ADD_FAILURE() << "a NaN centre passed";
+    } catch (const fuzz::InvariantBroken& broken) {
+        EXPECT_STREQ(broken.what(), "frame 7: sphere is not finite");
+    }
     Scene blind = scene;
     blind.camera.look_at = blind.camera.eye;
     EXPECT_THROW(fuzz::check_scene_invariants(blind, "no view direction"), UserError);
