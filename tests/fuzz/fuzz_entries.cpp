@@ -35,7 +35,7 @@ std::string_view as_text(const std::uint8_t* data, std::size_t size) {
 
 // The message of a failed check is the concatenation of `what`, put together only when the check
 // fails: the checks run for every cell, grid entry and pixel, and building their messages up
-// front took about a quarter of the scene fuzzer's time (AddressSanitizer's allocator).
+// front took a third of the scene fuzzer's time (AddressSanitizer's allocator).
 template <class... Parts>
 void require(bool ok, const Parts&... what) {
     if (ok) return;
