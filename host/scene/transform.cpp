@@ -2,7 +2,11 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+
+#include "core/magnitude.hpp"
 
 namespace lancer {
 namespace {
@@ -22,17 +26,27 @@ glm::dmat4 read_step(const toml::table& table, const std::string& file) {
     return m;
 }
 
-}  // namespace
-
-glm::dmat4 rotation_degrees(const dvec3& angles) {
-    dvec3 r = glm::radians(angles);
-    glm::dmat4 m = glm::rotate(glm::dmat4(1.0), r.x, dvec3(1, 0, 0));
-    m = glm::rotate(glm::dmat4(1.0), r.y, dvec3(0, 1, 0)) * m;
-    m = glm::rotate(glm::dmat4(1.0), r.z, dvec3(0, 0, 1)) * m;
-    return m;
+// NaN counts as infinite: the inverse of a matrix whose determinant underflows is NaN.
+double largest_linear_entry(const glm::dmat4& m) {
+    double largest = 0.0;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) largest = std::isnan(m[c][r]) ? HUGE_VAL : std::max(largest, std::abs(m[c][r]));
+    return largest;
 }
 
-glm::dmat4 read_transform(TableReader& object) {
+// The GPU maps rays into a surface's own space through the inverse, in float: a scale of 1e-300
+// is a valid matrix in double whose inverse is infinite in float (a picture silently wrong, found
+// by fuzz_scene). Both the matrix and its inverse stay within lancer's limit for any number, so
+// every product the tracer forms with them stays finite.
+void check_scales(TableReader& object, const glm::dmat4& m) {
+    const double grows = largest_linear_entry(m), shrinks = largest_linear_entry(glm::inverse(m));
+    if (!(grows <= kMaxMagnitude && shrinks <= kMaxMagnitude))
+        object.fail("transform", fmt::format("transform scales by up to {:g} and its inverse by up to {:g}, beyond lancer's "
+                                             "limit of {:g} for either: the GPU maps rays through both in float",
+                                             grows, shrinks, kMaxMagnitude));
+}
+
+glm::dmat4 read_steps(TableReader& object) {
     const toml::node* node = object.node("transform");
     if (!node) return glm::dmat4(1.0);
     if (const toml::table* table = node->as_table()) return read_step(*table, object.file());
@@ -44,6 +58,22 @@ glm::dmat4 read_transform(TableReader& object) {
         if (!table) throw SceneError(location_of(step, object.file()), "transform list entries must be tables");
         m = read_step(*table, object.file()) * m;
     }
+    return m;
+}
+
+}  // namespace
+
+glm::dmat4 rotation_degrees(const dvec3& angles) {
+    dvec3 r = glm::radians(angles);
+    glm::dmat4 m = glm::rotate(glm::dmat4(1.0), r.x, dvec3(1, 0, 0));
+    m = glm::rotate(glm::dmat4(1.0), r.y, dvec3(0, 1, 0)) * m;
+    m = glm::rotate(glm::dmat4(1.0), r.z, dvec3(0, 0, 1)) * m;
+    return m;
+}
+
+glm::dmat4 read_transform(TableReader& object) {
+    const glm::dmat4 m = read_steps(object);
+    check_scales(object, m);
     return m;
 }
 

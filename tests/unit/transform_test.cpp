@@ -57,5 +57,24 @@ TEST(Transform, ErrorsPointAtTheProblem) {
     }
 }
 
+TEST(Transform, ScalesWhoseInverseFloatCannotHoldAreRefused) {
+    // A scale of 0.61e-300 (fuzz_scene's finding) is a valid double matrix whose inverse is
+    // infinite in float, the GPU's arithmetic (and NaN in double: the determinant underflows);
+    // the limit holds for the composed list too.
+    for (const char* bad : {"transform = { scale = 0.61e-300 }", "transform = { scale = [1, 1e-13, 1] }",
+                            "transform = [ { scale = 1e7 }, { scale = 1e7 } ]"}) {
+        try {
+            transform_of(std::string("x = 1\n") + bad);
+            ADD_FAILURE() << bad;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.where().line, 2) << bad;
+            EXPECT_NE(std::string(e.what()).find("the GPU maps rays through both in float"), std::string::npos) << e.what();
+        }
+    }
+    // Near the limit, and where the steps cancel, the transform is accepted.
+    EXPECT_NO_THROW(transform_of("transform = { scale = 2e-12 }"));
+    EXPECT_NO_THROW(transform_of("transform = [ { scale = 1e-9 }, { scale = 1e9 } ]"));
+}
+
 }  // namespace
 }  // namespace lancer
