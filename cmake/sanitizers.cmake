@@ -2,9 +2,12 @@
 #
 #   LANCER_SANITIZE  every target with AddressSanitizer (LeakSanitizer included) and
 #                    UndefinedBehaviorSanitizer; any report aborts the program, so it fails its test.
+#   LANCER_SANITIZERS which ones (-fsanitize=); the fuzz-ubsan preset leaves AddressSanitizer out,
+#                    for the volume of executions its allocator costs (docs/robustness.md).
 #   LANCER_FUZZ      the libFuzzer targets in tests/fuzz (clang only); the libraries they fuzz get
 #                    libFuzzer's coverage instrumentation.
 option(LANCER_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
+set(LANCER_SANITIZERS "address,undefined,float-cast-overflow" CACHE STRING "The sanitizers of LANCER_SANITIZE (-fsanitize=)")
 option(LANCER_FUZZ "Build the libFuzzer targets in tests/fuzz (needs clang and LANCER_SANITIZE)" OFF)
 
 if(LANCER_FUZZ AND NOT (CMAKE_CXX_COMPILER_ID STREQUAL "Clang" AND LANCER_SANITIZE))
@@ -17,9 +20,9 @@ if(LANCER_SANITIZE)
   # typeinfo of every polymorphic class it sees, and Debian's glslang is built without RTTI.
   # float-cast-overflow: GCC's "undefined" leaves out the check that a float fits the integer it
   # is converted to.
-  add_compile_options(-fsanitize=address,undefined,float-cast-overflow -fno-sanitize=vptr -fno-sanitize-recover=all
+  add_compile_options(-fsanitize=${LANCER_SANITIZERS} -fno-sanitize=vptr -fno-sanitize-recover=all
                       -fno-omit-frame-pointer)
-  add_link_options(-fsanitize=address,undefined,float-cast-overflow)
+  add_link_options(-fsanitize=${LANCER_SANITIZERS})
   add_compile_definitions(LANCER_SANITIZE)  # gpu/pin_loaded_libraries.cpp
   # Options and leak suppressions (tests/sanitizers/lsan.supp, each explained in
   # docs/robustness.md) compiled into every program, so nothing depends on the environment.
