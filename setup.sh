@@ -6,13 +6,15 @@
 #   ./setup.sh build    install the packages and build only
 #   ./setup.sh sanitize the asan preset (ASan + UBSan) in build-asan/, and the whole suite under it
 #   ./setup.sh fuzz [S] also clang: the fuzz targets in build-fuzz/, each run for S seconds (default 60)
+#   ./setup.sh mesa22   the GPU tests again on Debian 12's own lavapipe (Mesa 22.3), unpacked into
+#                       build/mesa22/ beside the Mesa 25 that lancer runs on
 #
 # Packages are installed only when one is missing, so re-running is quick.
 set -euo pipefail
 cd "$(dirname "$0")"
 
 mode="${1:-build}"
-case "$mode" in render|test|build|sanitize|fuzz) ;; *) echo "usage: $0 render|test|build|sanitize|fuzz [seconds]" >&2; exit 2 ;; esac
+case "$mode" in render|test|build|sanitize|fuzz|mesa22) ;; *) echo "usage: $0 render|test|build|sanitize|fuzz [seconds]|mesa22" >&2; exit 2 ;; esac
 
 # Every build and test dependency, all from Debian 12 (see DEVELOPERS.md for what each is for).
 packages=(
@@ -30,16 +32,42 @@ packages=(
 # stack traces; the other builds use g++ (whose sanitizer runtimes come with it).
 if [ "$mode" = fuzz ]; then packages+=(clang libclang-rt-14-dev llvm); fi
 
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+apt_install() { DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "$@" >/dev/null; }
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-if ((${#missing[@]})); then
-  echo "setup: installing ${missing[*]}" >&2
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+# lavapipe from Mesa 25 (Debian's bookworm-backports) renders in half the time of Debian 12's own
+# Mesa 22.3 (docs/performance.md). Elsewhere than bookworm, the release's own Mesa is used.
+mesa_wanted=25
+mesa=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || true)
+backports=""
+if [ -z "$mesa" ] || dpkg --compare-versions "$mesa" lt "$mesa_wanted"; then
+  if grep -q '^VERSION_CODENAME=bookworm$' /etc/os-release 2>/dev/null; then
+    backports=bookworm-backports
+    if ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+      echo "setup: adding Debian's bookworm-backports to apt's sources, for Mesa $mesa_wanted" >&2
+      printf 'Types: deb\nURIs: http://deb.debian.org/debian\nSuites: bookworm-backports\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' |
+        $sudo tee /etc/apt/sources.list.d/bookworm-backports.sources >/dev/null
+    fi
+  fi
+fi
+if [ -n "$backports" ]; then  # installed from there below, not first from bookworm
+  for i in "${!missing[@]}"; do [ "${missing[$i]}" != mesa-vulkan-drivers ] || unset 'missing[i]'; done
+fi
+if ((${#missing[@]})) || [ -n "$backports" ]; then
   $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  if ((${#missing[@]})); then
+    echo "setup: installing ${missing[*]}" >&2
+    apt_install "${missing[@]}"
+  fi
+  if [ -n "$backports" ]; then
+    echo "setup: installing mesa-vulkan-drivers from $backports" >&2
+    apt_install -t "$backports" mesa-vulkan-drivers
+  fi
 fi
 
 case "$mode" in
@@ -68,5 +96,8 @@ case "$mode" in
     ;;
   test)
     ctest --test-dir build --output-on-failure --parallel "$(nproc)"
+    ;;
+  mesa22)
+    exec tests/mesa22.sh
     ;;
 esac

@@ -8,6 +8,8 @@
 #   bench/every_scene.sh [-n runs=3] [-s WxH=320x180] BEFORE AFTER
 #   bench/every_scene.sh /tmp/lancer-ac41e82 build/lancer
 #   LANCER_SCENES="scenes/seed.toml scenes/many.toml" bench/every_scene.sh ...   # some scenes only
+#   bench/every_scene.sh "env VK_DRIVER_FILES=build/mesa22/lvp_icd.json build/lancer" build/lancer
+#                                         # one binary on two drivers (./setup.sh mesa22 unpacks 22.3)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=3
@@ -31,14 +33,16 @@ echo "after:  $2"
 echo
 
 median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
-run() {  # executable scene png: prints "render user"
+run() {  # command scene png: prints "render user" (the command is split into words)
   local args=("$2" --width "${size%x*}" --height "${size#*x}")
   local animated=false
   grep -q '^\[animation\]' "$2" && animated=true
   if $animated; then args+=(--frames 0 -o "${3%.png}_%d.png"); else args+=(-o "$3"); fi
   # An animation's frame left from the last run would be resumed (skipped), not rendered.
   rm -f "${3%.png}_0.png"
-  /usr/bin/time -f "%U" -o "$out/time" "$1" render "${args[@]}" 2>"$out/log" >/dev/null
+  local command
+  read -r -a command <<<"$1"
+  /usr/bin/time -f "%U" -o "$out/time" "${command[@]}" render "${args[@]}" 2>"$out/log" >/dev/null
   if $animated; then mv "${3%.png}_0.png" "$3"; fi
   # The timing line (notes about re-rendered bands may follow it); an animation's frame line.
   local render

@@ -4,6 +4,10 @@
 #ifndef LANCER_INTERFACE_GLSL
 #define LANCER_INTERFACE_GLSL
 
+// texelFetch on a textureBuffer without a sampler: SPIR-V 1.6 (Vulkan 1.3) forbids a sampled
+// image of Dim Buffer, which is what a samplerBuffer becomes.
+#extension GL_EXT_samplerless_texture_functions : require
+
 #include "layout.h"
 
 // Reading a struct from a texel buffer: one RGBA32UI texel per row of layout.h's list, in order.
@@ -35,8 +39,8 @@ void lancer_unpack(uint word, out float value) { value = uintBitsToFloat(word); 
     layout(std430, set = 0, binding = slot) buffer NAME##_Block { Element member[]; };
 
 #define LANCER_DECLARE_RESOURCE_ROWS(NAME, slot, Element, member, reader)                        \
-    layout(set = 0, binding = slot) uniform usamplerBuffer NAME##_texels;                          \
-    Element reader##_in(usamplerBuffer texels, uint i) {                                           \
+    layout(set = 0, binding = slot) uniform utextureBuffer NAME##_texels;                          \
+    Element reader##_in(utextureBuffer texels, uint i) {                                           \
         Element r;                                                                                 \
         int k = int(i * Element##_ROWS);                                                           \
         LANCER_ROWS_##Element(LANCER_READ_VEC4, LANCER_READ_VEC4S, LANCER_READ_SCALARS)            \
@@ -45,11 +49,11 @@ void lancer_unpack(uint word, out float value) { value = uintBitsToFloat(word); 
     Element reader(uint i) { return reader##_in(NAME##_texels, i); }
 
 #define LANCER_DECLARE_RESOURCE_UINT(NAME, slot, Element, member, reader) \
-    layout(set = 0, binding = slot) uniform usamplerBuffer NAME##_texels; \
+    layout(set = 0, binding = slot) uniform utextureBuffer NAME##_texels; \
     uint reader(uint i) { return texelFetch(NAME##_texels, int(i)).x; }
 
 #define LANCER_DECLARE_RESOURCE_INT(NAME, slot, Element, member, reader) \
-    layout(set = 0, binding = slot) uniform isamplerBuffer NAME##_texels; \
+    layout(set = 0, binding = slot) uniform itextureBuffer NAME##_texels; \
     int reader(uint i) { return texelFetch(NAME##_texels, int(i)).x; }
 
 LANCER_RESOURCES(LANCER_DECLARE)

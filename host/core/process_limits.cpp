@@ -93,6 +93,12 @@ void check_memory_headroom(std::uint64_t address_space, std::uint64_t resident, 
                                     what, mib(resident), mib(h.cgroup_limit), mib(h.cgroup_used), advice));
 }
 
+std::uint64_t file_size_limit() {
+    struct rlimit limit {};
+    if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) return limit.rlim_cur;
+    return kUnlimited;
+}
+
 void adapt_to_address_space_limit() {
     rlimit limit{};
     if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) ::mallopt(M_ARENA_MAX, 1);

@@ -20,6 +20,9 @@ struct MemoryHeadroom {
 
 MemoryHeadroom memory_headroom();
 
+// The largest file this process may write (RLIMIT_FSIZE, soft: `ulimit -f`), or kUnlimited.
+std::uint64_t file_size_limit();
+
 // Throws UserError when `address_space` more bytes of address space, or `resident` more bytes of
 // memory, do not fit under the limits: "WHAT needs about N MiB more address space, but the limit
 // (ulimit -v) is L MiB and U MiB of it are in use: ADVICE".

@@ -35,6 +35,7 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
         VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         alloc.allocationSize = req.size;
         alloc.memoryTypeIndex = context.memory_type(req.memoryTypeBits, kRequired, kPreferred);
+        context.reserve_device_memory(req.size);
         VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
         VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
         VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));

@@ -8,6 +8,8 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "core/process_limits.hpp"
+#include "gpu/driver_quirks.hpp"
 #include "gpu/pin_loaded_libraries.hpp"
 #include "gpu/vk_check.hpp"
 
@@ -204,6 +206,8 @@ Context::Context(const ContextOptions& options) {
         std::uint32_t index = choose_device(devices, options.device);
         physical_ = devices[index];
         info_ = describe(physical_, index);
+        memory_in_a_file_ = keeps_device_memory_in_a_file(info_);
+        reserve_device_memory(0);  // the driver's own allocations come first
         VkPhysicalDeviceProperties props;
         vkGetPhysicalDeviceProperties(physical_, &props);
         limits_ = props.limits;
@@ -238,6 +242,12 @@ Context::Context(const ContextOptions& options) {
 }
 
 Context::~Context() { release(); }
+
+void Context::reserve_device_memory(VkDeviceSize bytes) const {
+    if (!memory_in_a_file_) return;
+    std::lock_guard lock(file_memory_mutex_);
+    reserve_file_backed_memory(file_memory_allocated_, bytes, file_size_limit());
+}
 
 void Context::set_name_of(VkObjectType type, std::uint64_t handle, const std::string& name) const {
     if (!set_object_name_ || !handle) return;

@@ -3,6 +3,7 @@
 // one physical device, one compute queue. No window, no surface.
 #include <atomic>
 #include <cstdint>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,10 @@ public:
     // Labels a Vulkan object, so that validation messages (and debuggers) say which buffer or
     // pipeline they mean: "lancer PRIMITIVES". Does nothing without VK_EXT_debug_utils, which the
     // context enables with validation.
+    // Called before each allocation of device memory: throws UserError where the driver keeps
+    // device memory in a file that the process's file size limit would cut short (driver_quirks).
+    void reserve_device_memory(VkDeviceSize bytes) const;
+
     template <class Handle>
     void set_name(VkObjectType type, Handle handle, const std::string& name) const {
         set_name_of(type, (std::uint64_t)handle, name);
@@ -87,6 +92,9 @@ private:
     DeviceInfo info_;
     VkPhysicalDeviceLimits limits_{};
     VkPhysicalDeviceMemoryProperties memory_{};
+    bool memory_in_a_file_ = false;
+    mutable std::mutex file_memory_mutex_;
+    mutable std::uint64_t file_memory_allocated_ = 0;
 };
 
 }  // namespace lancer::gpu

@@ -8,6 +8,7 @@
 
 #include "core/cancel.hpp"
 #include "gpu/driver_memory.hpp"
+#include "gpu/driver_quirks.hpp"
 #include "gpu/embedded_shaders.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/scene_packing.hpp"
@@ -171,7 +172,7 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
     resources_.upload(packed, gpu::pack_frame(scene, packed));
     if (std::string code = gpu::surface_functions_glsl(scene); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;
-    features.check_loop_limit = context_->info().driver_id == VK_DRIVER_ID_MESA_LLVMPIPE;
+    features.check_loop_limit = gpu::limits_loop_iterations(context_->info());
     return features;
 }
 

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include "gpu/driver_quirks.hpp"
 #include "image/image.hpp"
 #include "support/pty_process.hpp"
 #include "support/test_support.hpp"
@@ -127,11 +128,47 @@ TEST(Faults, ReadOnlyDirectory) {
 TEST(Faults, FileSizeLimit) {
     std::string dir = fresh_dir("fsize");
     std::string command = "bash -c 'ulimit -f 4; " + lancer_command() + " render " + kSeed +
-                          " --width 200 --height 120 -o " + dir + "/out.png' 2> " + dir + ".err";
+                          " --backend cpu --width 200 --height 120 -o " + dir + "/out.png' 2> " + dir + ".err";
     int status = std::system(command.c_str());
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 2);
     EXPECT_EQ(test::read_file(dir + ".err"), "lancer: error: cannot write '" + dir + "/out.png': File too large\n");
+    EXPECT_EQ(test::listing(dir), "");
+}
+
+// On the GPU path the limit also bounds the file lavapipe from Mesa 25 keeps device memory in
+// (gpu/driver_quirks.hpp), which it grows without checking and then dies of SIGBUS: refused
+// first. Where the driver does not, the output write fails as above.
+TEST(Faults, FileSizeLimitOnTheGpuPath) {
+    std::string dir = fresh_dir("fsize-gpu");
+    std::string command = "bash -c 'ulimit -f 4; " + lancer_command() + " render " + kSeed +
+                          " --width 200 --height 120 -o " + dir + "/out.png' 2> " + dir + ".err";
+    int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    if (gpu::keeps_device_memory_in_a_file(test::gpu_renderer().context().info()))
+        EXPECT_EQ(test::read_file(dir + ".err"),
+                  "lancer: error: lavapipe keeps the GPU's memory in a file, and the file size limit (ulimit -f) of "
+                  "4096 bytes is too small for it: this render needs up to 1 MiB; raise the limit (ulimit -f "
+                  "unlimited) or render with --backend cpu\n");
+    else
+        EXPECT_EQ(test::read_file(dir + ".err"), "lancer: error: cannot write '" + dir + "/out.png': File too large\n");
+    EXPECT_EQ(test::listing(dir), "");
+}
+
+// A limit that holds the driver's file but not this render's buffers: refused before rendering.
+TEST(Faults, FileSizeLimitBelowARendersBuffers) {
+    if (!gpu::keeps_device_memory_in_a_file(test::gpu_renderer().context().info()))
+        GTEST_SKIP() << "this driver does not keep device memory in a file";
+    std::string dir = fresh_dir("fsize-buffers");
+    std::string command = "bash -c 'ulimit -f 2048; " + lancer_command() + " render " +
+                          test::source_path("scenes/cornell.toml") + " --width 64 --height 36 -o " + dir +
+                          "/out.png' 2> " + dir + ".err";
+    int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    EXPECT_NE(test::read_file(dir + ".err").find("the file size limit (ulimit -f) of 2 MiB is too small"), std::string::npos)
+        << test::read_file(dir + ".err");
     EXPECT_EQ(test::listing(dir), "");
 }
 
