@@ -152,7 +152,7 @@ TEST_P(Adaptive, EveryPixelOnAnEdgeOfSeedIsRefined) {
 // At the threshold that finds every edge of seed (above) the picture is the full grid's by the
 // image tests' metric. At POV-Ray's default 0.3 it is not (46.9 dB, but 0.95% of the pixels of
 // this 96x54 render off by more than 4/255, beyond the metric's 0.1%: low-contrast edges left at
-// one ray; README, "Adaptive anti-aliasing"), so only its PSNR is held here.
+// one ray; docs/rendering.md, "Adaptive anti-aliasing"), so only its PSNR is held here.
 TEST_P(Adaptive, EdgeThresholdLooksLikeTheFullGrid) {
     const Rgb8Image full = to_srgb8(test::render_on(GetParam(), seed(3, std::nullopt)));
     const Rgb8Image adaptive = to_srgb8(test::render_on(GetParam(), seed(3, 0.05)));

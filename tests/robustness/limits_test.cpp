@@ -1,4 +1,4 @@
-// Every documented limit (README "Limits") gives a clear error, at the place in the file that
+// Every documented limit (docs/limits.md) gives a clear error, at the place in the file that
 // crosses it, before the memory it bounds is allocated. Limits of single values (image size,
 // samples, max_depth, frames, subdivision, magnitudes, expression length and nesting, patch
 // counts in a file) are bad files in tests/data/bad/ and tests/data/bad_patches/ and cases in

@@ -1,4 +1,4 @@
-// The on-screen help: every key it lists is drawn with real glyphs, and the README's key table
+// The on-screen help: every key it lists is drawn with real glyphs, and docs/viewer.md's key table
 // names the same keys.
 #include <fstream>
 #include <sstream>
@@ -98,17 +98,18 @@ TEST(ViewHelp, ThePanelIsAlwaysWhollyInsideTheWindow) {
         }
 }
 
-TEST(ViewHelp, TheReadmeListsEveryKey) {
-    std::ifstream in(test::source_path("README.md"));
+TEST(ViewHelp, TheViewerDocListsEveryKey) {
+    std::ifstream in(test::source_path("docs/viewer.md"));
+    ASSERT_TRUE(in) << "cannot read docs/viewer.md";
     std::stringstream text;
     text << in.rdbuf();
-    std::string readme = text.str();
-    auto section = readme.find("## Viewing interactively");
-    ASSERT_NE(section, std::string::npos) << "README.md has no 'Viewing interactively' section";
-    std::string part = readme.substr(section, readme.find("\n## ", section + 1) - section);
+    std::string doc = text.str();
+    auto section = doc.find("## Viewing interactively");
+    ASSERT_NE(section, std::string::npos) << "docs/viewer.md has no 'Viewing interactively' section";
+    std::string part = doc.substr(section, doc.find("\n## ", section + 1) - section);
     for (const auto& row : key_help())
         for (const std::string& key : split_keys(row.keys))
-            EXPECT_NE(part.find("`" + key + "`"), std::string::npos) << "README does not list `" << key << "`";
+            EXPECT_NE(part.find("`" + key + "`"), std::string::npos) << "docs/viewer.md does not list `" << key << "`";
 }
 
 TEST(ViewStatus, TitleHasPositionFrameTimeAndRaysPerSecond) {
