@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     std::printf("SPIR-V            %8zu words\n", spirv.size());
     gpu::ShaderFeatures features = packed.features;
     // As lancer chooses (parametric surfaces' code is not in this module).
-    const gpu::SpirvCleanup cleanup = gpu::spirv_cleanup_for(features, false);
+    const gpu::SpirvCleanup cleanup = gpu::spirv_cleanup_for(features);
     t = Phase();
     std::size_t specialized = gpu::specialize_spirv(spirv, features, cleanup).size();
     std::printf("specialise        %s  (%zu words; done again inside pipeline creation)\n", t.elapsed().c_str(), specialized);

@@ -11,9 +11,9 @@ float max3(vec3 v) { return max(v.r, max(v.g, v.b)); }
 
 bool is_transparent(Material m) { return max3(m.transmission.rgb) > 0.0; }
 
-// A rectangle has no inside: it is a thin sheet, which reflects and transmits but neither
-// bends the ray nor changes the medium.
-bool is_thin_sheet(uint primitive) { return primitive_at(primitive).type == SHAPE_RECTANGLE; }
+// A shape without an inside (SHAPE_SHEET: rectangles) is a thin sheet, which reflects and
+// transmits but neither bends the ray nor changes the medium.
+bool is_thin_sheet(uint primitive) { return (shape_traits(primitive_at(primitive).type) & SHAPE_SHEET) != 0u; }
 
 const uint MEDIA_DEPTH = 4u;
 const uint NO_MEDIUM = 0xffffffffu;  // air: ior 1, no absorption

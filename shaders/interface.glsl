@@ -20,6 +20,8 @@ void lancer_unpack(uint word, out float value) { value = uintBitsToFloat(word); 
 #define LANCER_READ_VEC4(name) r.name = uintBitsToFloat(texelFetch(texels, k++));
 #define LANCER_READ_VEC4S(name, n) \
     [[unroll]] for (int j = 0; j < (n); ++j) r.name[j] = uintBitsToFloat(texelFetch(texels, k++));
+#define LANCER_READ_UVEC4S(name, n) \
+    [[unroll]] for (int j = 0; j < (n); ++j) r.name[j] = texelFetch(texels, k++);
 #define LANCER_READ_SCALARS(T0, n0, T1, n1, T2, n2, T3, n3) \
     {                                                        \
         uvec4 w = texelFetch(texels, k++);                   \
@@ -43,7 +45,7 @@ void lancer_unpack(uint word, out float value) { value = uintBitsToFloat(word); 
     Element reader##_in(utextureBuffer texels, uint i) {                                           \
         Element r;                                                                                 \
         int k = int(i * Element##_ROWS);                                                           \
-        LANCER_ROWS_##Element(LANCER_READ_VEC4, LANCER_READ_VEC4S, LANCER_READ_SCALARS)            \
+        LANCER_ROWS_##Element(LANCER_READ_VEC4, LANCER_READ_VEC4S, LANCER_READ_SCALARS, LANCER_READ_UVEC4S) \
         return r;                                                                                  \
     }                                                                                              \
     Element reader(uint i) { return reader##_in(NAME##_texels, i); }
@@ -58,7 +60,16 @@ void lancer_unpack(uint word, out float value) { value = uintBitsToFloat(word); 
 
 LANCER_RESOURCES(LANCER_DECLARE)
 
-#define LANCER_DECLARE_FEATURE(NAME, id, member, fallback) layout(constant_id = id) const bool NAME = fallback;
+#define LANCER_DECLARE_FEATURE(NAME, id, type, member, fallback) layout(constant_id = id) const type NAME = fallback;
 LANCER_FEATURES(LANCER_DECLARE_FEATURE)
+
+// Each shape type's flags, from the sets above: SCENE_HAS_<NAME> (the scene has the shape),
+// <NAME>_BOXED and <NAME>_SPLIT (its family outside the BVH has a box, or one per half).
+// Specialisation-constant expressions: the host folds them with the constants.
+#define LANCER_DECLARE_SHAPE_FLAGS(NAME, name, Type, type, traits)       \
+    const bool SCENE_HAS_##NAME = (SCENE_SHAPES & (1u << SHAPE_##NAME)) != 0u; \
+    const bool NAME##_BOXED = (BOXED_FAMILIES & (1u << SHAPE_##NAME)) != 0u;   \
+    const bool NAME##_SPLIT = (SPLIT_FAMILIES & (1u << SHAPE_##NAME)) != 0u;
+LANCER_SHAPES(LANCER_DECLARE_SHAPE_FLAGS)
 
 #endif

@@ -17,11 +17,18 @@
 #ifndef LANCER_LAYOUT_H
 #define LANCER_LAYOUT_H
 
+#include "shapes.h"
+
 #ifdef __cplusplus
 #include <cstdint>
 #include <glm/vec4.hpp>
 namespace lancer::gpu {
 using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using lancer::SHAPE_COUNT;
+#define LANCER_SHAPE_NAME(NAME, name, Type, type, traits) using lancer::SHAPE_##NAME;
+LANCER_SHAPES(LANCER_SHAPE_NAME)
+#undef LANCER_SHAPE_NAME
 using uint = std::uint32_t;
 #define LANCER_CONST constexpr uint
 #else
@@ -35,15 +42,10 @@ LANCER_CONST WORKGROUP_Y = 8;
 static_assert(WORKGROUP_X == 8 && WORKGROUP_Y == 8, "trace.comp's z_order_position orders an 8 x 8 workgroup");
 #endif
 
-// Primitive::type values. Each has one GLSL file in shaders/shapes/ and one C++ file in
-// host/cpu/shapes/ with the same name.
-LANCER_CONST SHAPE_SPHERE = 0;     // p0 = (center, radius), p1, p2 = the sphere's own x and y axes (its texture's frame)
-LANCER_CONST SHAPE_PLANE = 1;      // p0 = (point, 0), p1 = (unit normal, 0), p2 = (texture u axis, 0)
-LANCER_CONST SHAPE_RECTANGLE = 2;  // p0 = (corner, 0), p1 = (edge_u, 0), p2 = (edge_v, 0)
-LANCER_CONST SHAPE_BOX = 3;        // p0 = (min, 0), p1 = (max, 0)
-LANCER_CONST SHAPE_BEZIER = 4;     // data = index of its PatchLeaf
-LANCER_CONST SHAPE_PARAMETRIC = 5; // data = index of its ParametricCell, p0 = (box min, 0), p1 = (box max, 0)
-LANCER_CONST SHAPE_IMPLICIT = 6;   // data = index of its ImplicitInfo, p0 = (box min, 0), p1 = (box max, 0) in its own coordinates
+// Primitive::type is a shape type of the registry (shapes.h); p0..p2 and data hold what the
+// shape's file says.
+// Per-shape uints of FrameParams are packed four to a uvec4.
+LANCER_CONST SHAPE_QUADS = (SHAPE_COUNT + 3u) / 4u;
 
 // A primitive index that names none.
 LANCER_CONST NO_PRIMITIVE = 0xffffffffu;
@@ -115,13 +117,13 @@ LANCER_CONST REFINE_CANDIDATE = 1;  // the last step traced it (before the first
 LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by more than the threshold
 
 // ---------------------------------------------------------------------------------------------
-// Structs, as lists of rows. LANCER_ROWS_Name(VEC4, VEC4S, SCALARS) lists the rows of struct
+// Structs, as lists of rows. LANCER_ROWS_Name(VEC4, VEC4S, SCALARS, UVEC4S) lists the rows of struct
 // Name in order: VEC4(name) a vec4; VEC4S(name, n) an array of n vec4s; SCALARS(T0, n0, T1, n1,
-// T2, n2, T3, n3) four 32-bit scalars (uint, int or float). Comments go in /* */ (a // comment
+// T2, n2, T3, n3) four 32-bit scalars (uint, int or float); UVEC4S(name, n) an array of n uvec4s. Comments go in /* */ (a // comment
 // would swallow the macro's next line).
 // ---------------------------------------------------------------------------------------------
 
-#define LANCER_ROWS_Primitive(VEC4, VEC4S, SCALARS)                                             \
+#define LANCER_ROWS_Primitive(VEC4, VEC4S, SCALARS, UVEC4S)                                             \
     SCALARS(uint, type, uint, material,                                                         \
             uint, data,   /* shape-specific index into a further array (patch shapes), else 0 */ \
             uint, object) /* index of the scene object it came from */                          \
@@ -130,7 +132,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // A bicubic (rational) Bezier sub-patch, ready for Bezier clipping. Control points are stored
 // relative to `origin` (the leaf's centre) so that float keeps its precision far from the
 // world origin.
-#define LANCER_ROWS_PatchLeaf(VEC4, VEC4S, SCALARS)                                                      \
+#define LANCER_ROWS_PatchLeaf(VEC4, VEC4S, SCALARS, UVEC4S)                                                      \
     VEC4S(points, 16) /* xyz = control point - origin, w = weight (1 if polynomial); row-major, i along u */ \
     VEC4(origin)      /* xyz; w = index of the patch within its surface (for tests and texture lookups) */   \
     VEC4(domain)      /* (u0, u1, v0, v1): where this leaf lies in its patch's parameter square */
@@ -140,7 +142,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // world = (dot(row0.xyz, p) + row0.w, dot(row1.xyz, p) + row1.w, dot(row2.xyz, p) + row2.w),
 // and its inverse (inverse0..2, the same form), which carries rays into the surface's
 // coordinates, where the intersector works.
-#define LANCER_ROWS_SurfaceInfo(VEC4, VEC4S, SCALARS) \
+#define LANCER_ROWS_SurfaceInfo(VEC4, VEC4S, SCALARS, UVEC4S) \
     VEC4(row0) VEC4(row1) VEC4(row2)                  \
     VEC4(inverse0) VEC4(inverse1) VEC4(inverse2)      \
     VEC4(domain) /* (u0, u1, v0, v1) of the whole surface */
@@ -150,7 +152,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // never the generated shader code: p = (dot(row0.xyz, w) + row0.w, dot(row1.xyz, w) + row1.w,
 // dot(row2.xyz, w) + row2.w) for a world point w; directions without the w terms, and normals by
 // the transpose.
-#define LANCER_ROWS_ImplicitInfo(VEC4, VEC4S, SCALARS) \
+#define LANCER_ROWS_ImplicitInfo(VEC4, VEC4S, SCALARS, UVEC4S) \
     VEC4(row0) VEC4(row1) VEC4(row2)
 
 // One cell of a parametric surface's domain, where the GPU searches for roots
@@ -159,7 +161,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // without evaluating S: no root, or at most one, which Newton's method then finds. The bounds of
 // the second partials give tight bounds of the first over any part of the cell, from S's
 // partials at that part's centre.
-#define LANCER_ROWS_ParametricCell(VEC4, VEC4S, SCALARS)                                        \
+#define LANCER_ROWS_ParametricCell(VEC4, VEC4S, SCALARS, UVEC4S)                                        \
     VEC4(domain)  /* (u0, u1, v0, v1) */                                                        \
     VEC4(su_lo)   /* xyz = lower bounds of dS/du (-3.4e38: none); w = the surface index */      \
     VEC4(su_hi)   /* xyz = upper bounds of dS/du; w = how far float evaluation of S may stray */ \
@@ -173,7 +175,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // A node of the bounding volume hierarchy over all bounded primitives (host/accel/bvh.hpp).
 // Inner nodes (count == 0) have their children at first and first + 1; leaves cover the
 // primitives [first, first + count). Boxes are rounded outward from double.
-#define LANCER_ROWS_BvhNode(VEC4, VEC4S, SCALARS) \
+#define LANCER_ROWS_BvhNode(VEC4, VEC4S, SCALARS, UVEC4S) \
     VEC4(lo) /* xyz */                            \
     VEC4(hi) /* xyz */                            \
     SCALARS(uint, first, uint, count, uint, reserved0, uint, reserved1)
@@ -181,7 +183,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // A microfacet material (model != MODEL_PHONG) keeps its constants in the rows Phong's would
 // use (shaders/microfacet_material.glsl): color.rgb = its tint, color2 = (eta, alpha = roughness^2),
 // phong = (k, E_avg); a metal's energy table and multiple-scattering colour below.
-#define LANCER_ROWS_Material(VEC4, VEC4S, SCALARS)                                                  \
+#define LANCER_ROWS_Material(VEC4, VEC4S, SCALARS, UVEC4S)                                                  \
     VEC4(color)  /* rgb = pigment (checker: first colour), linear */                                \
     VEC4(color2) /* rgb = second checker colour */                                                  \
     VEC4(phong)  /* x = ambient, y = diffuse, z = specular, w = shininess (n_s) */                   \
@@ -201,7 +203,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 
 // An image as a material places it (shaders/texture.glsl). Image coordinates (s, t) run from
 // (0, 0) at the image's bottom-left corner to (1, 1) at its top-right one.
-#define LANCER_ROWS_TextureInfo(VEC4, VEC4S, SCALARS)                                 \
+#define LANCER_ROWS_TextureInfo(VEC4, VEC4S, SCALARS, UVEC4S)                                 \
     VEC4(to_image_s) /* s = dot(xy, uv) + z, uv the surface's texture coordinates */  \
     VEC4(to_image_t) /* t = dot(xy, uv) + z */                                        \
     SCALARS(uint, texel_offset, /* its first texel in texels; rows from the top */    \
@@ -210,14 +212,14 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 
 // A procedural pattern (shaders/pattern.glsl): a scalar function of the world position, shown
 // through a colour ramp or used as a bump.
-#define LANCER_ROWS_PatternInfo(VEC4, VEC4S, SCALARS)                                                         \
+#define LANCER_ROWS_PatternInfo(VEC4, VEC4S, SCALARS, UVEC4S)                                                         \
     VEC4(row0) /* world -> pattern space: q = (dot(row0.xyz, p) + row0.w, dot(row1..), dot(row2..)) */         \
     VEC4(row1) VEC4(row2)                                                                                     \
     VEC4(params) /* x = turbulence, y = omega, z = lambda, w = bump strength (amount x mean scale) */          \
     SCALARS(uint, type, /* PATTERN_NOISE, ... */ uint, octaves, uint, color_count, uint, reserved)             \
     VEC4S(colors, PATTERN_MAX_COLORS) /* rgb = colour, w = its position on the ramp, ascending */
 
-#define LANCER_ROWS_Light(VEC4, VEC4S, SCALARS)                                                      \
+#define LANCER_ROWS_Light(VEC4, VEC4S, SCALARS, UVEC4S)                                                      \
     VEC4(position)  /* xyz = where it is (area light: the rectangle's centre); w = fall-off distance, 0 = none */ \
     VEC4(color)     /* rgb */                                                                        \
     VEC4(direction) /* spot: xyz = unit axis of the cone */                                          \
@@ -235,7 +237,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // only the primitives its direction's cell lists.
 // A direction w has the cell of (dot(w, across_u), dot(w, across_v)) / dot(w, axis); none where
 // dot(w, axis) <= 0 or outside the window: no primitive of the BVH lies that way.
-#define LANCER_ROWS_DirectionGrid(VEC4, VEC4S, SCALARS)                                             \
+#define LANCER_ROWS_DirectionGrid(VEC4, VEC4S, SCALARS, UVEC4S)                                             \
     VEC4(origin)   /* xyz */                                                                        \
     VEC4(axis)     /* xyz: unit */                                                                  \
     VEC4(across_u) /* xyz: unit, across the axis */                                                 \
@@ -247,7 +249,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 
 // Per-render constants (a uniform block). The camera is given as the vectors from which the
 // shader forms ray directions: dir = forward + ndc_x * right + ndc_y * up, with ndc in [-1, 1].
-#define LANCER_ROWS_FrameParams(VEC4, VEC4S, SCALARS)                                             \
+#define LANCER_ROWS_FrameParams(VEC4, VEC4S, SCALARS, UVEC4S)                                             \
     VEC4(eye) VEC4(forward)                                                                       \
     VEC4(right)      /* already scaled by tan(fov/2) * aspect */                                  \
     VEC4(up)         /* already scaled by tan(fov/2) */                                           \
@@ -261,28 +263,29 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
             uint, node_count,      /* 0 when nothing is bounded */                                \
             uint, unbounded_count) /* the last unbounded_count primitives (outside the BVH) are tested by every ray */ \
     SCALARS(uint, loop_probe, /* always 2: the trip count of trace.comp's loop_limit_reached() probe */ \
-            uint, sphere_end,      /* the unbounded primitives, sorted by type: where each family's end */ \
-            uint, plane_end,       /* (SHAPE_SPHERE ... SHAPE_IMPLICIT); the next family starts there, */ \
-            uint, rectangle_end)   /* the first at primitive_count - unbounded_count (scene.glsl) */ \
-    SCALARS(uint, box_end, uint, bezier_end, uint, parametric_end,                                \
-            uint, mirror_plane) /* a flat mirror whose reflections of camera rays take DIRECTION_GRID_MIRROR, or NO_PRIMITIVE */ \
-    VEC4S(family_lo, 8) VEC4S(family_hi, 8) /* [2 type], [2 type + 1]: boxes around the two halves of the */ \
-    SCALARS(uint, sphere_split, uint, reserved1,   /* spheres, rectangles, boxes outside the BVH, which end */ \
-            uint, rectangle_split, uint, box_split) /* and start at *_split (gpu/family_boxes.hpp) */
+            uint, mirror_plane, /* a flat mirror whose reflections of camera rays take DIRECTION_GRID_MIRROR, or NO_PRIMITIVE */ \
+            uint, reserved0, uint, reserved1)                                                     \
+    /* the primitives outside the BVH, sorted by shape type: family t is [family_end[t - 1], */     \
+    /* family_end[t]) (t = 0 from primitive_count - unbounded_count), read as [t / 4][t % 4] */   \
+    UVEC4S(family_end, SHAPE_QUADS)                                                               \
+    /* family boxes (gpu/family_boxes.hpp): [2 t] around family t's members before */             \
+    /* family_split[t], [2 t + 1] around the rest */                                             \
+    VEC4S(family_lo, 2 * SHAPE_COUNT) VEC4S(family_hi, 2 * SHAPE_COUNT)                          \
+    UVEC4S(family_split, SHAPE_QUADS)
 
 // A light as photon mapping sees it (one per Light, in the same order).
-#define LANCER_ROWS_Emitter(VEC4, VEC4S, SCALARS)                                                   \
+#define LANCER_ROWS_Emitter(VEC4, VEC4S, SCALARS, UVEC4S)                                                   \
     VEC4(power) /* rgb = the power (W) of each photon it sends; w = P(this light or one before it) */ \
     VEC4(cone)  /* spot lights: x = the outer cone's solid angle over the spot's weighted one */
 
 // A photon where it landed on a diffuse surface (shaders/photons.comp).
-#define LANCER_ROWS_Photon(VEC4, VEC4S, SCALARS)                  \
+#define LANCER_ROWS_Photon(VEC4, VEC4S, SCALARS, UVEC4S)                  \
     VEC4(position)  /* xyz; w = its map: 0 caustic, 1 global */    \
     VEC4(direction) /* xyz = the way it travelled */               \
     VEC4(power)     /* rgb, watts */
 
 // The photon pass's constants (a uniform block, written before each pass).
-#define LANCER_ROWS_PhotonParams(VEC4, VEC4S, SCALARS)                                                      \
+#define LANCER_ROWS_PhotonParams(VEC4, VEC4S, SCALARS, UVEC4S)                                                      \
     VEC4(radii) /* x, y = the caustic and global maps' gather radii this pass; z = the power quantum the gather sums in */ \
     SCALARS(uint, pass, uint, count, /* photons shot this pass */ uint, seed, uint, max_bounces)             \
     SCALARS(uint, capacity,   /* photons the photons array holds */                                          \
@@ -290,7 +293,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
             uint, first_pass, uint, last_pass) /* the render's passes: [first_pass, last_pass) */
 
 // Push constants of the grid build (shaders/photon_grid.comp): which step.
-#define LANCER_ROWS_GridStep(VEC4, VEC4S, SCALARS) \
+#define LANCER_ROWS_GridStep(VEC4, VEC4S, SCALARS, UVEC4S) \
     SCALARS(uint, kind, /* GRID_COUNT, ... */ uint, reserved0, uint, reserved1, uint, reserved2)
 
 // Push constants: which band of rows this dispatch renders, and which of each pixel's N x N
@@ -305,12 +308,12 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // workgroup's tail has a pixel to trace. With spread = 1 it also writes the per-channel smallest and
 // largest of the pixel's sample colours to pixels[refine_count + i] and pixels[2 refine_count + i]
 // (adaptive anti-aliasing by the spread of a pixel's samples: render/adaptive_render.hpp).
-#define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS)                      \
+#define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS, UVEC4S)                      \
     SCALARS(uint, y0, uint, rows, uint, sample_first, uint, sample_count) \
     SCALARS(uint, refine_count, uint, spread, uint, refine_first, uint, reserved)
 
 // Push constants of the selection of pixels to refine (shaders/refine_select.comp).
-#define LANCER_ROWS_SelectStep(VEC4, VEC4S, SCALARS)                                                      \
+#define LANCER_ROWS_SelectStep(VEC4, VEC4S, SCALARS, UVEC4S)                                                      \
     SCALARS(uint, kind,   /* SELECT_ENCODE, ... */                                                       \
             uint, width, uint, height,                                                                   \
             uint, every_candidate) /* 1: the threshold is 0 or less, every candidate goes on */         \
@@ -323,15 +326,17 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // The structs themselves, and their size in rows (Name_ROWS), from the lists above.
 #define LANCER_MEMBER_VEC4(name) vec4 name;
 #define LANCER_MEMBER_VEC4S(name, n) vec4 name[n];
+#define LANCER_MEMBER_UVEC4S(name, n) uvec4 name[n];
 #define LANCER_MEMBER_SCALARS(T0, n0, T1, n1, T2, n2, T3, n3) T0 n0; T1 n1; T2 n2; T3 n3;
 #define LANCER_COUNT_VEC4(name) +1
 #define LANCER_COUNT_VEC4S(name, n) +(n)
+#define LANCER_COUNT_UVEC4S(name, n) +(n)
 #define LANCER_COUNT_SCALARS(T0, n0, T1, n1, T2, n2, T3, n3) +1
 #define LANCER_STRUCT(Name)                                                                      \
     struct Name {                                                                                \
-        LANCER_ROWS_##Name(LANCER_MEMBER_VEC4, LANCER_MEMBER_VEC4S, LANCER_MEMBER_SCALARS)       \
+        LANCER_ROWS_##Name(LANCER_MEMBER_VEC4, LANCER_MEMBER_VEC4S, LANCER_MEMBER_SCALARS, LANCER_MEMBER_UVEC4S) \
     };                                                                                           \
-    LANCER_CONST Name##_ROWS = 0 LANCER_ROWS_##Name(LANCER_COUNT_VEC4, LANCER_COUNT_VEC4S, LANCER_COUNT_SCALARS);
+    LANCER_CONST Name##_ROWS = 0 LANCER_ROWS_##Name(LANCER_COUNT_VEC4, LANCER_COUNT_VEC4S, LANCER_COUNT_SCALARS, LANCER_COUNT_UVEC4S);
 
 LANCER_STRUCT(Primitive)
 LANCER_STRUCT(PatchLeaf)
@@ -432,39 +437,33 @@ LANCER_CONST RESOURCE_INT = 4;
 LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
 
 // ---------------------------------------------------------------------------------------------
-// Specialisation constants, as X(NAME, id, member, default): the shader's `const bool NAME`,
-// the host's ShaderFeatures::member. Optional features are compiled out of scenes that lack
-// them: lavapipe pays for dead code in register pressure (the unused Bezier clipper alone made
-// a sphere scene ten times slower; docs/performance.md).
+// Specialisation constants, as X(NAME, id, type, member, default): the shader's `const type
+// NAME`, the host's ShaderFeatures::member; type is bool or uint (a set of shape types, bit t
+// for type t). Optional features are compiled out of scenes that lack them: lavapipe pays for
+// dead code in register pressure (the unused Bezier clipper alone made a sphere scene ten times
+// slower; docs/performance.md).
 // ---------------------------------------------------------------------------------------------
-#define LANCER_FEATURES(X)                                                                           \
-    X(SCENE_HAS_BEZIER, 0, has_bezier, true)                                                         \
-    X(SCENE_HAS_BVH, 1, has_bvh, true)                                                               \
-    X(OUTPUT_HITS, 2, output_hits, false)           /* test variant: write first hits, not colours */ \
-    X(CHECK_LOOP_LIMIT, 3, check_loop_limit, false) /* lavapipe: see loop_limit_reached (trace.comp) */ \
-    X(SCENE_HAS_TEXTURES, 4, has_textures, true)    /* some material has an image texture */         \
-    X(SCENE_HAS_PATTERNS, 5, has_patterns, true)    /* some material has a procedural pattern or bump */ \
-    X(SCENE_HAS_TRANSPARENCY, 6, has_transparency, true) /* transmission > 0: the ray tree, media */  \
-    X(SCENE_HAS_AREA_LIGHTS, 7, has_area_lights, true)                                               \
-    X(SCENE_HAS_SPOT_LIGHTS, 8, has_spot_lights, true)                                               \
-    X(SCENE_HAS_FALLOFF, 9, has_falloff, true)      /* a light with distance fall-off */             \
-    X(SCENE_HAS_BLINN, 10, has_blinn, true)         /* a material with highlight = "blinn" */          \
-    X(SCENE_HAS_SPHERE, 11, has_sphere, true)       /* shape families: lavapipe runs every case of a */ \
-    X(SCENE_HAS_PLANE, 12, has_plane, true)         /* switch on the shape type, whatever the type */  \
-    X(SCENE_HAS_RECTANGLE, 13, has_rectangle, true)                                                  \
-    X(SCENE_HAS_BOX, 14, has_box, true)                                                              \
-    X(SCENE_HAS_MICROFACET, 15, has_microfacet, true) /* a material with model = "microfacet" */      \
-    X(SCENE_HAS_PHOTONS, 16, has_photons, true)     /* photon mapping: gather at diffuse hits */ \
-    X(SCENE_HAS_RATIONAL_PATCHES, 17, has_rational_patches, true) /* a Bezier leaf's weights not all 1 */ \
-    X(BVH_HAS_ANALYTIC, 18, bvh_has_analytic, true) /* a sphere, rectangle or box in the BVH; else all outside it */ \
-    X(SPHERES_BOXED, 19, spheres_boxed, true)       /* a ray that misses the box around a family outside */ \
-    X(RECTANGLES_BOXED, 20, rectangles_boxed, true) /* the BVH (FrameParams::family_lo, hi) skips its loop */ \
-    X(BOXES_BOXED, 21, boxes_boxed, true)           /* (scene.glsl); with *_SPLIT, the family in two halves, */ \
-    X(SPHERES_SPLIT, 22, spheres_split, true)       /* each with a box: a ray that misses one skips that */ \
-    X(RECTANGLES_SPLIT, 23, rectangles_split, true) /* half (gpu/family_boxes.cpp says where either pays) */ \
-    X(BOXES_SPLIT, 24, boxes_split, true)                                                            \
-    X(DIRECTION_GRIDS, 25, direction_grids, true)   /* camera and shadow rays through DirectionGrids, not the BVH */ \
-    X(GRIDS_ONLY, 26, grids_only, false)            /* every ray takes a grid: the BVH's traversal compiled out */
+#define LANCER_FEATURES(X)                                                                             \
+    X(SCENE_SHAPES, 0, uint, scene_shapes, 0xffffffffu) /* the shape types the scene has (SCENE_HAS_<NAME>) */ \
+    X(SCENE_HAS_BVH, 1, bool, has_bvh, true)                                                           \
+    X(OUTPUT_HITS, 2, bool, output_hits, false)           /* test variant: write first hits, not colours */ \
+    X(CHECK_LOOP_LIMIT, 3, bool, check_loop_limit, false) /* see loop_limit_reached (trace.comp) */      \
+    X(SCENE_HAS_TEXTURES, 4, bool, has_textures, true)    /* some material has an image texture */      \
+    X(SCENE_HAS_PATTERNS, 5, bool, has_patterns, true)    /* some material has a procedural pattern or bump */ \
+    X(SCENE_HAS_TRANSPARENCY, 6, bool, has_transparency, true) /* transmission > 0: the ray tree, media */ \
+    X(SCENE_HAS_AREA_LIGHTS, 7, bool, has_area_lights, true)                                           \
+    X(SCENE_HAS_SPOT_LIGHTS, 8, bool, has_spot_lights, true)                                           \
+    X(SCENE_HAS_FALLOFF, 9, bool, has_falloff, true)      /* a light with distance fall-off */          \
+    X(SCENE_HAS_BLINN, 10, bool, has_blinn, true)         /* a material with highlight = "blinn" */     \
+    X(SCENE_HAS_MICROFACET, 15, bool, has_microfacet, true) /* a material with model = "microfacet" */  \
+    X(SCENE_HAS_PHOTONS, 16, bool, has_photons, true)     /* photon mapping: gather at diffuse hits */  \
+    X(SCENE_HAS_RATIONAL_PATCHES, 17, bool, has_rational_patches, true) /* a Bezier leaf's weights not all 1 */ \
+    X(BVH_HAS_ANALYTIC, 18, bool, bvh_has_analytic, true) /* a cheap bounded shape in the BVH; else all outside it */ \
+    X(BOXED_FAMILIES, 19, uint, boxed_families, 0xffffffffu) /* families outside the BVH with a box (<NAME>_BOXED) */ \
+    X(SPLIT_FAMILIES, 22, uint, split_families, 0xffffffffu) /* ... and with a box around each half (<NAME>_SPLIT) */ \
+    X(DIRECTION_GRIDS, 25, bool, direction_grids, true)   /* camera and shadow rays through DirectionGrids, not the BVH */ \
+    X(GRIDS_ONLY, 26, bool, grids_only, false)            /* every ray takes a grid: the BVH's traversal compiled out */ \
+    X(CHECK_GRID_CONTRACT, 27, bool, check_grid_contract, false) /* tests: a ray without a grid under GRIDS_ONLY fails the render */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

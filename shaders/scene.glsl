@@ -14,31 +14,34 @@
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/surface_codegen.cpp)
 #include "shapes/parametric.glsl"
-#include "shapes/parametric_error.glsl"
 #include "shapes/implicit.glsl"
+
+// The shape table's traits (shapes.h), as conditions on its constant traits. Written without
+// && and || between constants: glslang gives a negated short-circuit over specialisation
+// constants an operand SPIRV-Tools cannot fold (tests/unit/spirv_cache_test.cpp).
+#define LANCER_BOUNDED(traits) (((traits) & SHAPE_BOUNDED) != 0u)
+#define LANCER_BOXABLE(traits) (((traits) & (SHAPE_BOUNDED | SHAPE_CHEAP)) == (SHAPE_BOUNDED | SHAPE_CHEAP))
+// Whether a shape of the family can be in the BVH: bounded, and where it is cheap, only where
+// the host put cheap shapes there (BVH_HAS_ANALYTIC).
+#define LANCER_MAY_BE_IN_BVH(traits) (LANCER_BOUNDED(traits) && (!LANCER_BOXABLE(traits) || BVH_HAS_ANALYTIC))
+// Whether it can be outside the BVH, tested by every ray in its family's loop.
+#define LANCER_MAY_BE_OUTSIDE_BVH(traits) (!SCENE_HAS_BVH || !LANCER_BOUNDED(traits) || (LANCER_BOXABLE(traits) && !BVH_HAS_ANALYTIC))
 
 // uv: the surface's own parameters at the hit, for shapes that have them; error: the error bound
 // of a Bezier or implicit hit, which only their search knows (primitive_normal completes the
 // others'). Only families the scene has are compiled in (lavapipe runs every case of a switch,
-// the type being known only at run time); `bounded` (a constant: p is in the BVH) leaves out
-// planes, never in it, and the analytic shapes where none is (BVH_HAS_ANALYTIC).
+// the type being known only at run time); `bounded` (a constant: p is in the BVH) leaves out the
+// families never in it (LANCER_MAY_BE_IN_BVH).
+#define LANCER_INTERSECT_CASE(NAME, name, Type, type, traits)                                   \
+    case SHAPE_##NAME:                                                                              \
+        return SCENE_HAS_##NAME && (!bounded || LANCER_MAY_BE_IN_BVH(traits)) &&               \
+               name##_intersect(p, ray, t_min, t_max, t_hit, uv, error);
 bool shape_intersect(uint type, Primitive p, Ray ray, float t_min, float t_max, bool bounded, out float t_hit, out vec2 uv,
                      out float error) {
     uv = vec2(0.0);
     error = 0.0;
     switch (type) {
-        case SHAPE_SPHERE: return SCENE_HAS_SPHERE && (!bounded || BVH_HAS_ANALYTIC) && sphere_intersect(p, ray, t_min, t_max, t_hit);
-        case SHAPE_PLANE: return SCENE_HAS_PLANE && !bounded && plane_intersect(p, ray, t_min, t_max, t_hit);
-        case SHAPE_RECTANGLE:
-            return SCENE_HAS_RECTANGLE && (!bounded || BVH_HAS_ANALYTIC) && rectangle_intersect(p, ray, t_min, t_max, t_hit, uv);
-        case SHAPE_BOX: return SCENE_HAS_BOX && (!bounded || BVH_HAS_ANALYTIC) && box_intersect(p, ray, t_min, t_max, t_hit);
-        case SHAPE_BEZIER: return SCENE_HAS_BEZIER && bezier_intersect(p, ray, t_min, t_max, t_hit, uv, error);
-#if LANCER_PARAMETRIC_SURFACES
-        case SHAPE_PARAMETRIC: return parametric_intersect(p, ray, t_min, t_max, t_hit, uv);
-#endif
-#if LANCER_IMPLICIT_SURFACES
-        case SHAPE_IMPLICIT: return implicit_intersect(p, ray, t_min, t_max, t_hit, uv, error);
-#endif
+        LANCER_SHAPES(LANCER_INTERSECT_CASE)
     }
     return false;
 }
@@ -49,42 +52,14 @@ bool shape_intersect(uint type, Primitive p, Ray ray, float t_min, float t_max, 
 // (here once per ray, not for every candidate hit of the search), implicit surfaces' plus the
 // band their enclosures cannot resolve, from the gradient at p. One switch, one fetch of the
 // primitive.
+#define LANCER_NORMAL_CASE(NAME, name, Type, type, traits) \
+    case SHAPE_##NAME:                                          \
+        if (SCENE_HAS_##NAME) return name##_hit_normal(prim, ray, t, p, uv, error); \
+        break;
 vec3 primitive_normal(uint index, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
     Primitive prim = primitive_at(index);
     switch (prim.type) {
-        case SHAPE_SPHERE:
-            if (SCENE_HAS_SPHERE) {
-                error = sphere_hit_error(prim, ray, t);
-                return sphere_normal(prim, p);
-            }
-            break;
-        case SHAPE_PLANE:
-            if (SCENE_HAS_PLANE) {
-                error = plane_hit_error(prim, ray, t);
-                return plane_normal(prim);
-            }
-            break;
-        case SHAPE_RECTANGLE:
-            if (SCENE_HAS_RECTANGLE) {
-                error = rectangle_hit_error(prim, ray, t);
-                return rectangle_normal(prim);
-            }
-            break;
-        case SHAPE_BOX:
-            if (SCENE_HAS_BOX) {
-                error = box_hit_error(prim, ray, t);
-                return box_normal(prim, p);
-            }
-            break;
-        case SHAPE_BEZIER: if (SCENE_HAS_BEZIER) return bezier_normal(prim, uv); break;
-#if LANCER_PARAMETRIC_SURFACES
-        case SHAPE_PARAMETRIC:
-            error = parametric_hit_error(prim, ray, t, uv);
-            return parametric_normal(prim, uv);
-#endif
-#if LANCER_IMPLICIT_SURFACES
-        case SHAPE_IMPLICIT: return implicit_normal(prim, p, error);
-#endif
+        LANCER_SHAPES(LANCER_NORMAL_CASE)
     }
     return vec3(0.0, 0.0, 1.0);
 }
@@ -140,114 +115,72 @@ bool blocks(uint i, Primitive p, Ray ray, float t_min, bool bounded, inout Neare
     return true;
 }
 
-// The primitives outside the BVH (with a BVH, the planes, and the spheres, rectangles and boxes
+// The primitives outside the BVH (with a BVH, the unbounded ones, and the cheap bounded ones
 // where BVH_HAS_ANALYTIC is false; without one, all of them) are sorted by family
 // (host/gpu/scene_packing.cpp), and each family is tested in a loop of its own that calls its
 // intersection directly: lavapipe would otherwise run every family's code for every primitive
 // (`seed`'s rectangle cost its spheres' tests 14%).
 // Not through shape_intersect with a constant type: lavapipe inlines the whole switch at each
 // of the loops before it folds it, and took 0.4 s longer to create the pipeline.
-uint family_end(uint type) {
-    switch (type) {
-        case SHAPE_SPHERE: return frame.sphere_end;
-        case SHAPE_PLANE: return frame.plane_end;
-        case SHAPE_RECTANGLE: return frame.rectangle_end;
-        case SHAPE_BOX: return frame.box_end;
-        case SHAPE_BEZIER: return frame.bezier_end;
-        case SHAPE_PARAMETRIC: return frame.parametric_end;
-    }
-    return frame.primitive_count;  // SHAPE_IMPLICIT, the last
-}
+uint family_end(uint type) { return frame.family_end[type / 4u][type % 4u]; }
+uint family_begin(uint type) { return type == 0u ? frame.primitive_count - frame.unbounded_count : family_end(type - 1u); }
+uint family_split(uint type) { return frame.family_split[type / 4u][type % 4u]; }
 
-uint family_begin(uint type) { return type == SHAPE_SPHERE ? frame.primitive_count - frame.unbounded_count : family_end(type - 1u); }
-
-// The family boxes (host/gpu/family_boxes.hpp): where a family of several spheres, rectangles or
-// boxes is outside the BVH, the host puts a box around it (SPHERES_BOXED, ...: family_lo/hi[2
-// type]), or, for five or more, around each of its two halves (SPHERES_SPLIT, ...: [2 type] the
-// members before `family_split(type)`, [2 type + 1] the rest), rounded outward like the BVH's.
-// A ray that misses a box skips its members: lavapipe runs an `if`'s body for every SIMD lane
-// whatever the condition, and saves work only where a loop runs fewer times (`seed` 0.84x the
-// time with both).
+// The family boxes (host/gpu/family_boxes.hpp): where a family of several cheap bounded shapes
+// is outside the BVH, the host puts a box around it (<NAME>_BOXED: family_lo/hi[2 type]), or,
+// for five or more, around each of its two halves (<NAME>_SPLIT: [2 type] the members before
+// `family_split(type)`, [2 type + 1] the rest), rounded outward like the BVH's. A ray that
+// misses a box skips its members: lavapipe runs an `if`'s body for every SIMD lane whatever the
+// condition, and saves work only where a loop runs fewer times (`seed` 0.84x the time with both).
 bool enters_family_box(uint box, Ray ray, float limit) {
     return box_entry(frame.family_lo[box].xyz, frame.family_hi[box].xyz, ray.origin, safe_inverse(ray.dir), limit) != INFINITY;
 }
 
-uint family_split(uint type) {
-    switch (type) {
-        case SHAPE_SPHERE: return frame.sphere_split;
-        case SHAPE_RECTANGLE: return frame.rectangle_split;
-    }
-    return frame.box_split;
-}
-
-// One family's loop: INTERSECT tests p against the ray up to `limit` (LIMIT), setting t (and
-// uv, error where the family has them); ON_HIT then uses the hit. BOXED and SPLIT say whether it
-// has a box or two (above). With a BVH, only planes and (without BVH_HAS_ANALYTIC) the analytic
-// families, SHAPE_SPHERE to SHAPE_BOX, are outside it. The conditions on the specialisation
-// constants alone are ones the host removes (spirv_specialize.hpp) where they are false.
-#define LANCER_FAMILY_LOOP(TYPE, IN_SCENE, BOXED, SPLIT, INTERSECT, LIMIT, ON_HIT)                   \
-    if ((IN_SCENE) && (!SCENE_HAS_BVH || TYPE == SHAPE_PLANE || (!BVH_HAS_ANALYTIC && TYPE <= SHAPE_BOX))) { \
-        uint first = family_begin(TYPE), last = family_end(TYPE);                                  \
-        if (BOXED) {                                                                               \
-            float box_limit = LIMIT;                                                               \
-            if (SPLIT) {                                                                           \
-                uint split = family_split(TYPE);                                                   \
-                if (!enters_family_box(2u * TYPE, ray, box_limit)) first = split;                   \
-                if (!enters_family_box(2u * TYPE + 1u, ray, box_limit)) last = split;               \
-            } else if (!enters_family_box(2u * TYPE, ray, box_limit)) {                             \
+// One family's loop, for each row of the shape table: its intersection tests p against the ray
+// up to LANCER_LOOP_LIMIT, setting t (and uv, error where the family has them);
+// LANCER_ON_HIT then uses the hit (both defined around each use). The conditions on the
+// specialisation constants and the constant traits alone are ones the host removes
+// (spirv_specialize.hpp) where they are false.
+#define LANCER_FAMILY_LOOP(NAME, name, Type, type, traits)                                          \
+    if (SCENE_HAS_##NAME && LANCER_MAY_BE_OUTSIDE_BVH(traits)) {                                   \
+        uint first = family_begin(SHAPE_##NAME), last = family_end(SHAPE_##NAME);                            \
+        if (LANCER_BOXABLE(traits) && NAME##_BOXED) {                                              \
+            float box_limit = LANCER_LOOP_LIMIT;                                                   \
+            if (NAME##_SPLIT) {                                                                    \
+                uint split = family_split(SHAPE_##NAME);                                                \
+                if (!enters_family_box(2u * SHAPE_##NAME, ray, box_limit)) first = split;               \
+                if (!enters_family_box(2u * SHAPE_##NAME + 1u, ray, box_limit)) last = split;           \
+            } else if (!enters_family_box(2u * SHAPE_##NAME, ray, box_limit)) {                         \
                 last = first;                                                                      \
             }                                                                                      \
         }                                                                                          \
         for (uint i = first; i < last; ++i) {                                                      \
             Primitive p = primitive_at(i);                                                         \
-            float limit = LIMIT;                                                                   \
+            float limit = LANCER_LOOP_LIMIT;                                                       \
             float t, error = 0.0;                                                                  \
             vec2 uv = vec2(0.0);                                                                   \
-            if (INTERSECT) ON_HIT                                                                  \
+            if (name##_intersect(p, ray, t_min, limit, t, uv, error)) LANCER_ON_HIT                 \
         }                                                                                          \
     }
 
-#if LANCER_PARAMETRIC_SURFACES
-#define LANCER_PARAMETRIC_LOOP(LIMIT, ON_HIT) \
-    LANCER_FAMILY_LOOP(SHAPE_PARAMETRIC, true, false, false, parametric_intersect(p, ray, t_min, limit, t, uv), LIMIT, ON_HIT)
-#else
-#define LANCER_PARAMETRIC_LOOP(LIMIT, ON_HIT)
-#endif
-#if LANCER_IMPLICIT_SURFACES
-#define LANCER_IMPLICIT_LOOP(LIMIT, ON_HIT) \
-    LANCER_FAMILY_LOOP(SHAPE_IMPLICIT, true, false, false, implicit_intersect(p, ray, t_min, limit, t, uv, error), LIMIT, ON_HIT)
-#else
-#define LANCER_IMPLICIT_LOOP(LIMIT, ON_HIT)
-#endif
-
-// Every family's loop, in the order of the shape types.
-#define LANCER_FAMILY_LOOPS(LIMIT, ON_HIT)                                                                        \
-    LANCER_FAMILY_LOOP(SHAPE_SPHERE, SCENE_HAS_SPHERE, SPHERES_BOXED, SPHERES_SPLIT, sphere_intersect(p, ray, t_min, limit, t), LIMIT, ON_HIT) \
-    LANCER_FAMILY_LOOP(SHAPE_PLANE, SCENE_HAS_PLANE, false, false, plane_intersect(p, ray, t_min, limit, t), LIMIT, ON_HIT)    \
-    LANCER_FAMILY_LOOP(SHAPE_RECTANGLE, SCENE_HAS_RECTANGLE, RECTANGLES_BOXED, RECTANGLES_SPLIT,                                     \
-                       rectangle_intersect(p, ray, t_min, limit, t, uv), LIMIT, ON_HIT)                            \
-    LANCER_FAMILY_LOOP(SHAPE_BOX, SCENE_HAS_BOX, BOXES_BOXED, BOXES_SPLIT, box_intersect(p, ray, t_min, limit, t), LIMIT, ON_HIT)   \
-    LANCER_FAMILY_LOOP(SHAPE_BEZIER, SCENE_HAS_BEZIER, false, false, bezier_intersect(p, ray, t_min, limit, t, uv, error), LIMIT, ON_HIT) \
-    LANCER_PARAMETRIC_LOOP(LIMIT, ON_HIT)                                                                        \
-    LANCER_IMPLICIT_LOOP(LIMIT, ON_HIT)
-
 // The primitives outside the BVH: the nearest hit, or with any_hit whether there is one.
-#define LANCER_KEEP_NEAREST \
+#define LANCER_LOOP_LIMIT reach(best)
+#define LANCER_ON_HIT \
     if (keep_if_nearer(i, p, t, uv, error, best) && any_hit) return true;
 bool unbounded_hit(Ray ray, float t_min, bool any_hit, inout Nearest best) {
-    LANCER_FAMILY_LOOPS(reach(best), LANCER_KEEP_NEAREST)
+    LANCER_SHAPES(LANCER_FAMILY_LOOP)
     return false;
 }
+#undef LANCER_LOOP_LIMIT
+#undef LANCER_ON_HIT
 
 // Where every shape of the scene is cheap to test, shadow rays take a lean path through the
 // primitives outside the BVH (lean_unbounded_hit). Scenes with Bezier patches or expression
 // surfaces keep the one path: lavapipe's code for their searches got 6-12% slower with a second
-// one, even one the host had left dead (docs/performance.md).
-#if LANCER_PARAMETRIC_SURFACES || LANCER_IMPLICIT_SURFACES
-const bool CHEAP_SHAPES = false;
-#else
-const bool CHEAP_SHAPES = !SCENE_HAS_BEZIER;
-#endif
+// one (docs/performance.md).
+#define LANCER_COSTLY_BIT(NAME, name, Type, type, traits) | ((((traits) & SHAPE_CHEAP) != 0u) ? 0u : (1u << SHAPE_##NAME))
+const uint COSTLY_SHAPES = 0u LANCER_SHAPES(LANCER_COSTLY_BIT);
+const bool CHEAP_SHAPES = (SCENE_SHAPES & COSTLY_SHAPES) == 0u;
 
 // Shadow hints: a shadow ray first tests the primitive that blocked the last shadow ray to the
 // same light (dielectric.glsl's shadow_blockers), which saves the BVH traversal wherever it still
@@ -256,7 +189,9 @@ const bool SHADOW_HINTS = CHEAP_SHAPES && SCENE_HAS_BVH;
 
 // unbounded_hit for a shadow ray, with the hint (any primitive, or NO_PRIMITIVE) first and
 // without the nearest hit's bookkeeping (`seed` 5% faster on lavapipe).
-#define LANCER_KEEP_FIRST {                 \
+#define LANCER_LOOP_LIMIT best.t
+#define LANCER_ON_HIT                    \
+    {                                    \
         best = Nearest(t, i, uv, error); \
         return true;                     \
     }
@@ -265,9 +200,11 @@ bool lean_unbounded_hit(Ray ray, float t_min, uint hint, inout Nearest best) {
         Primitive p = primitive_at(hint);
         if (blocks(hint, p, ray, t_min, false, best)) return true;
     }
-    LANCER_FAMILY_LOOPS(best.t, LANCER_KEEP_FIRST)
+    LANCER_SHAPES(LANCER_FAMILY_LOOP)
     return false;
 }
+#undef LANCER_LOOP_LIMIT
+#undef LANCER_ON_HIT
 
 // A camera ray, its reflection in a flat mirror or a shadow ray through direction grid g
 // (layout.h's DirectionGrid) instead of the BVH: a camera ray starts at the grid's origin, the

@@ -4,19 +4,17 @@
 #ifndef LANCER_TEXTURE_GLSL
 #define LANCER_TEXTURE_GLSL
 
-// Texture coordinates (u, v) of a hit at point p.
+// Texture coordinates (u, v) of a hit at point p, by its shape's mapping.
+#define LANCER_TEXTURE_UV_CASE(NAME, name, Type, type, traits) \
+    case SHAPE_##NAME:                                              \
+        if (SCENE_HAS_##NAME) return name##_texture_uv(prim, hit, p); \
+        break;
 vec2 texture_uv(Hit hit, vec3 p) {
     Primitive prim = primitive_at(hit.primitive);
     switch (prim.type) {
-        case SHAPE_SPHERE: if (SCENE_HAS_SPHERE) return sphere_texture_uv(prim, p); break;
-        case SHAPE_PLANE: if (SCENE_HAS_PLANE) return plane_texture_uv(prim, p); break;
-        case SHAPE_BOX: if (SCENE_HAS_BOX) return box_texture_uv(prim, p, hit.normal); break;
-        case SHAPE_BEZIER: return surface_uv(hit);  // each patch's (u, v)
-#if LANCER_PARAMETRIC_SURFACES
-        case SHAPE_PARAMETRIC: return parametric_texture_uv(prim, hit.uv);
-#endif
+        LANCER_SHAPES(LANCER_TEXTURE_UV_CASE)
     }
-    return hit.uv;  // rectangles: (a, b) along their edges
+    return hit.uv;
 }
 
 vec3 texel_linear(TextureInfo t, int x, int y) {

@@ -58,6 +58,6 @@ dvec3 past_surface(const dvec3& p, const dvec3& n, const dvec3& d, double offset
     return p + (offset / std::max(std::abs(glm::dot(d, n)), 0.01)) * d;
 }
 
-bool is_thin_sheet(const Shape& shape) { return std::holds_alternative<Rectangle>(shape); }
+bool is_thin_sheet(const Shape& shape) { return shape_has(shape_type(shape), SHAPE_SHEET); }
 
 }  // namespace lancer::cpu

@@ -56,7 +56,7 @@ dvec3 beer_lambert(const dvec3& a, double distance);
 // true length (Beer-Lambert).
 dvec3 past_surface(const dvec3& p, const dvec3& n, const dvec3& d, double offset);
 
-// Rectangles have no inside: as transparent surfaces they are thin sheets, which reflect and
+// Shapes without an inside (SHAPE_SHEET: rectangles) are, transparent, thin sheets, which reflect and
 // transmit without bending the ray or changing the medium.
 bool is_thin_sheet(const Shape& shape);
 

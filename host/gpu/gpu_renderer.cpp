@@ -92,7 +92,7 @@ void GpuRenderer::use_shaders(const gpu::ShaderTree& tree, const std::string& di
         gpu::compile_compute(gpu::with_files(tree, generated_), gpu::kTraceShader, {}, display_root);
     // Prove the new code builds before dropping the old pipelines (the plain variant is cheap).
     auto probe = std::make_unique<gpu::PipelineBuild>(
-        context_, layout_, spirv, gpu::ShaderFeatures{}, gpu::spirv_cleanup_for(gpu::ShaderFeatures{}, parametric_));
+        context_, layout_, spirv, gpu::ShaderFeatures{}, gpu::spirv_cleanup_for(gpu::ShaderFeatures{}));
     if (!probe->wait([] { return !cancellation_requested(); })) throw Cancelled();
     VK_CHECK(vkDeviceWaitIdle(context_->device()));  // old pipelines may still be in use
     pipelines_.clear();
@@ -139,7 +139,7 @@ void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features, const Pro
     auto& slot = pipelines_[features];
     if (!slot)
         slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv_, features,
-                                                    gpu::spirv_cleanup_for(features, parametric_));
+                                                    gpu::spirv_cleanup_for(features));
     pipeline_ = slot->wait([&] { return !progress || progress(0.0); });
     if (!pipeline_) throw RenderCancelled();
 }
@@ -168,7 +168,6 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
     gpu::check_render_memory(scene, buffer_bytes);
     emitters_ = packed.emitters;
     float_notes_ = packed.float_notes;
-    parametric_ = !packed.surfaces.empty();
     resources_.upload(packed, gpu::pack_frame(scene, packed));
     if (std::string code = gpu::surface_functions_glsl(scene); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;

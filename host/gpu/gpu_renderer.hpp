@@ -133,7 +133,6 @@ private:
     bool base_is_embedded_ = true;
     std::string display_root_;
     gpu::ShaderFiles generated_;  // code generated for the current scene, by file name
-    bool parametric_ = false;     // the current scene has parametric surfaces (spirv_cleanup_for)
     std::vector<std::uint32_t> spirv_;
     std::vector<std::uint32_t> photon_spirv_;  // the photon pass, when a scene has needed it
     std::map<gpu::ShaderFeatures, std::unique_ptr<gpu::PipelineBuild>> pipelines_;

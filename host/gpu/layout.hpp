@@ -3,31 +3,54 @@
 // resources and specialisation constants turned into C++ types.
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <type_traits>
 
 #include "layout.h"  // shaders/ is on the include path
 
 namespace lancer::gpu {
 
-// The shader's specialisation constants (LANCER_FEATURES), one bool each. Optional features
-// are compiled out of pipelines whose scene lacks them.
+// The shader's specialisation constants (LANCER_FEATURES). Optional features are compiled out
+// of pipelines whose scene lacks them.
 struct ShaderFeatures {
-#define LANCER_FEATURE_MEMBER(NAME, id, member, fallback) bool member = false;
+#define LANCER_FEATURE_MEMBER(NAME, id, type, member, fallback) type member{};
     LANCER_FEATURES(LANCER_FEATURE_MEMBER)
 #undef LANCER_FEATURE_MEMBER
     auto operator<=>(const ShaderFeatures&) const = default;
+
+    // The sets of shape types (bit t for type t) in scene_shapes, boxed_families, split_families.
+    bool has_shape(uint type) const { return (scene_shapes >> type) & 1u; }
+    void add_shape(uint type) { scene_shapes |= 1u << type; }
+    bool family_boxed(uint type) const { return (boxed_families >> type) & 1u; }
+    bool family_split(uint type) const { return (split_families >> type) & 1u; }
 };
 
 struct FeatureSpec {
     const char* name;  // the GLSL constant
     uint id;           // its constant_id
-    bool ShaderFeatures::*member;
+    bool is_bool;      // else a uint
 };
 
 inline constexpr FeatureSpec kFeatures[] = {
-#define LANCER_FEATURE_SPEC(NAME, id, member, fallback) {#NAME, id, &ShaderFeatures::member},
+#define LANCER_FEATURE_SPEC(NAME, id, type, member, fallback) {#NAME, id, std::is_same_v<type, bool>},
     LANCER_FEATURES(LANCER_FEATURE_SPEC)
 #undef LANCER_FEATURE_SPEC
 };
+inline constexpr std::size_t kFeatureCount = std::size(kFeatures);
+
+// The value of kFeatures[i] in `features`, as the 32-bit word Vulkan specialises it with.
+constexpr std::uint32_t feature_value(const ShaderFeatures& features, std::size_t i) {
+    std::size_t k = 0;
+#define LANCER_FEATURE_VALUE(NAME, id, type, member, fallback) \
+    if (k++ == i) return static_cast<std::uint32_t>(features.member);
+    LANCER_FEATURES(LANCER_FEATURE_VALUE)
+#undef LANCER_FEATURE_VALUE
+    return 0;
+}
+
+// FrameParams' per-shape uints (family_end, family_split), four to a uvec4.
+constexpr uint& per_shape(uvec4* quads, uint type) { return quads[type / 4][type % 4]; }
+constexpr uint per_shape(const uvec4* quads, uint type) { return quads[type / 4][type % 4]; }
 
 // One descriptor of the tracer's set (LANCER_RESOURCES).
 struct ResourceSpec {

@@ -10,6 +10,8 @@
 #include <thread>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "gpu/layout.hpp"
 #include "gpu/resource_kinds.hpp"
 #include "gpu/spirv_cache.hpp"
@@ -59,18 +61,17 @@ ComputePipeline::ComputePipeline(const Context& context, const TraceLayout& layo
                                  const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
                                  const std::string& pipeline_name, SpirvCleanup cleanup)
     : device_(context.device()) {
-    constexpr std::size_t kCount = std::size(kFeatures);
-    std::array<VkBool32, kCount> values{};
-    std::array<VkSpecializationMapEntry, kCount> entries{};
+    std::array<std::uint32_t, kFeatureCount> values{};  // a VkBool32 or a uint each
+    std::array<VkSpecializationMapEntry, kFeatureCount> entries{};
     std::string name = pipeline_name;
-    for (std::size_t i = 0; i < kCount; ++i) {
-        const bool on = features.*kFeatures[i].member;
-        values[i] = on ? VK_TRUE : VK_FALSE;
-        entries[i] = {kFeatures[i].id, static_cast<std::uint32_t>(i * sizeof(VkBool32)), sizeof(VkBool32)};
-        if (on) name += std::string(" ") + kFeatures[i].name;
+    for (std::size_t i = 0; i < kFeatureCount; ++i) {
+        values[i] = feature_value(features, i);
+        entries[i] = {kFeatures[i].id, static_cast<std::uint32_t>(i * sizeof(std::uint32_t)), sizeof(std::uint32_t)};
+        if (kFeatures[i].is_bool && values[i]) name += std::string(" ") + kFeatures[i].name;
+        if (!kFeatures[i].is_bool) name += fmt::format(" {}={:#x}", kFeatures[i].name, values[i]);
     }
     VkSpecializationInfo specialization{};
-    specialization.mapEntryCount = static_cast<std::uint32_t>(kCount);
+    specialization.mapEntryCount = static_cast<std::uint32_t>(kFeatureCount);
     specialization.pMapEntries = entries.data();
     specialization.dataSize = sizeof(values);
     specialization.pData = values.data();

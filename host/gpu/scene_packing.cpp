@@ -33,8 +33,6 @@ constexpr std::size_t kMinPrimitivesForBvh = 16;
 // At most this many spheres, rectangles and boxes stay outside a BVH of expensive shapes.
 constexpr std::size_t kMaxAnalyticOutsideBvh = 8;
 
-bool is_analytic(uint type) { return type == SHAPE_SPHERE || type == SHAPE_RECTANGLE || type == SHAPE_BOX; }
-
 vec4 v4(const dvec3& v, double w = 0.0) { return vec4(float(v.x), float(v.y), float(v.z), float(w)); }
 
 // A box for the shader's slab test, rounded outward to float and padded by a few float ulps of
@@ -377,22 +375,22 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     for (const auto& [p, box] : prims) bounded_count += box.has_value();
     bool use_bvh = acceleration == Acceleration::BvhAlways ||
                    (acceleration == Acceleration::Bvh && bounded_count >= kMinPrimitivesForBvh);
-    // Beside Bezier patches or expression surfaces in a BVH, a few spheres, rectangles and boxes
+    // Beside costly shapes (patches, expression surfaces) in a BVH, a few cheap bounded ones
     // stay outside it, tested by every ray in loops of their own: in the BVH's leaves, lavapipe
     // would run their code at every test of a patch or cell (the teapot 0.93x the time).
     std::size_t analytic = 0;
     bool expensive = false;
     for (const auto& [p, box] : prims) {
         if (!box) continue;
-        analytic += is_analytic(p.type);
-        expensive |= p.type == SHAPE_BEZIER || p.type == SHAPE_PARAMETRIC || p.type == SHAPE_IMPLICIT;
+        analytic += shape_is_boxable(p.type);
+        expensive |= !shape_has(p.type, SHAPE_CHEAP);
     }
     const bool analytic_outside = expensive && analytic <= kMaxAnalyticOutsideBvh;
     std::vector<Primitive> bounded;
     std::vector<std::pair<Primitive, std::optional<Aabb>>> unbounded;
     std::vector<Aabb> boxes;
     for (const auto& [p, box] : prims) {
-        if (use_bvh && box && !(analytic_outside && is_analytic(p.type))) {
+        if (use_bvh && box && !(analytic_outside && shape_is_boxable(p.type))) {
             bounded.push_back(p);
             boxes.push_back(*box);
         } else {
@@ -407,7 +405,8 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     Aabb everything;
     for (const auto& [p, box] : prims)
         if (box) everything.extend(*box);
-    for (uint type : {SHAPE_SPHERE, SHAPE_RECTANGLE, SHAPE_BOX}) {
+    for (uint type = 0; type < SHAPE_COUNT; ++type) {
+        if (!shape_is_boxable(type)) continue;
         auto begin = std::find_if(unbounded.begin(), unbounded.end(), [&](const auto& e) { return e.first.type == type; });
         auto end = std::find_if(begin, unbounded.end(), [&](const auto& e) { return e.first.type != type; });
         packed.families[type] = box_family(std::span(begin, end), everything);
@@ -433,20 +432,12 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     f.has_photons = scene.photons.has_value();
     const std::size_t in_bvh = packed.nodes.empty() ? 0 : packed.primitives.size() - packed.unbounded_count;
     f.bvh_has_analytic = false;
-    for (std::size_t i = 0; i < in_bvh; ++i) f.bvh_has_analytic |= is_analytic(packed.primitives[i].type);
-    for (const Primitive& p : packed.primitives) {
-        f.has_sphere |= p.type == SHAPE_SPHERE;
-        f.has_plane |= p.type == SHAPE_PLANE;
-        f.has_rectangle |= p.type == SHAPE_RECTANGLE;
-        f.has_box |= p.type == SHAPE_BOX;
+    for (std::size_t i = 0; i < in_bvh; ++i) f.bvh_has_analytic |= shape_is_boxable(packed.primitives[i].type);
+    for (const Primitive& p : packed.primitives) f.add_shape(p.type);
+    for (uint type = 0; type < SHAPE_COUNT; ++type) {
+        if (packed.families[type].boxed) f.boxed_families |= 1u << type;
+        if (packed.families[type].split) f.split_families |= 1u << type;
     }
-    f.spheres_boxed = packed.families[SHAPE_SPHERE].boxed;
-    f.rectangles_boxed = packed.families[SHAPE_RECTANGLE].boxed;
-    f.boxes_boxed = packed.families[SHAPE_BOX].boxed;
-    f.spheres_split = packed.families[SHAPE_SPHERE].split;
-    f.rectangles_split = packed.families[SHAPE_RECTANGLE].split;
-    f.boxes_split = packed.families[SHAPE_BOX].split;
-    f.has_bezier = !packed.patches.empty();
     for (const PatchLeaf& leaf : packed.patches)
         for (const vec4& point : leaf.points) f.has_rational_patches |= point.w != 1.0f;
     f.has_bvh = !packed.nodes.empty();
@@ -465,8 +456,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     // Direction grids for camera and shadow rays, where every shape is cheap to test (the
     // shader's CHEAP_SHAPES) and any hit blocks a shadow ray (no transparency).
     bool cheap = true;
-    for (const Primitive& p : packed.primitives)
-        cheap &= p.type != SHAPE_BEZIER && p.type != SHAPE_PARAMETRIC && p.type != SHAPE_IMPLICIT;
+    for (const Primitive& p : packed.primitives) cheap &= shape_has(p.type, SHAPE_CHEAP);
     f.direction_grids = f.has_bvh && cheap && !f.has_transparency;
     if (f.direction_grids) {
         std::vector<Aabb> packed_boxes;
@@ -560,25 +550,19 @@ FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {
     f.light_count = static_cast<uint>(packed.lights.size());
     f.node_count = static_cast<uint>(packed.nodes.size());
     f.unbounded_count = packed.unbounded_count;
-    // Where each family of the unbounded primitives (sorted by type) ends.
-    static_assert(SHAPE_SPHERE == 0 && SHAPE_PLANE == 1 && SHAPE_RECTANGLE == 2 && SHAPE_BOX == 3 && SHAPE_BEZIER == 4 &&
-                  SHAPE_PARAMETRIC == 5 && SHAPE_IMPLICIT == 6, "FrameParams' family ends follow the shape types' order");
-    uint* ends[] = {&f.sphere_end, &f.plane_end, &f.rectangle_end, &f.box_end, &f.bezier_end, &f.parametric_end};
+    // Where each family of the unbounded primitives (sorted by type) ends, and the family boxes
+    // (family_boxes.hpp): two per family, the second unused unless it is split.
     std::size_t i = packed.primitives.size() - packed.unbounded_count;
-    for (uint type = 0; type < std::size(ends); ++type) {
+    for (uint type = 0; type < SHAPE_COUNT; ++type) {
+        const uint begin = static_cast<uint>(i);
         while (i < packed.primitives.size() && packed.primitives[i].type <= type) ++i;
-        *ends[type] = static_cast<uint>(i);
-    }
-    // The family boxes (family_boxes.hpp): two per family, the second unused unless it is split.
-    for (std::size_t type = 0; type < packed.families.size(); ++type) {
+        f.family_end[type / 4][type % 4] = static_cast<uint>(i);
+        f.family_split[type / 4][type % 4] = begin + packed.families[type].split_at;
         for (int h = 0; h < 2; ++h) {
             const Aabb& box = packed.families[type].halves[h];
             pack_box(box.empty() ? Aabb{dvec3(0.0), dvec3(0.0)} : box, f.family_lo[2 * type + h], f.family_hi[2 * type + h]);
         }
     }
-    f.sphere_split = f.primitive_count - f.unbounded_count + packed.families[SHAPE_SPHERE].split_at;
-    f.rectangle_split = f.plane_end + packed.families[SHAPE_RECTANGLE].split_at;
-    f.box_split = f.rectangle_end + packed.families[SHAPE_BOX].split_at;
     f.mirror_plane = packed.mirror_plane;
     f.loop_probe = 2;
     return f;

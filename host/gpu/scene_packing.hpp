@@ -19,9 +19,6 @@
 
 namespace lancer::gpu {
 
-// The shape types below SHAPE_BEZIER: spheres, planes, rectangles, boxes.
-inline constexpr std::size_t kAnalyticFamilies = SHAPE_BEZIER;
-
 struct PackedScene {
 #define LANCER_PACKED_ARRAY(NAME, slot, kind, Element, member, reader, what) std::vector<Element> member;
     LANCER_SCENE_ARRAYS(LANCER_PACKED_ARRAY)
@@ -33,11 +30,11 @@ struct PackedScene {
     uint unbounded_count = 0;
     // The plane whose reflections of camera rays take the mirror's direction grid, or NO_PRIMITIVE.
     uint mirror_plane = NO_PRIMITIVE;
-    // By shape type, the boxes around the spheres, rectangles and boxes outside the BVH (planes
-    // have none; gpu/family_boxes.hpp).
-    std::array<FamilyBoxes, kAnalyticFamilies> families{};
+    // By shape type, the boxes around the families of cheap bounded shapes outside the BVH
+    // (shape_is_boxable; the others have none: gpu/family_boxes.hpp).
+    std::array<FamilyBoxes, SHAPE_COUNT> families{};
     uint photon_count = 0;  // photons per pass, with photon mapping
-    // The scene's shape families and shading features: has_bezier, has_bvh, has_textures, ...
+    // The scene's shape families and shading features: scene_shapes, has_bvh, has_textures, ...
     // (output_hits and check_loop_limit are the renderer's to set).
     ShaderFeatures features;
 

@@ -24,7 +24,7 @@ namespace {
 struct EntryHeader {
     char magic[8];                 // kMagic: also versions the entry format
     std::uint64_t input_hash;      // of the unspecialised module
-    std::uint64_t features;        // one bit per LANCER_FEATURES flag, in table order
+    std::uint64_t features;        // a hash of every LANCER_FEATURES value, in table order
     std::uint64_t recipe_hash;     // of spirv_recipe(cleanup): the passes run
     std::uint64_t words;           // the module's length
     std::uint64_t output_hash;     // of the module's words: a torn or damaged file does not match
@@ -54,12 +54,13 @@ std::uint64_t hash_text(const std::string& text, std::uint64_t h = 1469598103934
     return hash_bytes(text.data(), text.size() + 1, h);  // the terminator separates consecutive texts
 }
 
-std::uint64_t feature_bits(const ShaderFeatures& features) {
-    static_assert(std::size(kFeatures) <= 64);
-    std::uint64_t bits = 0;
-    for (std::size_t i = 0; i < std::size(kFeatures); ++i)
-        if (features.*kFeatures[i].member) bits |= std::uint64_t{1} << i;
-    return bits;
+std::uint64_t feature_key(const ShaderFeatures& features) {
+    std::uint64_t h = 14695981039346656037ull;
+    for (std::size_t i = 0; i < kFeatureCount; ++i) {
+        const std::uint32_t value = feature_value(features, i);
+        h = hash_bytes(&value, sizeof value, h);
+    }
+    return h;
 }
 
 bool is_set(const char* name) {
@@ -216,7 +217,7 @@ std::vector<std::uint32_t> cached_specialization(const std::vector<std::uint32_t
     EntryHeader key{};
     std::memcpy(key.magic, kMagic, sizeof kMagic);
     key.input_hash = hash_words(spirv);
-    key.features = feature_bits(features);
+    key.features = feature_key(features);
     key.recipe_hash = hash_text(spirv_recipe(cleanup));
     const std::string path = fmt::format("{}/tracer-{:016x}-{:016x}-{}.spv", *dir, key.input_hash, key.features,
                                          static_cast<int>(cleanup));

@@ -36,14 +36,19 @@ std::string spirv_recipe(SpirvCleanup cleanup) {
     return recipe;
 }
 
-SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features, bool parametric) {
-    return features.has_bezier || parametric ? SpirvCleanup::dead_code : SpirvCleanup::local_variables;
+SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features) {
+    for (uint type = 0; type < SHAPE_COUNT; ++type)
+        if (features.has_shape(type) && shape_has(type, SHAPE_KEEPS_LOCALS)) return SpirvCleanup::dead_code;
+    return SpirvCleanup::local_variables;
 }
 
 std::vector<std::uint32_t> specialize_spirv(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
                                             SpirvCleanup cleanup) {
     std::unordered_map<std::uint32_t, std::string> values;
-    for (const FeatureSpec& f : kFeatures) values[f.id] = features.*f.member ? "true" : "false";
+    for (std::size_t i = 0; i < kFeatureCount; ++i) {
+        const std::uint32_t value = feature_value(features, i);
+        values[kFeatures[i].id] = kFeatures[i].is_bool ? (value ? "true" : "false") : std::to_string(value);
+    }
     spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_2);
     optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
     optimizer.RegisterPass(spvtools::CreateSetSpecConstantDefaultValuePass(values))

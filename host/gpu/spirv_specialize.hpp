@@ -18,13 +18,12 @@ enum class SpirvCleanup : std::uint8_t {
     local_variables,  // also local variables turned into SSA values, loads and stores folded
 };
 
-// The cleanup that pays on lavapipe for a tracer with these features, `parametric` saying
-// whether it includes parametric surfaces' code (surface_codegen). Turning local variables into
-// SSA values before the driver sees the module takes a third off lavapipe's pipeline creation
-// (a warm start of `seed` 0.12 -> 0.08 s, of the Barth sextic 0.48 -> 0.18 s), but the JIT code
-// of the Bezier clipper then runs 7-9% slower and the parametric search 2-5% slower
-// (docs/performance.md), so those keep the dead-code cleanup alone.
-SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features, bool parametric);
+// The cleanup that pays on lavapipe for a tracer with these features. Turning local variables
+// into SSA values before the driver sees the module takes a third off lavapipe's pipeline
+// creation (a warm start of `seed` 0.12 -> 0.08 s, of the Barth sextic 0.48 -> 0.18 s), but
+// slows some shapes' code (SHAPE_KEEPS_LOCALS in shapes.h): scenes with them keep the dead-code
+// cleanup alone.
+SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features);
 
 // The passes `cleanup` runs, in words and spirv-opt flags: what a cached module depends on.
 std::string spirv_recipe(SpirvCleanup cleanup);

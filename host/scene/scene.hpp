@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "image/tone.hpp"
 #include "optics/metals.hpp"
 #include "scene/material_maps.hpp"
+#include "shapes.h"  // the shape registry
 #include "surface/bezier_patch.hpp"
 #include "surface/implicit_surface.hpp"
 #include "surface/parametric_surface.hpp"
@@ -231,6 +233,14 @@ struct ImplicitObject {
 };
 
 using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject>;
+
+// The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
+#define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \
+    static_assert(std::is_same_v<std::variant_alternative_t<type, Shape>, Type>, "Shape's order is shapes.h's");
+LANCER_SHAPES(LANCER_SHAPE_ALTERNATIVE)
+#undef LANCER_SHAPE_ALTERNATIVE
+static_assert(std::variant_size_v<Shape> == SHAPE_COUNT);
+inline std::uint32_t shape_type(const Shape& shape) { return static_cast<std::uint32_t>(shape.index()); }
 
 struct Object {
     Shape shape;

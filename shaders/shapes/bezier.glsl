@@ -250,7 +250,7 @@ void bezier_leaf_eval(uint leaf, vec2 uv, out vec3 P, out vec3 Pu, out vec3 Pv) 
 
 // The unit normal at a hit. Where the patch degenerates (an edge collapsed to a point, as at
 // the teapot's lid apex) Su x Sv vanishes; the limit normal is taken slightly inside the leaf.
-vec3 bezier_normal(Primitive prim, vec2 uv) {
+vec3 bezier_hit_normal(Primitive prim, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
     vec3 P, Pu, Pv;
     bezier_leaf_eval(prim.data, uv, P, Pu, Pv);
     vec3 n = cross(Pu, Pv);
@@ -261,4 +261,10 @@ vec3 bezier_normal(Primitive prim, vec2 uv) {
     }
     float len = length(n);
     return len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
+}
+
+// Texture (u, v): the hit's parameters on its whole patch (a leaf's own are mapped to it).
+vec2 bezier_texture_uv(Primitive prim, Hit hit, vec3 p) {
+    vec4 dom = patch_leaf_at(prim.data).domain;
+    return vec2(mix(dom.x, dom.y, hit.uv.x), mix(dom.z, dom.w, hit.uv.y));
 }

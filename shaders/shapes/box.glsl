@@ -1,6 +1,6 @@
 // Ray/axis-aligned box by slabs. Twin of host/cpu/shapes/box.cpp. p0 = min, p1 = max.
 // A ray starting inside hits the far side (t_exit), so reflections and shadows from inside work.
-bool box_intersect(Primitive b, Ray ray, float t_min, float t_max, out float t_hit) {
+bool box_intersect(Primitive b, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     vec3 inv = 1.0 / ray.dir;  // +-inf for axis-parallel rays; the slab test stays correct
     vec3 t0 = (b.p0.xyz - ray.origin) * inv;
     vec3 t1 = (b.p1.xyz - ray.origin) * inv;
@@ -22,7 +22,8 @@ float box_hit_error(Primitive b, Ray ray, float t) {
 }
 
 // The face whose plane the point is closest to, relative to the box size.
-vec3 box_normal(Primitive b, vec3 p) {
+vec3 box_hit_normal(Primitive b, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
+    error = box_hit_error(b, ray, t);
     vec3 c = 0.5 * (b.p0.xyz + b.p1.xyz);
     vec3 h = 0.5 * (b.p1.xyz - b.p0.xyz);
     vec3 d = (p - c) / h;
@@ -34,7 +35,8 @@ vec3 box_normal(Primitive b, vec3 p) {
 
 // Texture (u, v): the whole image on each face, upright seen from outside. Side faces have v
 // up (+y) and u to the right; the top has u = +x, v = +z; the bottom u = +x, v = -z.
-vec2 box_texture_uv(Primitive b, vec3 p, vec3 face_normal) {
+vec2 box_texture_uv(Primitive b, Hit hit, vec3 p) {
+    vec3 face_normal = hit.normal;
     vec3 f = (p - b.p0.xyz) / (b.p1.xyz - b.p0.xyz);  // 0 at min, 1 at max, per axis
     if (face_normal.x > 0.5) return vec2(f.z, f.y);
     if (face_normal.x < -0.5) return vec2(1.0 - f.z, f.y);

@@ -181,7 +181,7 @@ float implicit_band(Primitive prim, vec3 local, float gradient, vec3 p) {
 // the world -> local map. Where it vanishes (a singular point) the gradient a little away
 // along the box's diagonal is taken, as on the CPU reference. Adds the band (implicit_band) to
 // the hit's error bound.
-vec3 implicit_normal(Primitive prim, vec3 p, inout float error) {
+vec3 implicit_hit_normal(Primitive prim, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
     ImplicitInfo info = implicit_at(prim.data);
     mat3 rows = mat3(info.row0.xyz, info.row1.xyz, info.row2.xyz);
     vec3 local = p * rows + vec3(info.row0.w, info.row1.w, info.row2.w);
@@ -196,4 +196,15 @@ vec3 implicit_normal(Primitive prim, vec3 p, inout float error) {
     return len > 0.0 && !isinf(len) ? n / len : vec3(0.0, 0.0, 1.0);
 }
 
+// Texture (u, v): the intersection's (an implicit surface has no parameters of its own).
+vec2 implicit_texture_uv(Primitive prim, Hit hit, vec3 p) { return hit.uv; }
+
+#else
+// No implicit surface in the scene: the family's functions exist for the shape table's
+// dispatch, which SCENE_HAS_IMPLICIT (false) leaves out.
+bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit, out float error) {
+    return false;
+}
+vec3 implicit_hit_normal(Primitive prim, Ray ray, float t, vec3 p, vec2 uv, inout float error) { return vec3(0.0, 0.0, 1.0); }
+vec2 implicit_texture_uv(Primitive prim, Hit hit, vec3 p) { return hit.uv; }
 #endif

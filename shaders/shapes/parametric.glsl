@@ -29,6 +29,8 @@
 // step): lavapipe inlines every call site into both call sites of trace_scene, so each extra
 // call would cost compile time and registers.
 
+#if LANCER_PARAMETRIC_SURFACES
+
 const int PARAMETRIC_LEVELS = 4;          // boxes down to 1/16 of a cell's side
 const int PARAMETRIC_ITERATIONS = 128;    // boxes and Newton steps per ray and cell; beyond, the nearest root so far
 const int PARAMETRIC_NEWTON_STEPS = 10;   // per root
@@ -60,7 +62,7 @@ vec4 parametric_box(vec4 cell, int level, uint code) {
 
 mat2 parametric_abs(mat2 m) { return mat2(abs(m[0]), abs(m[1])); }
 
-bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit) {
+bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit, inout float error) {
     // The cell's own proved box first (p0, p1): a BVH leaf holds several cells, and a slab test
     // costs far less than the search.
     if (box_entry(prim.p0.xyz, prim.p1.xyz, ray.origin, safe_inverse(ray.dir), t_max) == INFINITY) return false;
@@ -260,9 +262,28 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
     return true;
 }
 
+// The error bound of a parametric surface's hit (Hit.error): how far the hit point
+// ray.origin + t * ray.dir, computed in float, can be from the surface. Secondary rays start
+// twice this far off it (common.glsl, spawn_offset), so it must not be too small (a ray leaving
+// the surface would find it again at t ~ 0: acne) nor much larger than needed (contact shadows,
+// thin features).
+//
+// A conservative bound that holds for any Newton-type intersector in parametric.glsl: the root
+// is accepted once Newton's step is below 1e-4 of the cell (in its own parameters, so in space
+// below 1e-4 of the cell's extent, which its proved box holds), and quadratic convergence leaves
+// far less than the last step; the clamp of a root just outside the cell into it moves the point
+// by as much. S(u, v) itself is evaluated in float at coordinates up to the cell box's magnitude
+// (64 roundings of it cover the shipped expressions), and the hit point has its own rounding.
+// An intersector that knows more (its residual, its last step) can return a tighter bound.
+float parametric_hit_error(Primitive prim, Ray ray, float t, vec2 uv) {
+    vec3 lo = prim.p0.xyz, hi = prim.p1.xyz;  // the cell's proved box
+    return 1e-4 * length(hi - lo) + rounding_bound(64.0, max(max_abs(lo), max_abs(hi))) + hit_point_rounding(ray.origin, t);
+}
+
 // Unit normal from the exact partials; at poles and collapsed edges (S_u x S_v = 0) the limit
 // normal is taken a little toward the inside of the surface's domain.
-vec3 parametric_normal(Primitive prim, vec2 uv) {
+vec3 parametric_hit_normal(Primitive prim, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
+    error = parametric_hit_error(prim, ray, t, uv);
     uint surface = uint(cell_at(prim.data).su_lo.w);
     vec3 P, Pu, Pv;
     surface_world(surface, uv, P, Pu, Pv);
@@ -279,7 +300,17 @@ vec3 parametric_normal(Primitive prim, vec2 uv) {
 }
 
 // Texture (u, v): the hit's parameters, the surface's domain mapped to [0, 1] x [0, 1].
-vec2 parametric_texture_uv(Primitive prim, vec2 uv) {
+vec2 parametric_texture_uv(Primitive prim, Hit hit, vec3 p) {
     vec4 dom = surface_at(uint(cell_at(prim.data).su_lo.w)).domain;
-    return (uv - dom.xz) / (dom.yw - dom.xz);
+    return (hit.uv - dom.xz) / (dom.yw - dom.xz);
 }
+
+#else
+// No parametric surface in the scene: the family's functions exist for the shape table's
+// dispatch, which SCENE_HAS_PARAMETRIC (false) leaves out.
+bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit, inout float error) {
+    return false;
+}
+vec3 parametric_hit_normal(Primitive prim, Ray ray, float t, vec3 p, vec2 uv, inout float error) { return vec3(0.0, 0.0, 1.0); }
+vec2 parametric_texture_uv(Primitive prim, Hit hit, vec3 p) { return hit.uv; }
+#endif

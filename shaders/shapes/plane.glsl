@@ -1,6 +1,6 @@
 // Ray/infinite plane. Twin of host/cpu/shapes/plane.cpp.
 // p0 = (point, 0), p1 = (unit normal, 0).
-bool plane_intersect(Primitive pl, Ray ray, float t_min, float t_max, out float t_hit) {
+bool plane_intersect(Primitive pl, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     vec3 n = pl.p1.xyz;
     float denom = dot(n, ray.dir);
     if (denom == 0.0) return false;  // parallel: no hit, even if the ray lies in the plane
@@ -19,12 +19,13 @@ float plane_hit_error(Primitive pl, Ray ray, float t) {
     return rounding_bound(16.0, max_abs(ray.origin) + max_abs(pl.p0.xyz) + t);
 }
 
-vec3 plane_normal(Primitive pl) {
+vec3 plane_hit_normal(Primitive pl, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
+    error = plane_hit_error(pl, ray, t);
     return pl.p1.xyz;
 }
 
 // Texture (u, v): distances from the plane's point along its texture axes (p2 = u, v = u x n).
-vec2 plane_texture_uv(Primitive pl, vec3 p) {
+vec2 plane_texture_uv(Primitive pl, Hit hit, vec3 p) {
     vec3 d = p - pl.p0.xyz;
     return vec2(dot(d, pl.p2.xyz), dot(d, cross(pl.p2.xyz, pl.p1.xyz)));
 }

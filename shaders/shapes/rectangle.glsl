@@ -1,6 +1,6 @@
 // Ray/parallelogram corner + a*edge_u + b*edge_v, a, b in [0, 1].
 // Twin of host/cpu/shapes/rectangle.cpp. p0 = corner, p1 = edge_u, p2 = edge_v.
-bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv) {
+bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv, inout float error) {
     vec3 eu = r.p1.xyz;
     vec3 ev = r.p2.xyz;
     vec3 n = cross(eu, ev);
@@ -26,6 +26,10 @@ float rectangle_hit_error(Primitive r, Ray ray, float t) {
     return rounding_bound(16.0, max_abs(ray.origin) + max_abs(r.p0.xyz) + max_abs(r.p1.xyz) + max_abs(r.p2.xyz) + t);
 }
 
-vec3 rectangle_normal(Primitive r) {
+vec3 rectangle_hit_normal(Primitive r, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
+    error = rectangle_hit_error(r, ray, t);
     return normalize(cross(r.p1.xyz, r.p2.xyz));
 }
+
+// Texture (u, v): (a, b) along its edges, as the intersection found them.
+vec2 rectangle_texture_uv(Primitive r, Hit hit, vec3 p) { return hit.uv; }

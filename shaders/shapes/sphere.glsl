@@ -1,7 +1,9 @@
-// Ray/sphere. Twin of host/cpu/shapes/sphere.cpp.
+// Ray/sphere. Twin of host/cpu/shapes/sphere.cpp. Each file of shapes/ implements the same three
+// functions for its shape (shapes.h, docs/adding-a-shape.md): <name>_intersect, <name>_hit_normal
+// and <name>_texture_uv.
 // p0 = (center, radius). Uses the cancellation-free discriminant of Ray Tracing Gems ch. 7:
 // r^2 - |f - (f.d)d|^2 instead of b^2 - c, which loses all precision for distant spheres.
-bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float t_hit) {
+bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     vec3 f = ray.origin - s.p0.xyz;
     float r = s.p0.w;
     float b = dot(f, ray.dir);
@@ -28,13 +30,15 @@ float sphere_hit_error(Primitive s, Ray ray, float t) {
     return rounding_bound(32.0, max_abs(ray.origin) + max_abs(s.p0.xyz) + s.p0.w + t);
 }
 
-vec3 sphere_normal(Primitive s, vec3 p) {
+// The unit normal at the hit at t (point p), and the hit's error bound.
+vec3 sphere_hit_normal(Primitive s, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
+    error = sphere_hit_error(s, ray, t);
     return (p - s.p0.xyz) / s.p0.w;
 }
 
 // Texture (u, v): longitude and latitude in the sphere's own frame (p1, p2 = its x and y axes):
 // u = 0.5 faces -z and grows toward +x; v runs from 0 at the south pole to 1 at the north pole.
-vec2 sphere_texture_uv(Primitive s, vec3 p) {
+vec2 sphere_texture_uv(Primitive s, Hit hit, vec3 p) {
     vec3 w = (p - s.p0.xyz) / s.p0.w;
     vec3 d = vec3(dot(w, s.p1.xyz), dot(w, s.p2.xyz), dot(w, cross(s.p1.xyz, s.p2.xyz)));
     const float PI = 3.14159265358979;

@@ -38,15 +38,15 @@ void expect_holds(const gpu::PackedScene& packed, const gpu::FrameParams& frame,
 TEST(FamilyBoxes, ThreeSpheresGetOneBoxThatHoldsThem) {
     const Scene scene = test::scene_from_text(kPackingCameraAndMaterial + kWideFloor + sphere_object(-2, 0, 0.5) + sphere_object(0, 0, 1) + sphere_object(2, 0, 0.5));
     const gpu::PackedScene packed = gpu::pack_scene(scene);
-    EXPECT_TRUE(packed.features.spheres_boxed);
-    EXPECT_FALSE(packed.features.spheres_split) << "fewer than five";
-    EXPECT_FALSE(packed.features.rectangles_boxed) << "one rectangle";
+    EXPECT_TRUE(packed.features.family_boxed(gpu::SHAPE_SPHERE));
+    EXPECT_FALSE(packed.features.family_split(gpu::SHAPE_SPHERE)) << "fewer than five";
+    EXPECT_FALSE(packed.features.family_boxed(gpu::SHAPE_RECTANGLE)) << "one rectangle";
     const gpu::FrameParams frame = gpu::pack_frame(scene, packed);
-    expect_holds(packed, frame, 2 * gpu::SHAPE_SPHERE, 0, frame.sphere_end);
+    expect_holds(packed, frame, 2 * gpu::SHAPE_SPHERE, 0, gpu::per_shape(frame.family_end, gpu::SHAPE_SPHERE));
     const gpu::vec4 lo = frame.family_lo[2 * gpu::SHAPE_SPHERE], hi = frame.family_hi[2 * gpu::SHAPE_SPHERE];
     EXPECT_NEAR(lo.x, -2.5, 1e-5);  // no larger than the spheres need, but for the BVH's padding
     EXPECT_NEAR(hi.y, 1.0, 1e-5);
-    EXPECT_EQ(frame.sphere_split, frame.sphere_end) << "unsplit: the first half is the whole family";
+    EXPECT_EQ(gpu::per_shape(frame.family_split, gpu::SHAPE_SPHERE), gpu::per_shape(frame.family_end, gpu::SHAPE_SPHERE)) << "unsplit: the first half is the whole family";
 }
 
 // Six spheres in two clusters: cut between them, each half's box around its own three.
@@ -55,11 +55,11 @@ TEST(FamilyBoxes, FiveOrMoreAreCutInTwoHalvesWithABoxEach) {
     for (double x : {4.0, -4.5, 5.0, -3.5, 4.5, -4.0}) text += sphere_object(x, 0, 0.3);
     const Scene scene = test::scene_from_text(text);
     const gpu::PackedScene packed = gpu::pack_scene(scene);
-    ASSERT_TRUE(packed.features.spheres_boxed);
-    ASSERT_TRUE(packed.features.spheres_split);
+    ASSERT_TRUE(packed.features.family_boxed(gpu::SHAPE_SPHERE));
+    ASSERT_TRUE(packed.features.family_split(gpu::SHAPE_SPHERE));
     const gpu::FrameParams frame = gpu::pack_frame(scene, packed);
-    ASSERT_EQ(frame.sphere_end, 6u);
-    EXPECT_EQ(frame.sphere_split, 3u);
+    ASSERT_EQ(gpu::per_shape(frame.family_end, gpu::SHAPE_SPHERE), 6u);
+    EXPECT_EQ(gpu::per_shape(frame.family_split, gpu::SHAPE_SPHERE), 3u);
     for (uint i = 0; i < 6; ++i) EXPECT_EQ(packed.primitives[i].p0.x < 0.0f, i < 3) << "sphere " << i;
     expect_holds(packed, frame, 2 * gpu::SHAPE_SPHERE, 0, 3);
     expect_holds(packed, frame, 2 * gpu::SHAPE_SPHERE + 1, 3, 6);
@@ -70,24 +70,24 @@ TEST(FamilyBoxes, FiveOrMoreAreCutInTwoHalvesWithABoxEach) {
 TEST(FamilyBoxes, NoBoxWhereItWouldNotPay) {
     // Two spheres: one box test more, and at most one sphere test less.
     const gpu::PackedScene two = gpu::pack_scene(test::scene_from_text(kPackingCameraAndMaterial + kWideFloor + sphere_object(-1, 0, 0.5) + sphere_object(1, 0, 0.5)));
-    EXPECT_FALSE(two.features.spheres_boxed);
+    EXPECT_FALSE(two.features.family_boxed(gpu::SHAPE_SPHERE));
     // Spheres filling most of the scene: a ray that enters the scene's box enters theirs.
     const gpu::PackedScene spread =
         gpu::pack_scene(test::scene_from_text(kPackingCameraAndMaterial + sphere_object(-4, 0, 1) + sphere_object(0, 0, 1) + sphere_object(4, 0, 1)));
-    EXPECT_FALSE(spread.features.spheres_boxed);
+    EXPECT_FALSE(spread.features.family_boxed(gpu::SHAPE_SPHERE));
     // Walls around everything (the Cornell box): every ray is inside their box.
     std::string room = kPackingCameraAndMaterial + sphere_object(0, 0, 0.2);
     for (int k = 0; k < 3; ++k)
         room += fmt::format("[[object]]\ntype = \"rectangle\"\ncorner = [-2, {}, -2]\nedge_u = [4, 0, 0]\nedge_v = [0, 0, 4]\n"
                             "material = \"m\"\n",
                             k - 1);
-    EXPECT_FALSE(gpu::pack_scene(test::scene_from_text(room)).features.rectangles_boxed);
+    EXPECT_FALSE(gpu::pack_scene(test::scene_from_text(room)).features.family_boxed(gpu::SHAPE_RECTANGLE));
     // In a BVH (16 or more bounded shapes), nothing is outside it to box.
     std::string many = kPackingCameraAndMaterial;
     for (int k = 0; k < 20; ++k) many += sphere_object(k, 0, 0.2);
     const gpu::PackedScene bvh = gpu::pack_scene(test::scene_from_text(many));
     EXPECT_FALSE(bvh.nodes.empty());
-    EXPECT_FALSE(bvh.features.spheres_boxed);
+    EXPECT_FALSE(bvh.features.family_boxed(gpu::SHAPE_SPHERE));
 }
 
 }  // namespace

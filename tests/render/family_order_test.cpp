@@ -57,15 +57,16 @@ TEST(FamilyOrder, PrimitivesOutsideTheBvhAreSortedByFamilyWithTheirEnds) {
     const gpu::FrameParams frame = gpu::pack_frame(scene, packed);
     ASSERT_EQ(frame.unbounded_count, 6u);
     ASSERT_EQ(frame.primitive_count, 6u);
-    const uint ends[] = {frame.sphere_end, frame.plane_end, frame.rectangle_end, frame.box_end,
-                         frame.bezier_end, frame.parametric_end, frame.primitive_count};
     const uint expected_ends[] = {3, 4, 5, 6, 6, 6, 6};  // 3 spheres, a plane, a rectangle, a box
+    static_assert(std::size(expected_ends) == SHAPE_COUNT);
     uint begin = frame.primitive_count - frame.unbounded_count;
-    for (uint type = 0; type < std::size(ends); ++type) {
-        EXPECT_EQ(ends[type], expected_ends[type]) << "type " << type;
-        for (uint i = begin; i < ends[type]; ++i) EXPECT_EQ(packed.primitives[i].type, type) << "primitive " << i;
-        begin = ends[type];
+    for (uint type = 0; type < SHAPE_COUNT; ++type) {
+        const uint end = gpu::per_shape(frame.family_end, type);
+        EXPECT_EQ(end, expected_ends[type]) << shape_name(type);
+        for (uint i = begin; i < end; ++i) EXPECT_EQ(packed.primitives[i].type, type) << "primitive " << i;
+        begin = end;
     }
+    EXPECT_EQ(begin, frame.primitive_count);
     // Within a family, the scene's order (the sort is stable): spheres from objects 0, 2, 5.
     EXPECT_EQ(packed.primitives[0].object, 0u);
     EXPECT_EQ(packed.primitives[1].object, 2u);

@@ -32,15 +32,19 @@ struct Counter {
     e.n3 = T3(c());
 #define ROWS_VEC4(name) rows.push_back(e.name);
 #define ROWS_VEC4S(name, n) rows.insert(rows.end(), std::begin(e.name), std::end(e.name));
+#define FILL_UVEC4S(name, n) \
+    for (uvec4 & v : e.name) v = uvec4(uint(c()), uint(c()), uint(c()), uint(c()));
+#define ROWS_UVEC4S(name, n) \
+    for (const uvec4& v : e.name) rows.push_back(vec4(v));
 #define ROWS_SCALARS(T0, n0, T1, n1, T2, n2, T3, n3) rows.push_back(vec4(float(e.n0), float(e.n1), float(e.n2), float(e.n3)));
 
 // fill(element, counter) and rows_of(element) for every struct of a ROWS array; one vec4 per
 // scalar element.
 #define DEFINE_FOR_RESOURCE_ROWS(Element)                                           \
-    void fill(Element& e, Counter& c) { LANCER_ROWS_##Element(FILL_VEC4, FILL_VEC4S, FILL_SCALARS) } \
+    void fill(Element& e, Counter& c) { LANCER_ROWS_##Element(FILL_VEC4, FILL_VEC4S, FILL_SCALARS, FILL_UVEC4S) } \
     std::vector<vec4> rows_of(const Element& e) {                                   \
         std::vector<vec4> rows;                                                     \
-        LANCER_ROWS_##Element(ROWS_VEC4, ROWS_VEC4S, ROWS_SCALARS) return rows;      \
+        LANCER_ROWS_##Element(ROWS_VEC4, ROWS_VEC4S, ROWS_SCALARS, ROWS_UVEC4S) return rows;      \
     }
 #define DEFINE_FOR_RESOURCE_UINT(Element)
 #define DEFINE_FOR_RESOURCE_INT(Element)
@@ -59,7 +63,7 @@ std::string kernel(uint kind, const std::string& element, const std::string& rea
         body = fmt::format(
             "    int k = int(i * {0}_ROWS);\n"
             "    {0} r = {1}(i);\n"
-            "    LANCER_ROWS_{0}(WRITE_VEC4, WRITE_VEC4S, WRITE_SCALARS)\n",
+            "    LANCER_ROWS_{0}(WRITE_VEC4, WRITE_VEC4S, WRITE_SCALARS, WRITE_UVEC4S)\n",
             element, reader);
     else
         body = fmt::format("    pixels[i] = vec4(float({}(i)), 0.0, 0.0, 0.0);\n", reader);
@@ -70,6 +74,7 @@ std::string kernel(uint kind, const std::string& element, const std::string& rea
            "layout(local_size_x = 1) in;\n"
            "#define WRITE_VEC4(name) pixels[k++] = r.name;\n"
            "#define WRITE_VEC4S(name, n) for (int j = 0; j < (n); ++j) pixels[k++] = r.name[j];\n"
+           "#define WRITE_UVEC4S(name, n) for (int j = 0; j < (n); ++j) pixels[k++] = vec4(r.name[j]);\n"
            "#define WRITE_SCALARS(T0, n0, T1, n1, T2, n2, T3, n3) "
            "pixels[k++] = vec4(float(r.n0), float(r.n1), float(r.n2), float(r.n3));\n"
            "void main() {\n"

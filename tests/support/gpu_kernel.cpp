@@ -37,9 +37,12 @@ struct GpuKernel::State {
 
 gpu::ShaderFeatures GpuKernel::all_features() {
     gpu::ShaderFeatures f;
-    for (const gpu::FeatureSpec& s : gpu::kFeatures) f.*s.member = true;
+#define LANCER_FEATURE_ON(NAME, id, type, member, fallback) f.member = static_cast<type>(~0u);
+    LANCER_FEATURES(LANCER_FEATURE_ON)
+#undef LANCER_FEATURE_ON
     f.output_hits = false;
     f.check_loop_limit = false;
+    f.check_grid_contract = false;
     return f;
 }
 

@@ -42,12 +42,13 @@ ShaderTree full_tree() {
 using Offsets = std::map<std::string, std::size_t>;
 #define OFFSET_VEC4(name) {#name, offsetof(S, name)},
 #define OFFSET_VEC4S(name, n) {#name, offsetof(S, name)},
+#define OFFSET_UVEC4S(name, n) {#name, offsetof(S, name)},
 #define OFFSET_SCALARS(T0, n0, T1, n1, T2, n2, T3, n3) \
     {#n0, offsetof(S, n0)}, {#n1, offsetof(S, n1)}, {#n2, offsetof(S, n2)}, {#n3, offsetof(S, n3)},
 #define HOST_OFFSETS(Name)                                                          \
     [] {                                                                             \
         using S = Name;                                                              \
-        return Offsets{LANCER_ROWS_##Name(OFFSET_VEC4, OFFSET_VEC4S, OFFSET_SCALARS)}; \
+        return Offsets{LANCER_ROWS_##Name(OFFSET_VEC4, OFFSET_VEC4S, OFFSET_SCALARS, OFFSET_UVEC4S)}; \
     }()
 
 // The block variables of the shader, by their name in glslang's reflection, and the host struct

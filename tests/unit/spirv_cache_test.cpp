@@ -29,8 +29,8 @@ protected:
         dir_ = test::fresh_dir("spirv-cache-" + name);
         ::setenv("LANCER_CACHE_DIR", dir_.c_str(), 1);
         ::unsetenv("LANCER_CACHE_DISABLE");
-        features_.has_sphere = true;
-        features_.has_plane = true;
+        features_.add_shape(SHAPE_SPHERE);
+        features_.add_shape(SHAPE_PLANE);
     }
     void TearDown() override { ::unsetenv("LANCER_CACHE_DIR"); }
 
@@ -52,7 +52,7 @@ TEST_F(SpirvCache, AMissIsSpecialisedAndStoredAHitIsReadBack) {
     EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
     EXPECT_EQ(entries().size(), 1u);
     gpu::ShaderFeatures other = features_;
-    other.has_box = true;
+    other.add_shape(SHAPE_BOX);
     EXPECT_EQ(gpu::cached_specialization(spirv_, other), gpu::specialize_spirv(spirv_, other));
     EXPECT_EQ(entries().size(), 2u) << "one entry per feature set";
 }
@@ -73,12 +73,46 @@ TEST_F(SpirvCache, EachCleanupHasItsOwnEntry) {
 TEST(SpirvCleanupChoice, BezierAndParametricSurfacesKeepTheDeadCodeCleanup) {
     using gpu::SpirvCleanup;
     gpu::ShaderFeatures spheres;
-    spheres.has_sphere = true;
-    EXPECT_EQ(gpu::spirv_cleanup_for(spheres, false), SpirvCleanup::local_variables);
-    EXPECT_EQ(gpu::spirv_cleanup_for(spheres, true), SpirvCleanup::dead_code);
+    spheres.add_shape(SHAPE_SPHERE);
+    EXPECT_EQ(gpu::spirv_cleanup_for(spheres), SpirvCleanup::local_variables);
+    for (std::uint32_t type : {SHAPE_BEZIER, SHAPE_PARAMETRIC}) {
+        gpu::ShaderFeatures with = spheres;
+        with.add_shape(type);
+        EXPECT_EQ(gpu::spirv_cleanup_for(with), SpirvCleanup::dead_code) << shape_name(type);
+    }
+    gpu::ShaderFeatures implicit = spheres;
+    implicit.add_shape(SHAPE_IMPLICIT);
+    EXPECT_EQ(gpu::spirv_cleanup_for(implicit), SpirvCleanup::local_variables);
+}
+
+// Specialisation leaves no constant unfolded: every condition on the features (shape flags
+// derived from the sets, CHEAP_SHAPES, SHADOW_HINTS) becomes a plain constant, so the dead-branch
+// passes remove what the scene lacks. An OpSpecConstantOp left behind (SPIRV-Tools cannot fold
+// every form) would keep that code in lavapipe's pipeline, or leave an invalid module.
+std::size_t spec_constants_left(const std::vector<std::uint32_t>& spirv) {
+    std::size_t left = 0;
+    for (std::size_t i = 5; i < spirv.size();) {
+        const std::uint32_t opcode = spirv[i] & 0xffffu, words = spirv[i] >> 16;
+        left += opcode >= 48 && opcode <= 52;  // OpSpecConstantTrue ... OpSpecConstantOp
+        i += words ? words : 1;
+    }
+    return left;
+}
+
+TEST(SpirvSpecialisation, FoldsEveryConstantForEachCleanup) {
+    const std::vector<std::uint32_t> spirv = gpu::embedded_trace_spirv();
+    ASSERT_GT(spec_constants_left(spirv), 0u);
+    gpu::ShaderFeatures spheres;
+    spheres.add_shape(SHAPE_SPHERE);
+    spheres.add_shape(SHAPE_PLANE);
+    spheres.has_bvh = true;
+    spheres.boxed_families = 1u << SHAPE_SPHERE;
     gpu::ShaderFeatures patches = spheres;
-    patches.has_bezier = true;
-    EXPECT_EQ(gpu::spirv_cleanup_for(patches, false), SpirvCleanup::dead_code);
+    patches.add_shape(SHAPE_BEZIER);
+    for (const gpu::ShaderFeatures& f : {spheres, patches})
+        for (gpu::SpirvCleanup cleanup : {gpu::SpirvCleanup::dead_code, gpu::SpirvCleanup::local_variables})
+            EXPECT_EQ(spec_constants_left(gpu::specialize_spirv(spirv, f, cleanup)), 0u)
+                << "shapes " << f.scene_shapes << ", cleanup " << int(cleanup);
 }
 
 // A hit is not specialised again: an entry whose words were swapped for other (valid) ones, with
@@ -87,7 +121,7 @@ TEST_F(SpirvCache, AMatchingEntryIsUsedAsItIs) {
     gpu::cached_specialization(spirv_, features_);
     ASSERT_EQ(entries().size(), 1u);
     gpu::ShaderFeatures other = features_;
-    other.has_box = true;
+    other.add_shape(SHAPE_BOX);
     const std::vector<std::uint32_t> stand_in = gpu::specialize_spirv(spirv_, other);
     ASSERT_NE(stand_in, gpu::specialize_spirv(spirv_, features_));
     // Rewrite the entry with the stand-in's words: the header's first 24 bytes (magic, input

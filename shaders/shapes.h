@@ -1,0 +1,77 @@
+// The shape registry, compiled as C++ (the scene model, both renderers) and as GLSL: one row per
+// shape type, X(NAME, name, Type, type, traits), in the order of the type numbers
+// (Primitive::type; the alternatives of the scene model's Shape, whose C++ type is Type). Each
+// shape has shaders/shapes/<name>.glsl and host/cpu/shapes/<name>.cpp, and every rule about
+// shapes reads its traits here (docs/adding-a-shape.md):
+//   SHAPE_BOUNDED    a finite box: in the BVH; else tested by every ray, as planes are;
+//   SHAPE_CHEAP      a closed-form test of a few dozen operations. Where every shape of a scene
+//                    is cheap, camera and shadow rays may take direction grids and shadow rays a
+//                    lean path; a few cheap bounded shapes beside costly ones stay outside the
+//                    BVH, in loops of their own, with a box around each family;
+//   SHAPE_SHEET      no inside: refraction passes it as a thin pane instead of entering a medium;
+//   SHAPE_GENERATED  its GLSL comes from the scene's expressions (surface_functions.glsl);
+//   SHAPE_KEEPS_LOCALS  lavapipe's code for it is faster where the host leaves the SPIR-V's
+//                    local variables alone (gpu/spirv_specialize.hpp: the Bezier clipper 7-9%,
+//                    the parametric search 2-5%).
+#ifndef LANCER_SHAPES_H
+#define LANCER_SHAPES_H
+
+#define LANCER_SHAPES(X)                                                              \
+    X(SPHERE, sphere, Sphere, 0, SHAPE_BOUNDED | SHAPE_CHEAP)                         \
+    X(PLANE, plane, Plane, 1, SHAPE_CHEAP)                                            \
+    X(RECTANGLE, rectangle, Rectangle, 2, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SHEET)  \
+    X(BOX, box, Box, 3, SHAPE_BOUNDED | SHAPE_CHEAP)                                  \
+    X(BEZIER, bezier, BezierSurface, 4, SHAPE_BOUNDED | SHAPE_KEEPS_LOCALS)                              \
+    X(PARAMETRIC, parametric, ParametricObject, 5, SHAPE_BOUNDED | SHAPE_GENERATED | SHAPE_KEEPS_LOCALS) \
+    X(IMPLICIT, implicit, ImplicitObject, 6, SHAPE_BOUNDED | SHAPE_GENERATED)
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace lancer {
+#define LANCER_SHAPE_CONST inline constexpr std::uint32_t
+#else
+#define LANCER_SHAPE_CONST const uint
+#endif
+
+LANCER_SHAPE_CONST SHAPE_BOUNDED = 1u;
+LANCER_SHAPE_CONST SHAPE_CHEAP = 2u;
+LANCER_SHAPE_CONST SHAPE_SHEET = 4u;
+LANCER_SHAPE_CONST SHAPE_GENERATED = 8u;
+LANCER_SHAPE_CONST SHAPE_KEEPS_LOCALS = 16u;
+
+#define LANCER_SHAPE_TYPE(NAME, name, Type, type, traits) LANCER_SHAPE_CONST SHAPE_##NAME = type;
+LANCER_SHAPES(LANCER_SHAPE_TYPE)
+#undef LANCER_SHAPE_TYPE
+#define LANCER_SHAPE_COUNTER(NAME, name, Type, type, traits) +1u
+LANCER_SHAPE_CONST SHAPE_COUNT = 0u LANCER_SHAPES(LANCER_SHAPE_COUNTER);
+#undef LANCER_SHAPE_COUNTER
+
+// The traits of shape type t, a constant wherever t is.
+#define LANCER_SHAPE_TRAITS_CASE(NAME, name, Type, type, traits) (t) == SHAPE_##NAME ? (traits) :
+#ifdef __cplusplus
+constexpr std::uint32_t shape_traits(std::uint32_t t) { return LANCER_SHAPES(LANCER_SHAPE_TRAITS_CASE) 0u; }
+constexpr bool shape_has(std::uint32_t t, std::uint32_t trait) { return (shape_traits(t) & trait) != 0u; }
+// Cheap and bounded: kept outside a BVH of costly shapes, in a family loop with its box.
+constexpr bool shape_is_boxable(std::uint32_t t) { return shape_has(t, SHAPE_BOUNDED) && shape_has(t, SHAPE_CHEAP); }
+
+#define LANCER_SHAPE_NAME_CASE(NAME, name, Type, type, traits) (t) == SHAPE_##NAME ? #name :
+constexpr const char* shape_name(std::uint32_t t) { return LANCER_SHAPES(LANCER_SHAPE_NAME_CASE) "unknown"; }
+#undef LANCER_SHAPE_NAME_CASE
+
+constexpr bool shape_types_are_dense() {
+    std::uint32_t next = 0;
+#define LANCER_SHAPE_ORDER(NAME, name, Type, type, traits) \
+    if (type != next++) return false;
+    LANCER_SHAPES(LANCER_SHAPE_ORDER)
+#undef LANCER_SHAPE_ORDER
+    return true;
+}
+static_assert(shape_types_are_dense(), "LANCER_SHAPES: types must be 0, 1, 2, ... in row order");
+}  // namespace lancer
+#else
+uint shape_traits(uint t) { return LANCER_SHAPES(LANCER_SHAPE_TRAITS_CASE) 0u; }
+#endif
+#undef LANCER_SHAPE_TRAITS_CASE
+
+#undef LANCER_SHAPE_CONST
+#endif  // LANCER_SHAPES_H
