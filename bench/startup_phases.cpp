@@ -17,12 +17,12 @@
 #include <string>
 #include <vector>
 
-#include "gpu/embedded_shaders.hpp"
-#include "gpu/pipeline.hpp"
-#include "gpu/scene_packing.hpp"
-#include "gpu/spirv_specialize.hpp"
+#include "gpu/shaders/embedded_shaders.hpp"
+#include "gpu/vulkan/pipeline.hpp"
+#include "gpu/packing/scene_packing.hpp"
+#include "gpu/shaders/spirv_specialize.hpp"
 #include "gpu/trace_resources.hpp"
-#include "gpu/vk_check.hpp"
+#include "gpu/vulkan/vk_check.hpp"
 #include "scene/load_scene.hpp"
 
 namespace {

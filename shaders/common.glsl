@@ -25,7 +25,7 @@ float max_abs(vec3 v) { return max(abs(v.x), max(abs(v.y), abs(v.z))); }
 // What k roundings of numbers no larger than `magnitude` can add up to (pbrt's gamma(k) times
 // the magnitude, for the small k used here). Each intersector bounds its hit's error with it,
 // the magnitudes being those of the ray's origin, the hit's t and the shape's data: positions
-// are relative to the GPU's anchor near the camera (gpu/float_anchor), so they grow with the
+// are relative to the GPU's anchor near the camera (gpu/packing/float_anchor), so they grow with the
 // distance from the camera, as does the rounding of every point computed from them.
 float rounding_bound(float k, float magnitude) { return k * FLOAT_ROUNDING * magnitude; }
 

@@ -1,6 +1,6 @@
 // Interval arithmetic in float for implicit surfaces (shapes/implicit.glsl): an interval is a
 // vec2 (x = lower bound, y = upper bound). The generated code of each implicit surface
-// (host/surface/expr/glsl_interval_emitter.cpp) calls these to enclose f(o + s d) and its
+// (host/gpu/shaders/glsl_interval_emitter.cpp) calls these to enclose f(o + s d) and its
 // derivative in s over a piece [s.x, s.y] of the ray. Twin of host/surface/interval.cpp, written
 // for the GPU's constraints:
 //  * GLSL has no directed rounding: every result is widened by I_ULPS float ulps of its bounds

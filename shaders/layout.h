@@ -197,7 +197,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     /* optics: refraction and the highlight model */                                                \
     VEC4(transmission) /* rgb = T, the fraction passed per channel (all 0: opaque); w = ior */      \
     VEC4(absorption)   /* rgb = Beer-Lambert coefficient per unit distance inside; w unused */      \
-    VEC4(checker_phase) /* xyz = where the GPU's origin is in the solid checker (gpu/float_anchor.hpp) */ \
+    VEC4(checker_phase) /* xyz = where the GPU's origin is in the solid checker (gpu/packing/float_anchor.hpp) */ \
     SCALARS(uint, highlight, /* HIGHLIGHT_PHONG or HIGHLIGHT_BLINN */                               \
             float, ms_tint_r, float, ms_tint_g, float, ms_tint_b) /* microfacet metals: the multiple-scattering colour */
 
@@ -232,7 +232,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
             uint, reserved)
 
 // A grid over the directions from one point, the eye, its mirror image in a flat mirror, or a
-// point or spot light (gpu/direction_grids.hpp): a ray along a half-line from `origin` (a camera
+// point or spot light (gpu/packing/direction_grids.hpp): a ray along a half-line from `origin` (a camera
 // ray, its reflection in the mirror, or a shadow ray's segment, which ends at its light) can hit
 // only the primitives its direction's cell lists.
 // A direction w has the cell of (dot(w, across_u), dot(w, across_v)) / dot(w, axis); none where
@@ -268,7 +268,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     /* the primitives outside the BVH, sorted by shape type: family t is [family_end[t - 1], */     \
     /* family_end[t]) (t = 0 from primitive_count - unbounded_count), read as [t / 4][t % 4] */   \
     UVEC4S(family_end, SHAPE_QUADS)                                                               \
-    /* family boxes (gpu/family_boxes.hpp): [2 t] around family t's members before */             \
+    /* family boxes (gpu/packing/family_boxes.hpp): [2 t] around family t's members before */             \
     /* family_split[t], [2 t + 1] around the rest */                                             \
     VEC4S(family_lo, 2 * SHAPE_COUNT) VEC4S(family_hi, 2 * SHAPE_COUNT)                          \
     UVEC4S(family_split, SHAPE_QUADS)
@@ -370,7 +370,7 @@ LANCER_STRUCT(SelectStep)
 //            RESOURCE_UINT, RESOURCE_INT: a uniform texel buffer of 32-bit uints or ints (R32),
 //              read by reader(i)
 //   Element  the type of one element
-//   member   the host's PackedScene array that fills it (host/gpu/scene_packing.hpp), or the
+//   member   the host's PackedScene array that fills it (host/gpu/packing/scene_packing.hpp), or the
 //            block's member
 //   reader   the GLSL function that reads element i
 //   what     what its elements are, for messages ("the scene needs 2 GiB for its ...")
@@ -408,7 +408,7 @@ LANCER_CONST RESOURCE_INT = 4;
     LANCER_PHOTON_BUFFERS(X)                                                         \
     LANCER_SELECT_BUFFERS(X)
 
-// Photon mapping's working buffers, written by its compute passes (sizes: gpu/photon_pass.cpp).
+// Photon mapping's working buffers, written by its compute passes (sizes: gpu/passes/photon_pass.cpp).
 #define LANCER_PHOTON_BUFFERS(X)                                                                     \
     X(PHOTON_PARAMS, 17, RESOURCE_UNIFORM, PhotonParams, photon_params, photon_params, "photon pass parameters") \
     X(PHOTONS, 18, RESOURCE_OUTPUT, Photon, photons, photons, "photons")                             \
@@ -425,7 +425,7 @@ LANCER_CONST RESOURCE_INT = 4;
 
 // Adaptive anti-aliasing's picture on the device, from which the selection (refine_select.comp)
 // lists the pixels to refine into refine_list, with its count in block_sums (sizes:
-// gpu/refine_selection.cpp).
+// gpu/passes/refine_selection.cpp).
 #define LANCER_SELECT_BUFFERS(X)                                                                       \
     X(PICTURE, 26, RESOURCE_OUTPUT, vec4, picture, picture, "adaptive picture") /* as pixels[] */       \
     X(PICTURE_CODES, 27, RESOURCE_OUTPUT, uint, picture_codes, picture_codes, "adaptive picture's sRGB codes") /* r | g << 8 | b << 16 */ \

@@ -3,7 +3,7 @@
 // pixels_to_refine and the spread rule, image/adaptive.hpp and render/adaptive_render.cpp). The
 // picture so far stays here, with each pixel's sRGB codes and flags, and the chosen pixels are
 // compacted into refine_list, in increasing index order, for the next refining trace to dispatch
-// over. Steps the host dispatches in order, with barriers between them (gpu/refine_selection.cpp):
+// over. Steps the host dispatches in order, with barriers between them (gpu/passes/refine_selection.cpp):
 //   SELECT_ENCODE   per pixel: the codes of the first picture; every pixel a candidate;
 //   SELECT_MERGE    per entry of a refined band (pixels[], as trace.comp wrote it): its colour
 //                   and rays into the picture, its codes, and with the spread whether its

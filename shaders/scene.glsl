@@ -12,7 +12,7 @@
 #include "shapes/rectangle.glsl"
 #include "shapes/box.glsl"
 #include "shapes/bezier.glsl"
-#include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/surface_codegen.cpp)
+#include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)
 #include "shapes/parametric.glsl"
 #include "shapes/implicit.glsl"
 
@@ -117,7 +117,7 @@ bool blocks(uint i, Primitive p, Ray ray, float t_min, bool bounded, inout Neare
 
 // The primitives outside the BVH (with a BVH, the unbounded ones, and the cheap bounded ones
 // where BVH_HAS_ANALYTIC is false; without one, all of them) are sorted by family
-// (host/gpu/scene_packing.cpp), and each family is tested in a loop of its own that calls its
+// (host/gpu/packing/scene_packing.cpp), and each family is tested in a loop of its own that calls its
 // intersection directly: lavapipe would otherwise run every family's code for every primitive
 // (`seed`'s rectangle cost its spheres' tests 14%).
 // Not through shape_intersect with a constant type: lavapipe inlines the whole switch at each
@@ -126,7 +126,7 @@ uint family_end(uint type) { return frame.family_end[type / 4u][type % 4u]; }
 uint family_begin(uint type) { return type == 0u ? frame.primitive_count - frame.unbounded_count : family_end(type - 1u); }
 uint family_split(uint type) { return frame.family_split[type / 4u][type % 4u]; }
 
-// The family boxes (host/gpu/family_boxes.hpp): where a family of several cheap bounded shapes
+// The family boxes (host/gpu/packing/family_boxes.hpp): where a family of several cheap bounded shapes
 // is outside the BVH, the host puts a box around it (<NAME>_BOXED: family_lo/hi[2 type]), or,
 // for five or more, around each of its two halves (<NAME>_SPLIT: [2 type] the members before
 // `family_split(type)`, [2 type + 1] the rest), rounded outward like the BVH's. A ray that

@@ -11,7 +11,7 @@
 //   SHAPE_SHEET      no inside: refraction passes it as a thin pane instead of entering a medium;
 //   SHAPE_GENERATED  its GLSL comes from the scene's expressions (surface_functions.glsl);
 //   SHAPE_KEEPS_LOCALS  lavapipe's code for it is faster where the host leaves the SPIR-V's
-//                    local variables alone (gpu/spirv_specialize.hpp: the Bezier clipper 7-9%,
+//                    local variables alone (gpu/shaders/spirv_specialize.hpp: the Bezier clipper 7-9%,
 //                    the parametric search 2-5%).
 #ifndef LANCER_SHAPES_H
 #define LANCER_SHAPES_H

@@ -1,6 +1,6 @@
 // The user's expression surfaces, as GLSL. This file on disk is the stub used when a scene has
 // none (it is what the embedded SPIR-V is built from); for a scene with parametric or implicit
-// surfaces the host generates a replacement (host/gpu/surface_codegen.cpp) with functions for
+// surfaces the host generates a replacement (host/gpu/shaders/surface_codegen.cpp) with functions for
 // each surface, values and exact derivatives by forward differentiation (and, for implicit
 // surfaces, interval enclosures), and compiles the tracer again with it at run time. User text
 // never reaches GLSL: the generator prints the parsed expression tree.

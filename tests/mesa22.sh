@@ -2,7 +2,7 @@
 # The GPU tests (label render, and the file size limits) on Debian 12's own lavapipe, Mesa 22.3,
 # while the system has Mesa 25 from bookworm-backports: the driver package is downloaded once
 # into build/mesa22/, unpacked there, and chosen with VK_DRIVER_FILES for these tests only. Mesa
-# 22.3 limits loop iterations and allocates device memory differently (gpu/driver_quirks.hpp):
+# 22.3 limits loop iterations and allocates device memory differently (gpu/vulkan/driver_quirks.hpp):
 # these runs keep both code paths honest. Run through ./setup.sh mesa22 (after a build).
 set -euo pipefail
 cd "$(dirname "$0")/.."

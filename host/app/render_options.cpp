@@ -11,9 +11,9 @@
 #include <unistd.h>
 
 #include "cpu/cpu_renderer.hpp"
-#include "gpu/context.hpp"
+#include "gpu/vulkan/context.hpp"
 #include "gpu/gpu_renderer.hpp"
-#include "gpu/shader_compiler.hpp"
+#include "gpu/shaders/shader_compiler.hpp"
 #include "scene/limits.hpp"
 #include "scene/load_scene.hpp"
 

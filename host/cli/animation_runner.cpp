@@ -15,7 +15,7 @@
 #include "cli/progress.hpp"
 #include "cli/still_render.hpp"
 #include "app/video.hpp"
-#include "gpu/context.hpp"
+#include "gpu/vulkan/context.hpp"
 #include "image/image.hpp"
 #include "render/adaptive_render.hpp"
 #include "scene/animation.hpp"

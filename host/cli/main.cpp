@@ -17,9 +17,9 @@
 #include "core/escape.hpp"
 #include "core/process_limits.hpp"
 #include "core/version.hpp"
-#include "gpu/context.hpp"
-#include "gpu/pipeline.hpp"
-#include "gpu/vk_check.hpp"
+#include "gpu/vulkan/context.hpp"
+#include "gpu/vulkan/pipeline.hpp"
+#include "gpu/vulkan/vk_check.hpp"
 #include "view/view_command.hpp"
 
 namespace {

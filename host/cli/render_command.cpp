@@ -9,7 +9,7 @@
 #include "app/frame_pattern.hpp"
 #include "app/render_options.hpp"
 #include "cli/still_render.hpp"
-#include "gpu/context.hpp"
+#include "gpu/vulkan/context.hpp"
 
 namespace lancer {
 namespace {

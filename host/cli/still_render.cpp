@@ -8,7 +8,7 @@
 
 #include "app/interrupt.hpp"
 #include "cli/progress.hpp"
-#include "gpu/context.hpp"
+#include "gpu/vulkan/context.hpp"
 #include "render/adaptive_render.hpp"
 
 namespace lancer {

@@ -14,8 +14,8 @@
 #include "app/hot_reload.hpp"
 #include "app/render_options.hpp"
 #include "core/cancel.hpp"
-#include "gpu/context.hpp"
-#include "gpu/shader_compiler.hpp"
+#include "gpu/vulkan/context.hpp"
+#include "gpu/shaders/shader_compiler.hpp"
 
 namespace lancer {
 namespace {

@@ -7,15 +7,15 @@
 #include <fmt/format.h>
 
 #include "core/cancel.hpp"
-#include "gpu/driver_memory.hpp"
-#include "gpu/driver_quirks.hpp"
-#include "gpu/embedded_shaders.hpp"
+#include "gpu/vulkan/driver_memory.hpp"
+#include "gpu/vulkan/driver_quirks.hpp"
+#include "gpu/shaders/embedded_shaders.hpp"
 #include "gpu/layout.hpp"
-#include "gpu/scene_packing.hpp"
-#include "gpu/submit.hpp"
-#include "gpu/spirv_cache.hpp"
-#include "gpu/surface_codegen.hpp"
-#include "gpu/vk_check.hpp"
+#include "gpu/packing/scene_packing.hpp"
+#include "gpu/vulkan/submit.hpp"
+#include "gpu/shaders/spirv_cache.hpp"
+#include "gpu/shaders/surface_codegen.hpp"
+#include "gpu/vulkan/vk_check.hpp"
 #include "render/adaptive_render.hpp"
 
 namespace lancer {

@@ -8,14 +8,14 @@
 #include <vector>
 
 #include "accel/bvh.hpp"
-#include "gpu/context.hpp"
+#include "gpu/vulkan/context.hpp"
 #include "gpu/layout.hpp"
-#include "gpu/photon_pass.hpp"
-#include "gpu/pipeline.hpp"
-#include "gpu/submit.hpp"
-#include "gpu/refine_selection.hpp"
-#include "gpu/scene_packing.hpp"
-#include "gpu/shader_compiler.hpp"
+#include "gpu/passes/photon_pass.hpp"
+#include "gpu/vulkan/pipeline.hpp"
+#include "gpu/vulkan/submit.hpp"
+#include "gpu/passes/refine_selection.hpp"
+#include "gpu/packing/scene_packing.hpp"
+#include "gpu/shaders/shader_compiler.hpp"
 #include "gpu/trace_resources.hpp"
 #include "render/adaptive_render.hpp"
 #include "render/host_adaptive_picture.hpp"
@@ -96,7 +96,7 @@ private:
     // Photon mapping: passes [first, last) of the scene's render into `sums` (which holds the
     // passes before `first`); the render's last pass leaves the mean of all of them.
     void render_passes(const Scene& scene, int first, int last, FloatImage& sums, const ProgressFn& progress);
-    // Adaptive anti-aliasing with its picture on the device (gpu/refine_selection.hpp).
+    // Adaptive anti-aliasing with its picture on the device (gpu/passes/refine_selection.hpp).
     class DevicePicture;
     gpu::RefineSelection& selection();
     // The full grid of each pixel in `pixels` (y * width + x), in that order, and with `spread`

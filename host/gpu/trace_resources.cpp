@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include "gpu/resource_kinds.hpp"
-#include "gpu/vk_check.hpp"
+#include "gpu/vulkan/resource_kinds.hpp"
+#include "gpu/vulkan/vk_check.hpp"
 
 namespace lancer::gpu {
 TraceResources::TraceResources(const Context& context, VkDescriptorSetLayout set_layout) : context_(context) {

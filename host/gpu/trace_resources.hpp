@@ -7,10 +7,10 @@
 #include <cstddef>
 #include <vector>
 
-#include "gpu/buffer.hpp"
-#include "gpu/context.hpp"
+#include "gpu/vulkan/buffer.hpp"
+#include "gpu/vulkan/context.hpp"
 #include "gpu/layout.hpp"
-#include "gpu/scene_packing.hpp"
+#include "gpu/packing/scene_packing.hpp"
 
 namespace lancer::gpu {
 

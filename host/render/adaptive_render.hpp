@@ -21,7 +21,7 @@ namespace lancer {
 
 // What a renderer provides: a picture it keeps between the passes, the choice of the pixels that
 // go on from it, and their refinement. HostAdaptivePicture (render/host_adaptive_picture.hpp)
-// keeps it on the host; the GPU keeps it on the device (gpu/refine_selection.hpp).
+// keeps it on the host; the GPU keeps it on the device (gpu/passes/refine_selection.hpp).
 class AdaptivePicture {
 public:
     virtual ~AdaptivePicture() = default;

@@ -9,7 +9,7 @@
 #include "app/frame_pattern.hpp"
 #include "app/video.hpp"
 #include "core/cancel.hpp"
-#include "gpu/shader_compiler.hpp"
+#include "gpu/shaders/shader_compiler.hpp"
 #include "scene/animation.hpp"
 #include "view/camera_text.hpp"
 #include "view/recordings.hpp"

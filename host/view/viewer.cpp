@@ -14,7 +14,7 @@
 #include "app/frame_pattern.hpp"
 #include "app/hot_reload.hpp"
 #include "app/video.hpp"
-#include "gpu/context.hpp"
+#include "gpu/vulkan/context.hpp"
 #include "gpu/gpu_renderer.hpp"
 #include "view/camera_controller.hpp"
 #include "view/frame_stats.hpp"

@@ -3,7 +3,7 @@
 // host/cpu/shapes/implicit.cpp (companion matrix or interval Newton, in double precision).
 //
 // f, its derivative along the ray, its gradient and its interval enclosure are generated from
-// the expression (host/gpu/surface_codegen.cpp, shaders/interval.glsl), so no Lipschitz bound
+// the expression (host/gpu/shaders/surface_codegen.cpp, shaders/interval.glsl), so no Lipschitz bound
 // is needed: a piece of the ray on which f's enclosure excludes 0 holds no root, however steep
 // f is. The ray is carried into the surface's coordinates (ImplicitInfo: world -> local; t is
 // kept), clipped to the box and re-origined at its entry. Pieces of it are examined nearest

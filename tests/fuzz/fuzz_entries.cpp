@@ -12,13 +12,13 @@
 #include "accel/shape_bounds.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/shapes/shapes.hpp"
-#include "gpu/scene_packing.hpp"
+#include "gpu/packing/scene_packing.hpp"
 #include "scene/animation.hpp"
 #include "scene/camera.hpp"
 #include "scene/load_scene.hpp"
 #include "surface/expr/domain_check.hpp"
 #include "surface/expr/evaluate.hpp"
-#include "surface/expr/glsl_emitter.hpp"
+#include "gpu/shaders/glsl_emitter.hpp"
 #include "surface/expr/gpu_float.hpp"
 #include "surface/expr/parser.hpp"
 #include "surface/expr/program.hpp"
@@ -290,7 +290,7 @@ void implicit_expression(std::string_view text) {
         return;
     }
     s.place(glm::dmat4(1.0));
-    surface::emit_glsl_implicit(s.f, "fuzz_implicit");
+    gpu::emit_glsl_implicit(s.f, "fuzz_implicit");
     for (const cpu::Ray& ray : {cpu::Ray{{-3.0, 0.1, 0.2}, glm::normalize(dvec3(1.0, 0.05, -0.1))},
                                 cpu::Ray{{0.3, 2.5, -0.4}, dvec3(0.0, -1.0, 0.0)}}) {
         double last = 0.0;
@@ -384,7 +384,7 @@ void expression_entry(const std::uint8_t* data, std::size_t size) {
         require(error.column >= 0 && error.column <= static_cast<int>(size), "a domain error's column is outside the text");
         return;
     }
-    surface::emit_glsl_surface(e, e, e, "fuzz_surface");
+    gpu::emit_glsl_surface(e, e, e, "fuzz_surface");
     check_gpu_float(e, static_cast<int>(size));
 }
 

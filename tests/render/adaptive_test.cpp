@@ -277,7 +277,7 @@ TEST(AdaptiveGpu, ARenderPacksItsSceneOnceForAllItsSteps) {
     EXPECT_NE(std::memcmp(steps.pixels.data(), other.pixels.data(), steps.pixels.size() * sizeof(glm::vec4)), 0);
 }
 
-// The GPU chooses the pixels to refine on the device (gpu/refine_selection.hpp): it never calls
+// The GPU chooses the pixels to refine on the device (gpu/passes/refine_selection.hpp): it never calls
 // the host's pixels_to_refine, and every step's picture is the one the host's choice gives, byte
 // for byte (the host chooses where the device cannot hold the picture).
 TEST(AdaptiveGpu, ChoosesOnTheDeviceWhatTheHostWould) {

@@ -1,4 +1,4 @@
-// Which scenes the packer gives direction grids (gpu/direction_grids.hpp), and where it lets every
+// Which scenes the packer gives direction grids (gpu/packing/direction_grids.hpp), and where it lets every
 // ray take one (GRIDS_ONLY: the shader then has no BVH traversal at all, so a ray without a grid
 // would be lost). The grids' own geometry is tested in tests/unit/direction_grids_test.cpp; that
 // the pictures stay the same, here and in bvh_equivalence_test (every scene against brute force).
@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/scene_packing.hpp"
+#include "gpu/packing/scene_packing.hpp"
 #include "render/packing_scenes.hpp"
 #include "support/test_support.hpp"
 

@@ -1,4 +1,4 @@
-// The boxes around the families of analytic shapes outside the BVH (gpu/family_boxes.hpp): a ray
+// The boxes around the families of analytic shapes outside the BVH (gpu/packing/family_boxes.hpp): a ray
 // that misses one skips that family's loop or half of it, so a box must hold every member's
 // float bounds (one ulp short would lose silhouettes), and it is given only where it pays. That
 // the pictures do not change is the image tests' business (bvh_equivalence_test renders every
@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/scene_packing.hpp"
+#include "gpu/packing/scene_packing.hpp"
 #include "render/packing_scenes.hpp"
 #include "support/test_support.hpp"
 

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/scene_packing.hpp"
+#include "gpu/packing/scene_packing.hpp"
 #include "render/packing_scenes.hpp"
 #include "support/test_support.hpp"
 

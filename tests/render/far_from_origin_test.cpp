@@ -1,6 +1,6 @@
 // A scene far from the world origin, camera and lights with it, renders on the GPU the picture it
 // renders at the origin: everything the GPU sees is rebased near the camera, in double, before it
-// is rounded to float (gpu/float_anchor.hpp). Without that, float keeps about 0.06 of a unit at
+// is rounded to float (gpu/packing/float_anchor.hpp). Without that, float keeps about 0.06 of a unit at
 // 10^6 and nothing at 10^9.
 #include <cmath>
 #include <string>
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/float_anchor.hpp"
+#include "gpu/packing/float_anchor.hpp"
 #include "scene/animation.hpp"
 #include "support/test_support.hpp"
 

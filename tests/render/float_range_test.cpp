@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
-#include "gpu/scene_packing.hpp"
+#include "gpu/packing/scene_packing.hpp"
 #include "scene/load_scene.hpp"
 #include "support/test_support.hpp"
 

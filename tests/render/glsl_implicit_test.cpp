@@ -14,7 +14,7 @@
 
 #include "support/gpu_kernel.hpp"
 #include "surface/expr/evaluate.hpp"
-#include "surface/expr/glsl_emitter.hpp"
+#include "gpu/shaders/glsl_emitter.hpp"
 #include "surface/expr/parser.hpp"
 #include "surface/implicit_surface.hpp"
 
@@ -111,7 +111,7 @@ TEST_P(GlslImplicitOnDevice, ValuesDerivativesAndEnclosures) {
         v[0] = p.o.x, v[1] = p.o.y, v[2] = p.o.z, v[3] = p.a;
         v[4] = p.d.x, v[5] = p.d.y, v[6] = p.d.z, v[7] = p.b;
     }
-    std::vector<float> out = run_compute("#include \"interval.glsl\"\n" + surface::emit_glsl_implicit(s.f, "test") + kMain,
+    std::vector<float> out = run_compute("#include \"interval.glsl\"\n" + gpu::emit_glsl_implicit(s.f, "test") + kMain,
                                                data, static_cast<std::uint32_t>(pieces.size()));
     int samples = 0;
     for (std::size_t i = 0; i < pieces.size(); ++i) {

@@ -12,7 +12,7 @@
 
 #include "support/gpu_kernel.hpp"
 #include "surface/expr/evaluate.hpp"
-#include "surface/expr/glsl_emitter.hpp"
+#include "gpu/shaders/glsl_emitter.hpp"
 #include "unit/surface_fixtures.hpp"
 
 namespace lancer {
@@ -53,7 +53,7 @@ void expect_device_matches(const ParametricSurface& s, const std::string& what, 
     for (int i = 0; i < 64; ++i)
         uvs.emplace_back(static_cast<float>(s.u0 + (s.u1 - s.u0) * unit(rng)),
                          static_cast<float>(s.v0 + (s.v1 - s.v0) * unit(rng)));
-    std::vector<float> out = run_on_device(surface::emit_glsl_surface(s.x, s.y, s.z, "surf"), uvs);
+    std::vector<float> out = run_on_device(gpu::emit_glsl_surface(s.x, s.y, s.z, "surf"), uvs);
     const surface::Expr* xyz[] = {&s.x, &s.y, &s.z};
     for (std::size_t i = 0; i < uvs.size(); ++i) {
         double u = uvs[i].first, v = uvs[i].second;

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/layout.hpp"
-#include "gpu/scene_packing.hpp"
+#include "gpu/packing/scene_packing.hpp"
 #include "support/gpu_kernel.hpp"
 
 namespace lancer::gpu {

@@ -1,14 +1,14 @@
 // lavapipe up to Mesa 22.3 silently ends all loops of a shader invocation after 65535 iterations
 // in total. There, lancer detects invocations that were cut short, renders their band again with
 // one sample per invocation, and reports a clear error when even one sample is too much; on a
-// driver without the limit the same scenes simply render right (gpu/driver_quirks.hpp).
+// driver without the limit the same scenes simply render right (gpu/vulkan/driver_quirks.hpp).
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "core/process_limits.hpp"
 #include "cpu/cpu_renderer.hpp"
-#include "gpu/driver_quirks.hpp"
+#include "gpu/vulkan/driver_quirks.hpp"
 #include "support/gpu_kernel.hpp"
 #include "support/test_support.hpp"
 

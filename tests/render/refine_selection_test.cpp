@@ -1,5 +1,5 @@
 // Adaptive anti-aliasing's choice of the pixels to refine, made on the device
-// (gpu/refine_selection.hpp), against the host's definition: pixels_to_refine, and the spread rule
+// (gpu/passes/refine_selection.hpp), against the host's definition: pixels_to_refine, and the spread rule
 // through HostAdaptivePicture, which the CPU reference uses. The device must list the same pixels
 // in the same order, on pictures made to catch each way it could go wrong: colours on either side
 // of an sRGB level (an encoding off by one rounding), code differences whose sum's rounding
@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/embedded_shaders.hpp"
-#include "gpu/refine_selection.hpp"
+#include "gpu/shaders/embedded_shaders.hpp"
+#include "gpu/passes/refine_selection.hpp"
 #include "image/adaptive.hpp"
 #include "image/difference_tables.hpp"
 #include "image/image.hpp"

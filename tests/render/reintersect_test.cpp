@@ -13,7 +13,7 @@
 // Rays: aimed at random points of the surface from random directions and distances, aimed at
 // them at grazing angles (|n.d| from 1e-6 to 0.1, from either side), from random points of the
 // object's box (inside closed shapes), and from far off (100 to 10^4 times the object's size).
-// The GPU sees positions relative to its anchor near the camera (gpu/float_anchor), so every
+// The GPU sees positions relative to its anchor near the camera (gpu/packing/float_anchor), so every
 // family is also placed far from the world origin with the camera beside it.
 //
 // The bounds. A hit's error bound is the intersector's own, derived beside it: for the analytic
@@ -39,9 +39,9 @@
 #include <gtest/gtest.h>
 
 #include "accel/shape_bounds.hpp"
-#include "gpu/float_anchor.hpp"
-#include "gpu/scene_packing.hpp"
-#include "gpu/surface_codegen.hpp"
+#include "gpu/packing/float_anchor.hpp"
+#include "gpu/packing/scene_packing.hpp"
+#include "gpu/shaders/surface_codegen.hpp"
 #include "scene/animation.hpp"
 #include "support/gpu_kernel.hpp"
 #include "support/rational_patches.hpp"

@@ -2,8 +2,8 @@
 // the validation layer said anything at any point, teardown included.
 #include <gtest/gtest.h>
 
-#include "gpu/context.hpp"
-#include "gpu/pipeline.hpp"
+#include "gpu/vulkan/context.hpp"
+#include "gpu/vulkan/pipeline.hpp"
 #include "support/test_support.hpp"
 
 namespace {

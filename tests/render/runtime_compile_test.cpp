@@ -3,7 +3,7 @@
 // render identical images.
 #include <gtest/gtest.h>
 
-#include "gpu/embedded_shaders.hpp"
+#include "gpu/shaders/embedded_shaders.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {

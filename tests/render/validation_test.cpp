@@ -2,8 +2,8 @@
 // validation messages" assertion would pass vacuously.
 #include <gtest/gtest.h>
 
-#include "gpu/context.hpp"
-#include "gpu/vk_check.hpp"
+#include "gpu/vulkan/context.hpp"
+#include "gpu/vulkan/vk_check.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {

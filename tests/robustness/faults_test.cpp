@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
-#include "gpu/driver_quirks.hpp"
+#include "gpu/vulkan/driver_quirks.hpp"
 #include "image/image.hpp"
 #include "support/pty_process.hpp"
 #include "support/test_support.hpp"
@@ -137,7 +137,7 @@ TEST(Faults, FileSizeLimit) {
 }
 
 // On the GPU path the limit also bounds the file lavapipe from Mesa 25 keeps device memory in
-// (gpu/driver_quirks.hpp), which it grows without checking and then dies of SIGBUS: refused
+// (gpu/vulkan/driver_quirks.hpp), which it grows without checking and then dies of SIGBUS: refused
 // first. Where the driver does not, the output write fails as above.
 TEST(Faults, FileSizeLimitOnTheGpuPath) {
     std::string dir = fresh_dir("fsize-gpu");

@@ -9,9 +9,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "gpu/memory_budget.hpp"
-#include "gpu/scene_packing.hpp"
-#include "gpu/vk_check.hpp"
+#include "gpu/vulkan/memory_budget.hpp"
+#include "gpu/packing/scene_packing.hpp"
+#include "gpu/vulkan/vk_check.hpp"
 #include "scene/limits.hpp"
 #include "scene/load_scene.hpp"
 #include "support/test_support.hpp"

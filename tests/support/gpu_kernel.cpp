@@ -3,10 +3,10 @@
 #include <cstring>
 #include <optional>
 
-#include "gpu/pipeline.hpp"
-#include "gpu/shader_compiler.hpp"
+#include "gpu/vulkan/pipeline.hpp"
+#include "gpu/shaders/shader_compiler.hpp"
 #include "gpu/trace_resources.hpp"
-#include "gpu/vk_check.hpp"
+#include "gpu/vulkan/vk_check.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer::test {

@@ -15,7 +15,7 @@
 #include <glm/vec4.hpp>
 
 #include "gpu/layout.hpp"
-#include "gpu/scene_packing.hpp"
+#include "gpu/packing/scene_packing.hpp"
 
 namespace lancer::test {
 

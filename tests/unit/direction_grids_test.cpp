@@ -1,4 +1,4 @@
-// Property tests of the direction grids (gpu/direction_grids.hpp): a ray along a half-line from a
+// Property tests of the direction grids (gpu/packing/direction_grids.hpp): a ray along a half-line from a
 // grid's origin, its cell found with the shader's float arithmetic (scene.glsl's grid_hit), lists
 // every box the ray enters, with a distance no greater than where it enters; the grids refuse
 // what they cannot hold.
@@ -10,7 +10,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "gpu/direction_grids.hpp"
+#include "gpu/packing/direction_grids.hpp"
 
 namespace lancer::gpu {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "surface/expr/domain_check.hpp"
 #include "surface/expr/evaluate.hpp"
-#include "surface/expr/glsl_emitter.hpp"
+#include "gpu/shaders/glsl_emitter.hpp"
 #include "surface/expr/functions.hpp"
 #include "surface/expr/parser.hpp"
 
@@ -300,7 +300,7 @@ TEST(ExprParserFuzz, RandomAndDamagedExpressions) {
             ASSERT_GE(error.column, 0);
             ASSERT_LT(error.column, static_cast<int>(text.size()));
         }
-        ASSERT_FALSE(emit_glsl_surface(e, e, e, "surf").empty());
+        ASSERT_FALSE(gpu::emit_glsl_surface(e, e, e, "surf").empty());
     }
     EXPECT_GT(damaged_parsed, 100);  // the damage is not always fatal, so both paths are exercised
 }

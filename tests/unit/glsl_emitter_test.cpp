@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/shader_compiler.hpp"
+#include "gpu/shaders/shader_compiler.hpp"
 #include "surface/expr/functions.hpp"
-#include "surface/expr/glsl_emitter.hpp"
+#include "gpu/shaders/glsl_emitter.hpp"
 #include "surface/expr/parser.hpp"
 #include "unit/surface_fixtures.hpp"
 
@@ -36,7 +36,7 @@ void compile_with(const std::string& function) {
 }
 
 std::string emit(const std::string& x, const std::string& y, const std::string& z, const Constants& params = {}) {
-    return emit_glsl_surface(parse_expression(x, params), parse_expression(y, params), parse_expression(z, params),
+    return gpu::emit_glsl_surface(parse_expression(x, params), parse_expression(y, params), parse_expression(z, params),
                              "surf");
 }
 
@@ -82,23 +82,23 @@ TEST(GlslEmitter, NoUserTextReachesTheShader) {
     EXPECT_EQ(glsl.find("secret"), std::string::npos) << glsl;
     EXPECT_EQ(glsl.find("evil"), std::string::npos) << glsl;
     EXPECT_NE(glsl.find("1.25"), std::string::npos) << glsl;
-    EXPECT_THROW(emit_glsl_surface(parse_expression("u", {}), parse_expression("u", {}), parse_expression("u", {}),
+    EXPECT_THROW(gpu::emit_glsl_surface(parse_expression("u", {}), parse_expression("u", {}), parse_expression("u", {}),
                                    "surf(); } void x("),
                  std::invalid_argument);
-    EXPECT_THROW(emit_glsl_surface(parse_expression("u", {}), parse_expression("u", {}), parse_expression("u", {}),
+    EXPECT_THROW(gpu::emit_glsl_surface(parse_expression("u", {}), parse_expression("u", {}), parse_expression("u", {}),
                                    "gl_surf"),
                  std::invalid_argument);
 }
 
 TEST(GlslEmitter, FloatsReadBackExactly) {
-    EXPECT_EQ(glsl_float(2.0), "2.0");
-    EXPECT_EQ(glsl_float(0.5), "0.5");
-    EXPECT_EQ(glsl_float(-1.5), "(-1.5)");
-    EXPECT_EQ(glsl_float(1e-5), "9.99999975e-06");
-    EXPECT_EQ(glsl_float(1e300), "uintBitsToFloat(0x7f800000u)");
-    EXPECT_EQ(glsl_float(-1e300), "uintBitsToFloat(0xff800000u)");
+    EXPECT_EQ(gpu::glsl_float(2.0), "2.0");
+    EXPECT_EQ(gpu::glsl_float(0.5), "0.5");
+    EXPECT_EQ(gpu::glsl_float(-1.5), "(-1.5)");
+    EXPECT_EQ(gpu::glsl_float(1e-5), "9.99999975e-06");
+    EXPECT_EQ(gpu::glsl_float(1e300), "uintBitsToFloat(0x7f800000u)");
+    EXPECT_EQ(gpu::glsl_float(-1e300), "uintBitsToFloat(0xff800000u)");
     for (double value : {0.1, 1.0 / 3.0, 3.14159265358979, 123456789.0, 6.02e23, 1.17549435e-38, 2e-40, -7.25e-3}) {
-        std::string s = glsl_float(value);
+        std::string s = gpu::glsl_float(value);
         if (s.front() == '(') s = s.substr(2, s.size() - 3);
         EXPECT_EQ(std::strtof(s.c_str(), nullptr), static_cast<float>(std::abs(value))) << s;
         EXPECT_NE(s.find_first_of(".e"), std::string::npos) << s;

@@ -11,7 +11,7 @@
 #include "core/error.hpp"
 #include "core/escape.hpp"
 #include "core/temporary_name.hpp"
-#include "gpu/shader_compiler.hpp"
+#include "gpu/shaders/shader_compiler.hpp"
 #include "image/image.hpp"
 #include "image/image_file.hpp"
 #include "support/test_support.hpp"

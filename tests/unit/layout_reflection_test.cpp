@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/layout.hpp"
-#include "gpu/shader_compiler.hpp"
+#include "gpu/shaders/shader_compiler.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer::gpu {

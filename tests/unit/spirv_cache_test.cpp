@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/embedded_shaders.hpp"
-#include "gpu/shader_compiler.hpp"
-#include "gpu/spirv_cache.hpp"
-#include "gpu/spirv_specialize.hpp"
+#include "gpu/shaders/embedded_shaders.hpp"
+#include "gpu/shaders/shader_compiler.hpp"
+#include "gpu/shaders/spirv_cache.hpp"
+#include "gpu/shaders/spirv_specialize.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {

@@ -1,0 +1,71 @@
+#pragma once
+// Scene model -> the GPU's arrays (LANCER_SCENE_ARRAYS in shaders/layout.h): primitives ordered
+// for the BVH (the BVH's in leaf order, then the rest sorted by shape type: planes, and a few
+// analytic shapes beside patches or expression surfaces), the flattened BVH, materials, lights,
+// patch leaves, parametric cells, implicit surfaces, textures and patterns; and which optional
+// shader features the scene needs. Pure data conversion, no Vulkan.
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "accel/bvh.hpp"
+#include "gpu/packing/family_boxes.hpp"
+#include "gpu/layout.hpp"
+#include "gpu/vulkan/memory_budget.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace lancer::gpu {
+
+struct PackedScene {
+#define LANCER_PACKED_ARRAY(NAME, slot, kind, Element, member, reader, what) std::vector<Element> member;
+    LANCER_SCENE_ARRAYS(LANCER_PACKED_ARRAY)
+#undef LANCER_PACKED_ARRAY
+    // Every position above is relative to this point, in double (gpu/packing/float_anchor.hpp).
+    dvec3 anchor{0.0};
+    // Objects the GPU's float cannot resolve at their distance from the anchor: for the notes.
+    std::vector<std::string> float_notes;
+    uint unbounded_count = 0;
+    // The plane whose reflections of camera rays take the mirror's direction grid, or NO_PRIMITIVE.
+    uint mirror_plane = NO_PRIMITIVE;
+    // By shape type, the boxes around the families of cheap bounded shapes outside the BVH
+    // (shape_is_boxable; the others have none: gpu/packing/family_boxes.hpp).
+    std::array<FamilyBoxes, SHAPE_COUNT> families{};
+    uint photon_count = 0;  // photons per pass, with photon mapping
+    // The scene's shape families and shading features: scene_shapes, has_bvh, has_textures, ...
+    // (output_hits and check_loop_limit are the renderer's to set).
+    ShaderFeatures features;
+
+    std::size_t count(SceneArray array) const;
+    std::span<const std::byte> bytes(SceneArray array) const;
+};
+
+struct PackOptions {
+    Acceleration acceleration = Acceleration::Bvh;
+    BvhCache* cache = nullptr;  // with one, a BVH over the same boxes as the last one is not built again
+    // When given, an array that would not fit the device is refused (UserError) before it is
+    // filled: Bezier leaves multiply a scene's patches by up to 256.
+    const DeviceMemoryLimits* limits = nullptr;
+};
+
+PackedScene pack_scene(const Scene& scene, const PackOptions& options = {});
+FrameParams pack_frame(const Scene& scene, const PackedScene& packed);
+
+// What the packed scene needs on the device, one entry per array, and the output band.
+std::vector<BufferNeed> buffer_needs(const PackedScene& packed, std::uint64_t output_bytes);
+
+// Photon mapping on the GPU: the photons a pass's buffers hold at first (a pass that stores more
+// grows them), and the buckets per map of the hashed grid for a capacity: a power of 2 near an
+// eighth of it (photons crowd into few cells; on lavapipe, a bucket per photon made the grid
+// build of the Cornell box a third of its photon pass, measured, for no faster gather), at most
+// 2^20 (photon_grid.comp scans the block totals in one invocation, within lavapipe's loop limit).
+std::uint32_t photon_capacity(std::uint32_t count);
+std::uint32_t photon_buckets(std::uint32_t capacity);
+
+// float(x) rounded toward -inf / +inf, so float boxes contain their double originals.
+float round_down(double x);
+float round_up(double x);
+
+}  // namespace lancer::gpu

@@ -1,0 +1,65 @@
+#include "gpu/vulkan/driver_memory.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <variant>
+
+#include <unistd.h>
+
+#include "core/process_limits.hpp"
+#include "surface/expr/program.hpp"
+
+namespace lancer::gpu {
+namespace {
+
+constexpr std::uint64_t kMiB = 1 << 20;
+
+// lavapipe runs LP_NUM_THREADS threads (default: the CPUs, at most 16); each has a stack and
+// buffers of its own.
+std::uint64_t driver_threads() {
+    if (const char* env = std::getenv("LP_NUM_THREADS")) return std::clamp<long>(std::atol(env), 0, 16);
+    return std::clamp<long>(::sysconf(_SC_NPROCESSORS_ONLN), 1, 16);
+}
+
+const std::string kAdvice = "or render with --backend cpu";
+
+}  // namespace
+
+void check_driver_startup_memory() {
+    // Measured (docs/robustness.md): a trivial scene's peak address space on lavapipe is
+    // 337 MiB + 16 MiB per thread with one malloc arena (adapt_to_address_space_limit), of
+    // which ~40 MiB are lancer's before the driver is loaded; its peak resident memory 145 MiB.
+    const std::uint64_t address_space = (320 + 16 * driver_threads()) * kMiB;
+    check_memory_headroom(address_space, 140 * kMiB, "the Vulkan driver", kAdvice);
+}
+
+void check_render_memory(const Scene& scene, std::uint64_t scene_buffer_bytes) {
+    // The float image on the host and its copy while it is converted, the scene's buffers (host
+    // visible memory on lavapipe: both host and device), and the pipeline compile: with
+    // expression surfaces, glslang's run-time compile and a larger LLVM compile (the torus needs
+    // 400 to 450 MiB of address space in all, against 386 for a scene without them), and about
+    // 0.6 MiB more for every operation (measured: 205 MiB peak resident memory for a
+    // one-operation surface, 508 MiB for 511 operations).
+    const std::uint64_t image = std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height) * 16;
+    std::uint64_t operations = 0;
+    bool expressions = false;
+    for (const Object& o : scene.objects) {
+        if (const auto* p = std::get_if<ParametricObject>(&o.shape)) {
+            expressions = true;
+            const surface::Expr* xyz[] = {&p->surface.x, &p->surface.y, &p->surface.z};
+            operations += static_cast<std::uint64_t>(surface::count_operations(surface::compile_program(xyz)));
+        } else if (const auto* i = std::get_if<ImplicitObject>(&o.shape)) {
+            // f becomes three functions in the tracer (value and derivative along the ray, gradient,
+            // interval enclosure), so each operation is counted three times: an upper estimate, not
+            // measured as the parametric figure above was.
+            expressions = true;
+            operations += 3 * static_cast<std::uint64_t>(surface::count_operations(i->surface.program));
+        }
+    }
+    const std::uint64_t compile = (expressions ? 128 : 32) * kMiB + operations * (kMiB * 3 / 4);
+    check_memory_headroom(2 * image + 2 * scene_buffer_bytes + compile, 2 * image + scene_buffer_bytes + compile,
+                          "this render", kAdvice);
+}
+
+}  // namespace lancer::gpu
