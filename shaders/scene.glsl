@@ -234,6 +234,11 @@ bool grid_hit(DirectionGrid g, Ray ray, float t_min, bool any_hit, inout Nearest
     return best.prim != NO_PRIMITIVE;
 }
 
+// Set where a ray without a grid met a pipeline without the BVH's traversal (GRIDS_ONLY): the
+// host's plan and the shader's rays disagree (gpu/packing/acceleration_plan.hpp). Tests run
+// with CHECK_GRID_CONTRACT, and the invocation then marks its pixel (trace.comp).
+bool grid_contract_broken = false;
+
 // Nearest hit in (t_min, t_max) over all primitives; with any_hit, the first hit found, and
 // primitive `hint` tested first (NO_PRIMITIVE: none; see SHADOW_HINTS). `grid`: the direction
 // grid the ray may take instead of the BVH (DIRECTION_GRID_EYE for camera rays,
@@ -255,7 +260,10 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, uin
     // that every ray of the scene takes a grid (GRIDS_ONLY), the traversal below is dead code,
     // which lavapipe would otherwise pay for in every call, taken or not (`many` 0.68x the time).
     if (DIRECTION_GRIDS) {
-        if (GRIDS_ONLY) return grid_hit(grid_at(grid), ray, t_min, any_hit, best);
+        if (GRIDS_ONLY) {
+            if (CHECK_GRID_CONTRACT && grid == NO_GRID) grid_contract_broken = true;
+            return grid_hit(grid_at(grid), ray, t_min, any_hit, best);
+        }
         if (grid != NO_GRID && grid_at(grid).valid != 0u) return grid_hit(grid_at(grid), ray, t_min, any_hit, best);
     }
 

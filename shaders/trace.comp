@@ -13,7 +13,9 @@ layout(local_size_x = WORKGROUP_X, local_size_y = WORKGROUP_Y, local_size_z = 1)
 layout(push_constant) uniform BandBlock { BandParams band; };
 // The output, pixels[]: rgb = linear colour, a = number of rays traced for this pixel (camera +
 // shadow + reflection). Between the passes of a progressive render: rgb = the sum of the
-// samples so far. a = -1 marks an invocation the driver cut short (see loop_limit_reached).
+// samples so far. a = -1 marks an invocation the driver cut short (see loop_limit_reached), a = -3
+// one whose ray broke the grids' contract (scene.glsl, grid_contract_broken).
+const float CONTRACT_BROKEN = -3.0;
 
 #include "common.glsl"
 #include "scene.glsl"
@@ -223,6 +225,7 @@ void photon_pass_pixel(uvec2 pixel, uint out_index) {
         pixels[out_index] = vec4(0.0, 0.0, 0.0, -1.0);
         return;
     }
+    if (CHECK_GRID_CONTRACT && grid_contract_broken) rays = CONTRACT_BROKEN;
     bool last = pass + 1u == photon_params.last_pass;
     pixels[out_index] = last ? vec4(sum / float(photon_params.last_pass - photon_params.first_pass), rays) : vec4(sum, rays);
 }
@@ -264,6 +267,7 @@ void main() {
     if (OUTPUT_HITS) {
         vec4 hit = first_hit(vec2(pixel) + 0.5);
         pixels[out_index] = CHECK_LOOP_LIMIT && loop_limit_reached() ? vec4(-1.0, 0.0, 0.0, -2.0) : hit;
+        if (CHECK_GRID_CONTRACT && grid_contract_broken) pixels[out_index].a = CONTRACT_BROKEN;
         return;
     }
 
@@ -303,6 +307,7 @@ void main() {
         pixels[out_index] = vec4(0.0, 0.0, 0.0, -1.0);
         return;
     }
+    if (CHECK_GRID_CONTRACT && grid_contract_broken) rays = CONTRACT_BROKEN;
     pixels[out_index] = last == total ? vec4(sum / (n * n), rays) : vec4(sum, rays);
     if (spread) {
         pixels[lo_index] = vec4(lo, 0.0);

@@ -340,9 +340,11 @@ dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
                 std::uint32_t seed_d = hash_u32(seed + std::uint32_t(b.depth));
                 color += m.microfacet() ? microfacet_hit(m, hit, p, n, b, beyond, sheet, seed_d, reflected, refracted, rays)
                                         : phong_hit(m, hit, p, n, b, beyond, sheet, seed_d, reflected, refracted, rays);
-                // Past max_depth the children contribute black (POV-Ray's max_trace_level rule).
-                bool reflects = b.depth < scene_.render.max_depth && max_of(reflected.weight) >= kMinWeight;
-                bool refracts = b.depth < scene_.render.max_depth && max_of(refracted.weight) >= kMinWeight;
+                // Past max_depth the children contribute black (POV-Ray's max_trace_level rule);
+                // a material that spawns no rays (the predicate the GPU's grids rely on) ends the path.
+                const bool spawns = m.spawns_secondary_rays() && b.depth < scene_.render.max_depth;
+                bool reflects = spawns && max_of(reflected.weight) >= kMinWeight;
+                bool refracts = spawns && max_of(refracted.weight) >= kMinWeight;
                 if (reflects && refracts) {
                     // The heavier goes on now, the lighter waits (dropped when the stack is full).
                     bool reflected_first = max_of(reflected.weight) > max_of(refracted.weight);

@@ -78,7 +78,8 @@ GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration accele
       spirv_(gpu::embedded_trace_spirv()),
       resources_(*context_, layout_->set_layout()),
       photons_(std::make_unique<gpu::PhotonPass>(*context_, *layout_)),
-      acceleration_(acceleration) {}
+      acceleration_(acceleration),
+      check_grid_contract_(options.validation) {}
 
 GpuRenderer::~GpuRenderer() {
     vkDeviceWaitIdle(context_->device());
@@ -153,7 +154,7 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
     const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
     std::optional<gpu::PackedScene> fresh;
     if (!packing_once_ || !packed_) {
-        (packing_once_ ? packed_ : fresh) = gpu::pack_scene(scene, {acceleration_, &bvh_cache_, &limits});
+        (packing_once_ ? packed_ : fresh) = gpu::pack_scene(scene, {acceleration_, grid_use_, &bvh_cache_, &limits});
         ++scenes_packed_;
     }
     const gpu::PackedScene& packed = fresh ? *fresh : *packed_;
@@ -172,6 +173,8 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
     if (std::string code = gpu::surface_functions_glsl(scene); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;
     features.check_loop_limit = gpu::limits_loop_iterations(context_->info());
+    features.check_grid_contract = check_grid_contract_;
+    if (override_features_) override_features_(features);
     return features;
 }
 
@@ -312,6 +315,11 @@ void GpuRenderer::dispatch_checked(const gpu::BandParams& params, std::uint32_t 
                                    const ProgressFn& progress) {
     const gpu::Buffer& output = resources_.output(entries * sizeof(gpu::vec4));
     const auto* band = static_cast<const gpu::vec4*>(output.data());
+    auto check_grid_contract = [&] {
+        if (check_grid_contract_ && std::any_of(band, band + entries, [](const gpu::vec4& p) { return p.a == -3.0f; }))
+            throw std::logic_error("a ray without a direction grid met a pipeline without the BVH's traversal (GRIDS_ONLY): "
+                                   "the acceleration plan and the shader's rays disagree");
+    };
     auto cut_short = [&] {
         return check_loop_limit && std::any_of(band, band + entries, [](const gpu::vec4& p) { return p.a < 0.0f; });
     };
@@ -319,6 +327,7 @@ void GpuRenderer::dispatch_checked(const gpu::BandParams& params, std::uint32_t 
     // All of the range's samples in one invocation is fastest (lavapipe: ~1.5x one per
     // invocation); where the driver's loop limit cut that short, one sample per pass.
     dispatch_band(params, params.sample_count, width, done, progress);
+    check_grid_contract();
     if (params.sample_count > 1 && cut_short()) {
         ++bands_rerendered_;
         if (sums_before) std::memcpy(output.data(), sums_before, entries * sizeof(gpu::vec4));  // the sums before this range

@@ -2,6 +2,7 @@
 // The Vulkan compute backend. Device, pipeline and buffers live as long as the renderer, so a
 // sequence of renders (animation frames) pays the start-up cost once.
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -53,6 +54,14 @@ public:
     void set_max_dispatch_samples(std::size_t samples) { max_dispatch_samples_ = samples; }
 
     const gpu::Context& context() const { return *context_; }
+    // Whether rays take direction grids (gpu/packing/acceleration_plan.hpp); tests force them
+    // on or off to compare the two.
+    void set_grid_use(gpu::GridUse use) { grid_use_ = use; }
+    // Changes the shader features every render chose (tests: to break a contract on purpose).
+    void override_features(std::function<void(gpu::ShaderFeatures&)> change) { override_features_ = std::move(change); }
+    // Pipelines built so far, one per set of shader features (for tests: a frame that moves only
+    // the camera builds none).
+    std::size_t pipelines_built() const { return pipelines_.size(); }
 
     // Bands rendered again with one sample per invocation because the driver's loop limit cut
     // the first attempt short (lavapipe; see shaders/trace.comp), since this renderer was made.
@@ -142,6 +151,11 @@ private:
     std::vector<gpu::Emitter> emitters_;  // the last uploaded scene's, for the photon pass
     std::vector<std::string> float_notes_;  // the last uploaded scene's objects float cannot resolve
     Acceleration acceleration_;
+    gpu::GridUse grid_use_ = gpu::GridUse::Auto;
+    // Under the validation layer (tests), a ray that breaks the grids' contract fails the render
+    // (shaders/scene.glsl, grid_contract_broken) instead of reading past the grids.
+    bool check_grid_contract_ = false;
+    std::function<void(gpu::ShaderFeatures&)> override_features_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
     std::size_t bands_rerendered_ = 0;
     // Within one render_in_steps(): the scene as packed by its first upload, for the others.

@@ -57,15 +57,27 @@ void TraceResources::upload(const PackedScene& packed, const FrameParams& frame)
         std::span<const std::byte> bytes = packed.bytes(SceneArray(a));
         std::vector<std::byte>& held = held_[a];
         const uint binding = kSceneArrays[a].binding;
-        if (reserve(binding, bytes.size())) {
-            held.clear();
-        } else if (std::equal(bytes.begin(), bytes.end(), held.begin(), held.end())) {
-            last_upload_.bytes_skipped += bytes.size();
-            continue;
+        const bool grown = reserve(binding, bytes.size());
+        // Only the elements from the first to the last that differ from what the buffer held:
+        // where the scene's data comes first and the view's last (the direction grids), a new
+        // camera rewrites only the view's. A buffer that had to grow gets the rest copied too.
+        const std::size_t element = kSceneArrays[a].element_bytes;
+        const std::size_t common = std::min(bytes.size(), held.size());
+        std::size_t first = std::mismatch(bytes.begin(), bytes.begin() + common, held.begin()).first - bytes.begin();
+        std::size_t end = bytes.size();
+        if (held.size() == bytes.size())
+            while (end > first && bytes[end - 1] == held[end - 1]) --end;
+        first = first / element * element;
+        end = std::min(bytes.size(), (end + element - 1) / element * element);
+        if (grown && !bytes.empty()) {
+            buffers_[binding].write(bytes.data(), bytes.size());
+            last_upload_.bytes_moved += bytes.size() - (end - first);
+        } else {
+            if (first < end) buffers_[binding].write(bytes.data() + first, end - first, first);
+            last_upload_.bytes_skipped += bytes.size() - (end - first);
         }
-        if (!bytes.empty()) buffers_[binding].write(bytes.data(), bytes.size());
+        last_upload_.bytes_written += end - first;
         held.assign(bytes.begin(), bytes.end());
-        last_upload_.bytes_written += bytes.size();
     }
     reserve(BINDING_FRAME, sizeof(frame));
     buffers_[BINDING_FRAME].write(&frame, sizeof(frame));

@@ -14,12 +14,14 @@
 
 namespace lancer::gpu {
 
-// What the last upload() copied to the GPU. Scene arrays whose packed contents equal what the
-// GPU already holds are skipped, so an animation frame that only moves the camera writes the
-// frame uniform alone, and one that moves lights writes the light array too.
+// What the last upload() copied to the GPU. Of each scene array only the bytes that differ from
+// what the GPU already holds are written: an animation frame that only moves the camera writes
+// the frame uniform and the view's direction grids (which come last in their arrays), one that
+// moves lights writes the light array too.
 struct UploadStats {
-    std::size_t bytes_written = 0;  // frame uniform included
-    std::size_t bytes_skipped = 0;  // scene arrays left as they were
+    std::size_t bytes_written = 0;  // what changed, frame uniform included
+    std::size_t bytes_skipped = 0;  // what the buffers already held
+    std::size_t bytes_moved = 0;    // what did not change, copied into a buffer that had to grow
 };
 
 class TraceResources {

@@ -179,6 +179,10 @@ struct Material {
     bool microfacet() const { return model == Model::Microfacet; }
     double alpha() const { return roughness * roughness; }
     bool transparent() const { return transmission.r > 0.0 || transmission.g > 0.0 || transmission.b > 0.0; }
+    // Whether a hit on it traces further rays (a mirror ray, a refracted one, a microfacet
+    // lobe's): where none but one flat mirror does, every ray of the GPU's tracer can take a
+    // direction grid (gpu/packing/acceleration_plan.hpp), and the CPU reference's path ends.
+    bool spawns_secondary_rays() const { return reflection > 0.0 || transparent() || microfacet(); }
 };
 
 struct Sphere {

@@ -11,6 +11,7 @@
 
 #include "cpu/cpu_renderer.hpp"
 #include "gpu/layout.hpp"
+#include "gpu/packing/scene_packing.hpp"
 #include "scene/animation.hpp"
 #include "scene/load_scene.hpp"
 #include "support/test_support.hpp"
@@ -234,8 +235,8 @@ TEST_P(FrameZero, EqualsTheStillSceneBitForBit) {
 INSTANTIATE_TEST_SUITE_P(Backends, FrameZero, testing::Values(Backend::Gpu, Backend::Cpu),
                          [](const auto& info) { return backend_name(info.param); });
 
-// Camera-only frames write the frame uniform alone; moved lights add the light buffer; a moved
-// object re-uploads the primitives.
+// Camera-only frames write the frame uniform alone; a moved light adds its element of the light
+// array; a moved object its primitive.
 TEST(GpuUpload, WritesOnlyTheBuffersThatChanged) {
     Scene scene = test::scene_from_text(kStill);
     GpuRenderer& gpu = test::gpu_renderer();
@@ -252,11 +253,75 @@ TEST(GpuUpload, WritesOnlyTheBuffersThatChanged) {
 
     scene.lights[0].position.y += 1;
     gpu.render(scene, {});
-    EXPECT_EQ(gpu.last_upload().bytes_written, frame + lights);
+    EXPECT_EQ(gpu.last_upload().bytes_written, frame + sizeof(gpu::Light));
 
     std::get<Sphere>(scene.objects[1].shape).center.y += 0.25;
     gpu.render(scene, {});
-    EXPECT_EQ(gpu.last_upload().bytes_written, frame + primitives);
+    EXPECT_EQ(gpu.last_upload().bytes_written, frame + sizeof(gpu::Primitive));
+}
+
+// A row of 21 small spheres over a mirror floor, lit by one point light: every ray can take a
+// direction grid (GRIDS_ONLY); with `glass`, the middle sphere is transparent and rays go
+// through the BVH instead.
+std::string row_of_spheres(bool glass) {
+    std::string text = R"(
+        [render]
+        width = 40
+        height = 24
+        samples = 1
+        [camera]
+        eye = [0, 3, -12]
+        look_at = [0, 0, 0]
+        fov = 50
+        [[light]]
+        position = [4, 9, -6]
+        color = [1, 1, 1]
+        [material.ball]
+        color = [0.8, 0.3, 0.2]
+        specular = 0.4
+        [material.floor]
+        color = [0.4, 0.4, 0.4]
+        reflection = 0.5
+        [[object]]
+        type = "plane"
+        point = [0, -0.3, 0]
+        normal = [0, 1, 0]
+        material = "floor"
+    )";
+    if (glass) text += "[material.glass]\ncolor = [1, 1, 1]\ntransmission = [0.9, 0.9, 0.9]\nior = 1.5\n";
+    for (int i = -10; i <= 10; ++i)
+        text += fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, 0, 0]\nradius = 0.3\nmaterial = \"{}\"\n", i,
+                            glass && i == 0 ? "glass" : "ball");
+    return text;
+}
+
+// A frame that moves only the camera writes the frame uniform and the view's direction grids,
+// nothing of the scene's, and keeps its pipeline: the pipeline's constants are per scene. The
+// second camera stands in the row, beside 21 spheres at once, where a grid would list too much
+// for speed: where every ray takes a grid, the view's grids are built anyway, never the BVH.
+TEST(GpuUpload, ACameraMoveWritesOnlyTheViewAndKeepsThePipeline) {
+    for (bool glass : {false, true}) {
+        Scene scene = test::scene_from_text(row_of_spheres(glass));
+        GpuRenderer gpu(gpu::ContextOptions{"", true});
+        const gpu::PackedScene first = gpu::pack_scene(scene);
+        ASSERT_TRUE(first.features.has_bvh);
+        ASSERT_EQ(first.features.grids_only, !glass);
+        gpu.render(scene, {});
+        const std::size_t pipelines = gpu.pipelines_built();
+        for (const dvec3 eye : {dvec3(2, 5, -9), dvec3(0.2, 0, 0.1), dvec3(-3, 1, -4)}) {
+            scene.camera.eye = eye;
+            const FloatImage image = gpu.render(scene, {});
+            const gpu::PackedScene packed = gpu::pack_scene(scene);
+            const std::size_t view = 2 * sizeof(gpu::DirectionGrid) + 4 * (packed.view_grid_cells + packed.view_grid_entries);
+            EXPECT_GT(gpu.last_upload().bytes_written, sizeof(gpu::FrameParams) - 1);
+            EXPECT_LE(gpu.last_upload().bytes_written, sizeof(gpu::FrameParams) + (glass ? 0 : view)) << "eye " << eye.x;
+            EXPECT_EQ(gpu.pipelines_built(), pipelines) << "eye " << eye.x << ": a camera move built a pipeline";
+            EXPECT_EQ(packed.features, first.features);
+            GpuRenderer bvh_alone(gpu::ContextOptions{"", true});
+            bvh_alone.set_grid_use(gpu::GridUse::Never);
+            EXPECT_TRUE(identical(image, bvh_alone.render(scene, {}))) << "eye " << eye.x << ": grids and the BVH disagree";
+        }
+    }
 }
 
 // Frames that move only the camera and lights reuse the BVH; moving an object builds it again,

@@ -1,5 +1,6 @@
 // The BVH only changes which objects are tested, never the answer: on every scene, each backend
-// renders the same bytes with its BVH as with brute force.
+// renders the same bytes with its BVH as with brute force; and the GPU's direction grids, forced
+// wherever the scene allows them, the same as its BVH alone.
 #include <filesystem>
 #include <memory>
 
@@ -18,16 +19,26 @@ protected:
     static void SetUpTestSuite() {
         bvh_renderer = std::make_unique<GpuRenderer>(gpu::ContextOptions{"", true}, Acceleration::BvhAlways);
         brute_renderer = std::make_unique<GpuRenderer>(gpu::ContextOptions{"", true}, Acceleration::BruteForce);
+        bvh_alone = std::make_unique<GpuRenderer>(gpu::ContextOptions{"", true}, Acceleration::BvhAlways);
+        bvh_alone->set_grid_use(gpu::GridUse::Never);
+        grids_forced = std::make_unique<GpuRenderer>(gpu::ContextOptions{"", true});
+        grids_forced->set_grid_use(gpu::GridUse::Forced);
     }
     static void TearDownTestSuite() {
         bvh_renderer.reset();
         brute_renderer.reset();
+        bvh_alone.reset();
+        grids_forced.reset();
     }
     static std::unique_ptr<GpuRenderer> bvh_renderer;  // a tree even over a handful of primitives
     static std::unique_ptr<GpuRenderer> brute_renderer;
+    static std::unique_ptr<GpuRenderer> bvh_alone;     // a tree, and no direction grids
+    static std::unique_ptr<GpuRenderer> grids_forced;  // grids wherever the scene allows, cost aside
 };
 std::unique_ptr<GpuRenderer> BvhEquivalence::bvh_renderer;
 std::unique_ptr<GpuRenderer> BvhEquivalence::brute_renderer;
+std::unique_ptr<GpuRenderer> BvhEquivalence::bvh_alone;
+std::unique_ptr<GpuRenderer> BvhEquivalence::grids_forced;
 
 // Every pixel is compared exactly, so a small image still catches a node or leaf the tree loses;
 // the GPU's brute force over thousands of parametric cells is what makes these tests slow, so
@@ -77,6 +88,20 @@ TEST_P(BvhEquivalence, GpuBvhMatchesBruteForce) {
     ImageDiff d = compare_images(bvh, brute, 0);
     EXPECT_EQ(d.max_abs, 0) << d.fraction_over * bvh.width * bvh.height << " pixels differ";
     if (d.max_abs) test::save_comparison("bvh-gpu-" + std::filesystem::path(GetParam()).stem().string(), bvh, brute);
+}
+
+// Every float of every pixel: the grids list, per direction, every primitive a ray can hit, and
+// ties between hits go by a stable key, so the hits are the same whichever way they were found.
+TEST_P(BvhEquivalence, GpuGridsForcedMatchTheBvhAlone) {
+    Scene scene = small(GetParam(), 48);
+    const FloatImage grids = grids_forced->render(scene, {});
+    const FloatImage bvh = bvh_alone->render(scene, {});
+    ASSERT_EQ(grids.pixels.size(), bvh.pixels.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < grids.pixels.size(); ++i) differ += grids.pixels[i] != bvh.pixels[i];
+    EXPECT_EQ(differ, 0u) << "pixels that differ";
+    if (differ)
+        test::save_comparison("grids-gpu-" + std::filesystem::path(GetParam()).stem().string(), to_srgb8(grids), to_srgb8(bvh));
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BvhEquivalence, testing::ValuesIn(test::scene_files()), [](const auto& info) {

@@ -3,6 +3,7 @@
 // would be lost). The grids' own geometry is tested in tests/unit/direction_grids_test.cpp; that
 // the pictures stay the same, here and in bvh_equivalence_test (every scene against brute force).
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include <fmt/format.h>
@@ -53,6 +54,24 @@ TEST(DirectionGridPacking, ALatticeOverAMirrorTakesGridsForEveryRay) {
     for (uint k : {gpu::DIRECTION_GRID_EYE, gpu::DIRECTION_GRID_MIRROR, gpu::DIRECTION_GRID_LIGHT, gpu::DIRECTION_GRID_LIGHT + 1})
         EXPECT_EQ(packed.grids[k].valid, 1u) << "grid " << k;
     EXPECT_EQ(packed.grids[gpu::DIRECTION_GRID_LIGHT + 2].valid, 0u) << "no third light";
+}
+
+// The contract, broken on purpose: mirror balls reflect without a grid, and the pipeline is told
+// that every ray takes one. Under the validation layer (tests) the render fails loudly instead of
+// reading past the grids.
+TEST(DirectionGridPacking, ARayWithoutAGridUnderGridsOnlyFailsTheRender) {
+    const Scene scene = test::scene_from_text(lattice_scene("", "reflection = 0.5\n"));
+    ASSERT_FALSE(gpu::pack_scene(scene).features.grids_only);
+    GpuRenderer gpu(gpu::ContextOptions{"", true});
+    gpu.override_features([](gpu::ShaderFeatures& f) { f.grids_only = true; });
+    try {
+        gpu.render(scene, {});
+        FAIL() << "rendered with rays the pipeline cannot trace";
+    } catch (const std::logic_error& e) {
+        EXPECT_NE(std::string(e.what()).find("GRIDS_ONLY"), std::string::npos) << e.what();
+    }
+    gpu.override_features({});
+    EXPECT_NO_THROW(gpu.render(scene, {}));
 }
 
 TEST(DirectionGridPacking, AnyRayWithoutAGridKeepsTheBvh) {

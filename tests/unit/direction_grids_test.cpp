@@ -162,6 +162,14 @@ float plane_spawn_offset(glm::vec3 origin, glm::vec3 point, float t, glm::vec3 p
     return 2.0f * error + 4.0f * rounding * max_abs(p);
 }
 
+// The grids of the lights and of the view, as the acceleration plan makes them.
+DirectionGrids direction_grids(const EyeView& view, const Mirror* mirror, std::span<const Light> lights, std::span<const Aabb> boxes) {
+    DirectionGrids grids = no_grids();
+    add_light_grids(lights, boxes, grids);
+    add_view_grids(view, mirror, boxes, grids);
+    return grids;
+}
+
 // Camera rays from `eye` (every other one toward the mirror image of a point `target` picks,
 // the rest anywhere in view), their hits on the floor (y = 0, given by `floor.point`) and their
 // reflections as the shader makes them: the mirror's grid lists every box a reflection enters.

@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "gpu/packing/scene_packing.hpp"
+#include "gpu/packing/float_bounds.hpp"
 
 namespace lancer::gpu {
 namespace {
@@ -49,7 +49,7 @@ double max_abs(const dvec3& p) { return std::max({std::abs(p.x), std::abs(p.y), 
 }  // namespace
 
 DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, const EyeView* view, DirectionGrids& out,
-                             double slack) {
+                             double slack, bool required) {
     DirectionGrid grid{};  // valid = 0: through the BVH
     dvec3 axis, u, v;
     if (view) {
@@ -107,7 +107,7 @@ DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, c
         const double m = kPrintPad * (1.0 + most) + slack * (1.0 + 2.0 * most * most);
         prints.push_back({u0 - m, u1 + m, v0 - m, v1 + m, near, static_cast<uint>(i)});
     }
-    if (everywhere.size() > kMaxEverywhere) return grid;
+    if (everywhere.size() > kMaxEverywhere && !required) return grid;
 
     // The window: the eye's view (a little wider), or everything the boxes cover.
     double wu0, wu1, wv0, wv1;
@@ -168,7 +168,7 @@ DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, c
             span(f, columns, rows, i0, i1, j0, j1);
             total += std::size_t(i1 - i0 + 1) * std::size_t(j1 - j0 + 1);
         }
-        if (total <= kMaxEntries) break;
+        if (total <= kMaxEntries || (columns == 1.0 && rows == 1.0 && required)) break;
         if (columns == 1.0 && rows == 1.0) return grid;
         columns = std::max(1.0, std::ceil(columns / 2));
         rows = std::max(1.0, std::ceil(rows / 2));
@@ -186,7 +186,7 @@ DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, c
     // one behind the other) weigh as much as the entries in them.
     double squares = 0.0;
     for (const auto& list : lists) squares += double(list.size()) * double(list.size());
-    if (total > 0 && squares / double(total) > kMaxMeanList) return grid;
+    if (total > 0 && squares / double(total) > kMaxMeanList && !required) return grid;
 
     grid.origin = vec4(float(origin.x), float(origin.y), float(origin.z), 0.0f);
     grid.axis = vec4(float(axis.x), float(axis.y), float(axis.z), 0.0f);
@@ -214,30 +214,35 @@ DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, c
     return grid;
 }
 
-DirectionGrids direction_grids(const EyeView& view, const Mirror* mirror, std::span<const Light> lights, std::span<const Aabb> boxes) {
+DirectionGrids no_grids() {
     DirectionGrids out;
     out.grids.resize(DIRECTION_GRID_COUNT);
-    out.grids[DIRECTION_GRID_EYE] = direction_grid(view.eye, boxes, &view, out);
-    if (mirror) {
-        // A camera ray's reflection starts just off the plane (common.glsl's offset_origin: about
-        // 2.3e-6 (|eye| + |point| + t) for a plane hit at t >= the eye's height h above it), so
-        // its line passes that far from the mirror image: 2.3e-6 (1 + (|eye| + |point|) / h)
-        // radians at most, here with a margin of 40.
-        const double h = std::abs(glm::dot(view.eye - mirror->point, mirror->normal));
-        auto reflect = [&](const dvec3& d) { return d - 2.0 * glm::dot(d, mirror->normal) * mirror->normal; };
-        if (h > 0.0) {
-            const EyeView image{view.eye - 2.0 * glm::dot(view.eye - mirror->point, mirror->normal) * mirror->normal,
-                                reflect(view.forward), reflect(view.right), reflect(view.up)};
-            const double slack = 1e-4 * (1.0 + (max_abs(view.eye) + max_abs(mirror->point)) / h);
-            out.grids[DIRECTION_GRID_MIRROR] = direction_grid(image.eye, boxes, &image, out, slack);
-        }
-    }
+    return out;
+}
+
+void add_light_grids(std::span<const Light> lights, std::span<const Aabb> boxes, DirectionGrids& out, bool required) {
     for (std::size_t k = 0; k < lights.size() && DIRECTION_GRID_LIGHT + k < DIRECTION_GRID_COUNT; ++k) {
         const Light& l = lights[k];
         if (l.type != LIGHT_POINT && l.type != LIGHT_SPOT) continue;  // an area light's shadow rays end anywhere on it
-        out.grids[DIRECTION_GRID_LIGHT + k] = direction_grid(dvec3(l.position.x, l.position.y, l.position.z), boxes, nullptr, out);
+        out.grids[DIRECTION_GRID_LIGHT + k] =
+            direction_grid(dvec3(l.position.x, l.position.y, l.position.z), boxes, nullptr, out, 0.0, required);
     }
-    return out;
+}
+
+void add_view_grids(const EyeView& view, const Mirror* mirror, std::span<const Aabb> boxes, DirectionGrids& out, bool required) {
+    out.grids[DIRECTION_GRID_EYE] = direction_grid(view.eye, boxes, &view, out, 0.0, required);
+    if (!mirror) return;
+    // A camera ray's reflection starts just off the plane (common.glsl's offset_origin: about
+    // 2.3e-6 (|eye| + |point| + t) for a plane hit at t >= the eye's height h above it), so
+    // its line passes that far from the mirror image: 2.3e-6 (1 + (|eye| + |point|) / h)
+    // radians at most, here with a margin of 40. An eye on the plane sees no reflection in it.
+    const double h = std::abs(glm::dot(view.eye - mirror->point, mirror->normal));
+    if (!(h > 0.0)) return;
+    auto reflect = [&](const dvec3& d) { return d - 2.0 * glm::dot(d, mirror->normal) * mirror->normal; };
+    const EyeView image{view.eye - 2.0 * glm::dot(view.eye - mirror->point, mirror->normal) * mirror->normal,
+                        reflect(view.forward), reflect(view.right), reflect(view.up)};
+    const double slack = 1e-4 * (1.0 + (max_abs(view.eye) + max_abs(mirror->point)) / h);
+    out.grids[DIRECTION_GRID_MIRROR] = direction_grid(image.eye, boxes, &image, out, slack, required);
 }
 
 }  // namespace lancer::gpu

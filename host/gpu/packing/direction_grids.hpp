@@ -35,10 +35,11 @@ struct EyeView {
 // packed order, with their indices) are seen. With `view`, only directions within it (the eye's
 // grid: boxes behind the eye are left out, those around its plane are in every cell); without, the
 // origin must be outside the boxes' bounds on one side of a plane through it, else the grid is not
-// valid (a light among the primitives), and so is one whose cells would list too much.
+// valid (a light among the primitives), and so is one whose cells would list too much, unless it
+// is `required` (then only a grid that cannot be made is invalid: a view's never is).
 // `slack`: how far (radians) a ray's direction may stray from the direction of its half-line.
 DirectionGrid direction_grid(const glm::dvec3& origin, std::span<const Aabb> boxes, const EyeView* view, DirectionGrids& out,
-                             double slack = 0.0);
+                             double slack = 0.0, bool required = false);
 
 // A flat mirror: a plane (as packed) that reflects camera rays. They then go along half-lines
 // from the eye's mirror image, give or take the rounding of their start just off the plane.
@@ -46,9 +47,15 @@ struct Mirror {
     glm::dvec3 point, normal;  // normal: a unit vector
 };
 
-// The grids of a scene with a BVH over `boxes`: the eye's, the mirror's (if any) and one per
-// point or spot light among the first (`lights`, as packed: their positions in the GPU's
-// coordinates); the others invalid.
-DirectionGrids direction_grids(const EyeView& view, const Mirror* mirror, std::span<const Light> lights, std::span<const Aabb> boxes);
+// An empty set of grids (all invalid), with room for the eye's, the mirror's and the lights'.
+DirectionGrids no_grids();
+
+// The grids of each point or spot light among the first (`lights`, as packed: their positions in
+// the GPU's coordinates) over `boxes`, the BVH's primitives' boxes, added to `grids`.
+void add_light_grids(std::span<const Light> lights, std::span<const Aabb> boxes, DirectionGrids& grids, bool required = false);
+
+// The eye's grid, and the mirror's where there is one, added to `grids`.
+void add_view_grids(const EyeView& view, const Mirror* mirror, std::span<const Aabb> boxes, DirectionGrids& grids,
+                    bool required = false);
 
 }  // namespace lancer::gpu

@@ -1,9 +1,8 @@
 #pragma once
-// Scene model -> the GPU's arrays (LANCER_SCENE_ARRAYS in shaders/layout.h): primitives ordered
-// for the BVH (the BVH's in leaf order, then the rest sorted by shape type: planes, and a few
-// analytic shapes beside patches or expression surfaces), the flattened BVH, materials, lights,
-// patch leaves, parametric cells, implicit surfaces, textures and patterns; and which optional
-// shader features the scene needs. Pure data conversion, no Vulkan.
+// Scene model -> the GPU's arrays (LANCER_SCENE_ARRAYS in shaders/layout.h): the primitives and
+// what they index (primitive_packing), in the order the acceleration plan gives them with its
+// BVH and direction grids (acceleration_plan), the materials and lights (material_packing); and
+// which optional shader features the scene needs. Pure data conversion, no Vulkan.
 #include <array>
 #include <cstddef>
 #include <span>
@@ -11,8 +10,9 @@
 #include <vector>
 
 #include "accel/bvh.hpp"
-#include "gpu/packing/family_boxes.hpp"
 #include "gpu/layout.hpp"
+#include "gpu/packing/acceleration_plan.hpp"
+#include "gpu/packing/family_boxes.hpp"
 #include "gpu/vulkan/memory_budget.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -33,6 +33,9 @@ struct PackedScene {
     // By shape type, the boxes around the families of cheap bounded shapes outside the BVH
     // (shape_is_boxable; the others have none: gpu/packing/family_boxes.hpp).
     std::array<FamilyBoxes, SHAPE_COUNT> families{};
+    // The bytes at the end of grid_cells and grid_entries that depend on the camera (the eye's
+    // and the mirror's grids): the rest of every array is the same for any camera.
+    std::size_t view_grid_cells = 0, view_grid_entries = 0;
     uint photon_count = 0;  // photons per pass, with photon mapping
     // The scene's shape families and shading features: scene_shapes, has_bvh, has_textures, ...
     // (output_hits and check_loop_limit are the renderer's to set).
@@ -44,6 +47,7 @@ struct PackedScene {
 
 struct PackOptions {
     Acceleration acceleration = Acceleration::Bvh;
+    GridUse grids = GridUse::Auto;
     BvhCache* cache = nullptr;  // with one, a BVH over the same boxes as the last one is not built again
     // When given, an array that would not fit the device is refused (UserError) before it is
     // filled: Bezier leaves multiply a scene's patches by up to 256.
@@ -63,9 +67,5 @@ std::vector<BufferNeed> buffer_needs(const PackedScene& packed, std::uint64_t ou
 // 2^20 (photon_grid.comp scans the block totals in one invocation, within lavapipe's loop limit).
 std::uint32_t photon_capacity(std::uint32_t count);
 std::uint32_t photon_buckets(std::uint32_t capacity);
-
-// float(x) rounded toward -inf / +inf, so float boxes contain their double originals.
-float round_down(double x);
-float round_up(double x);
 
 }  // namespace lancer::gpu

@@ -1,0 +1,141 @@
+#include "gpu/packing/acceleration_plan.hpp"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "gpu/packing/float_bounds.hpp"
+
+namespace lancer::gpu {
+namespace {
+
+// With this few bounded primitives, testing them all beats traversing a tree (measured on
+// lavapipe: the BVH loop's stack and divergence cost more than a handful of sphere tests).
+constexpr std::size_t kMinPrimitivesForBvh = 16;
+// At most this many cheap bounded shapes stay outside a BVH of costly ones.
+constexpr std::size_t kMaxAnalyticOutsideBvh = 8;
+
+// Beside costly shapes (patches, expression surfaces) in a BVH, a few cheap bounded ones stay
+// outside it, tested by every ray in loops of their own: in the BVH's leaves, lavapipe would run
+// their code at every test of a patch or cell (the teapot 0.93x the time).
+bool cheap_ones_stay_outside(std::span<const PrimitiveWithBox> primitives) {
+    std::size_t analytic = 0;
+    bool costly = false;
+    for (const auto& [p, box] : primitives) {
+        if (!box) continue;
+        analytic += shape_is_boxable(p.type);
+        costly |= !shape_has(p.type, SHAPE_CHEAP);
+    }
+    return costly && analytic <= kMaxAnalyticOutsideBvh;
+}
+
+// The first plane that is a flat mirror (its reflections of camera rays are camera rays of the
+// eye's mirror image): packed index and plane, or none.
+std::optional<Mirror> find_mirror(const AccelerationPlan& plan, std::span<const lancer::Material> materials, uint& index) {
+    for (std::size_t i = plan.primitives.size() - plan.unbounded_count; i < plan.primitives.size(); ++i) {
+        const Primitive& p = plan.primitives[i];
+        const lancer::Material& m = materials[p.material];
+        if (p.type != SHAPE_PLANE || !(m.reflection > 0.0) || m.microfacet() || m.bump) continue;
+        index = static_cast<uint>(i);
+        return Mirror{dvec3(p.p0.x, p.p0.y, p.p0.z), glm::normalize(dvec3(p.p1.x, p.p1.y, p.p1.z))};
+    }
+    return std::nullopt;
+}
+
+// Whether every ray the tracer spawns can take a grid, so that the BVH's traversal can be left
+// out of the pipeline: camera rays (the eye's grid), their reflections in the flat mirror (the
+// mirror's), shadow rays to point and spot lights (each light's). That holds where no other
+// surface spawns rays (the one predicate both renderers share:
+// Material::spawns_secondary_rays), every light has a grid, and photon mapping, which traces
+// rays of its own, is off.
+bool every_ray_takes_a_grid(const AccelerationPlan& plan, const PlanInput& input) {
+    if (input.photons || input.lights.size() > DIRECTION_GRID_COUNT - DIRECTION_GRID_LIGHT) return false;
+    for (std::size_t k = 0; k < input.lights.size(); ++k)
+        if (!plan.grids.grids[DIRECTION_GRID_LIGHT + k].valid) return false;
+    for (std::size_t i = 0; i < plan.primitives.size(); ++i)
+        if (i != plan.mirror_plane && input.materials[plan.primitives[i].material].spawns_secondary_rays()) return false;
+    return true;
+}
+
+}  // namespace
+
+AccelerationPlan plan_scene(const PlanInput& input, const PlanOptions& options) {
+    AccelerationPlan plan;
+    PlanFlags& f = plan.flags;
+    std::size_t bounded_count = 0;
+    for (const auto& [p, box] : input.primitives) {
+        bounded_count += box.has_value();
+        f.scene_shapes |= 1u << p.type;
+    }
+    const Acceleration acceleration = options.acceleration;
+    const bool use_bvh = acceleration == Acceleration::BvhAlways ||
+                         (acceleration == Acceleration::Bvh &&
+                          (bounded_count >= kMinPrimitivesForBvh || (options.grids == GridUse::Forced && bounded_count > 0)));
+    const bool analytic_outside = cheap_ones_stay_outside(input.primitives);
+    std::vector<Primitive> bounded;
+    std::vector<PrimitiveWithBox> unbounded;
+    std::vector<Aabb> boxes;
+    for (const auto& [p, box] : input.primitives) {
+        if (use_bvh && box && !(analytic_outside && shape_is_boxable(p.type))) {
+            bounded.push_back(p);
+            boxes.push_back(*box);
+        } else {
+            unbounded.emplace_back(p, box);
+        }
+    }
+    Bvh built;
+    const Bvh& bvh = options.cache ? options.cache->build(boxes) : (built = build_bvh(boxes));
+    for (std::uint32_t index : bvh.order) {
+        plan.primitives.push_back(bounded[index]);
+        plan.grid_boxes.push_back(boxes[index]);
+    }
+    for (const lancer::BvhNode& n : bvh.nodes) {
+        BvhNode g{};
+        pack_box(n.box, g.lo, g.hi);
+        g.first = n.first;
+        g.count = n.count;
+        plan.nodes.push_back(g);
+    }
+    f.has_bvh = !plan.nodes.empty();
+    for (const Primitive& p : plan.primitives) f.bvh_has_analytic |= shape_is_boxable(p.type);
+
+    // By family, so that the shader tests each family in a loop of its own (scene.glsl), with a
+    // box around each family of cheap bounded shapes where it pays (family_boxes.hpp).
+    std::stable_sort(unbounded.begin(), unbounded.end(), [](const auto& a, const auto& b) { return a.first.type < b.first.type; });
+    Aabb everything;
+    for (const auto& [p, box] : input.primitives)
+        if (box) everything.extend(*box);
+    for (uint type = 0; type < SHAPE_COUNT; ++type) {
+        if (!shape_is_boxable(type)) continue;
+        auto begin = std::find_if(unbounded.begin(), unbounded.end(), [&](const auto& e) { return e.first.type == type; });
+        auto end = std::find_if(begin, unbounded.end(), [&](const auto& e) { return e.first.type != type; });
+        plan.families[type] = box_family(std::span(begin, end), everything);
+        if (plan.families[type].boxed) f.boxed_families |= 1u << type;
+        if (plan.families[type].split) f.split_families |= 1u << type;
+    }
+    for (const auto& e : unbounded) plan.primitives.push_back(e.first);
+    plan.unbounded_count = static_cast<uint>(unbounded.size());
+
+    // Direction grids for camera and shadow rays, where every shape is cheap to test (the
+    // shader's CHEAP_SHAPES) and any hit blocks a shadow ray (no transparency).
+    plan.grids = no_grids();
+    bool cheap = true, transparency = false;
+    for (const Primitive& p : plan.primitives) cheap &= shape_has(p.type, SHAPE_CHEAP);
+    for (const lancer::Material& m : input.materials) transparency |= m.transparent();
+    f.direction_grids = options.grids != GridUse::Never && f.has_bvh && cheap && !transparency;
+    if (!f.direction_grids) return plan;
+    plan.mirror = find_mirror(plan, input.materials, plan.mirror_plane);
+    add_light_grids(input.lights, plan.grid_boxes, plan.grids, options.grids == GridUse::Forced);
+    f.grids_only = every_ray_takes_a_grid(plan, input);
+    plan.view_grids_required = f.grids_only || options.grids == GridUse::Forced;
+    return plan;
+}
+
+DirectionGrids plan_view(const AccelerationPlan& plan, const EyeView& view) {
+    DirectionGrids grids = plan.grids;
+    if (plan.flags.direction_grids)
+        add_view_grids(view, plan.mirror ? &*plan.mirror : nullptr, plan.grid_boxes, grids, plan.view_grids_required);
+    return grids;
+}
+
+}  // namespace lancer::gpu

@@ -1,0 +1,158 @@
+#include "gpu/packing/primitive_packing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <glm/matrix.hpp>
+
+#include "accel/shape_bounds.hpp"
+#include "core/finite.hpp"
+#include "gpu/packing/float_bounds.hpp"
+#include "surface/parametric_cells.hpp"
+
+namespace lancer::gpu {
+namespace {
+
+// Turns each object into primitives (one, or many for patch sets), each with its box if bounded.
+struct PrimitivePacker {
+    PackedScene& out;
+    std::vector<PrimitiveWithBox>& prims;
+    uint material = 0;
+    uint object = 0;
+
+    void add(Primitive p, std::optional<Aabb> box) { prims.emplace_back(p, box); }
+
+    void operator()(const Sphere& s) {
+        add({SHAPE_SPHERE, material, 0, object, v4(s.center, s.radius), v4(s.orientation[0]), v4(s.orientation[1])},
+            shape_bounds(s));
+    }
+    void operator()(const Plane& p) {
+        add({SHAPE_PLANE, material, 0, object, v4(p.point), v4(p.normal), v4(p.u_axis)}, std::nullopt);
+    }
+    void operator()(const Rectangle& r) {
+        add({SHAPE_RECTANGLE, material, 0, object, v4(r.corner), v4(r.edge_u), v4(r.edge_v)}, shape_bounds(r));
+    }
+    void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
+
+    // Each cell of the surface's domain is a primitive with the cell's proved box; the surface
+    // itself (its affine map; its equations are compiled into the shader) is one SurfaceInfo.
+    void operator()(const ParametricObject& p) {
+        auto index = static_cast<uint>(out.surfaces.size());
+        const glm::dmat4& m = p.surface.to_world;  // column-major: m[column][row]
+        SurfaceInfo info{};
+        info.row0 = vec4(float(m[0][0]), float(m[1][0]), float(m[2][0]), float(m[3][0]));
+        info.row1 = vec4(float(m[0][1]), float(m[1][1]), float(m[2][1]), float(m[3][1]));
+        info.row2 = vec4(float(m[0][2]), float(m[1][2]), float(m[2][2]), float(m[3][2]));
+        const glm::dmat4 inv = glm::inverse(m);
+        info.inverse0 = vec4(float(inv[0][0]), float(inv[1][0]), float(inv[2][0]), float(inv[3][0]));
+        info.inverse1 = vec4(float(inv[0][1]), float(inv[1][1]), float(inv[2][1]), float(inv[3][1]));
+        info.inverse2 = vec4(float(inv[0][2]), float(inv[1][2]), float(inv[2][2]), float(inv[3][2]));
+        info.domain = vec4(float(p.surface.u0), float(p.surface.u1), float(p.surface.v0), float(p.surface.v1));
+        out.surfaces.push_back(info);
+        for (const auto& cell : *surface::surface_cells(p.surface)) {
+            // Bounds rounded outward to float; an unbounded one becomes float's largest value,
+            // which the search treats as no bound (the packed arrays hold only finite floats).
+            auto bound = [](double x, bool upper) {
+                constexpr double big = std::numeric_limits<float>::max();
+                if (std::isnan(x)) return upper ? float(big) : -float(big);
+                if (!(x > -big)) return -float(big);
+                if (!(x < big)) return float(big);
+                float f = float(x);
+                if (upper && double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+                if (!upper && double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+                return f;
+            };
+            auto lower = [&](const surface::IntervalVec3& b, float w) {
+                return vec4(bound(b.x.lo, false), bound(b.y.lo, false), bound(b.z.lo, false), w);
+            };
+            auto upper = [&](const surface::IntervalVec3& b, float w) {
+                return vec4(bound(b.x.hi, true), bound(b.y.hi, true), bound(b.z.hi, true), w);
+            };
+            auto magnitude = [&](const surface::IntervalVec3& b) {
+                auto mag = [&](const surface::Interval& i) {
+                    const double m = std::max(-i.lo, i.hi);
+                    return bound(m >= 0.0 && !i.is_empty() ? m : surface::kInf, true);
+                };
+                return vec4(mag(b.x), mag(b.y), mag(b.z), 0.0f);
+            };
+            ParametricCell c{vec4(float(cell.u0), float(cell.u1), float(cell.v0), float(cell.v1)),
+                             lower(cell.Su, float(index)), upper(cell.Su, bound(cell.local_float_pad, true)),
+                             lower(cell.Sv, 0.0f), upper(cell.Sv, 0.0f), vec4(0.0f),
+                             magnitude(cell.second.Suu), magnitude(cell.second.Suv), magnitude(cell.second.Svv)};
+            if (all_finite(cell.centre_point) && glm::all(glm::lessThan(glm::abs(cell.centre_point), dvec3(1e30))))
+                c.centre = v4(cell.centre_point, 1.0);
+            auto cell_index = static_cast<uint>(out.cells.size());
+            out.cells.push_back(c);
+            Primitive prim{SHAPE_PARAMETRIC, material, cell_index, object, {}, {}, {}};
+            pack_box(Aabb{cell.lo, cell.hi}, prim.p0, prim.p1);
+            add(prim, Aabb{cell.lo, cell.hi});
+        }
+    }
+
+    // One primitive with the box in the surface's own coordinates; its ImplicitInfo carries the
+    // map from world space into them (f itself is compiled into the shader).
+    void operator()(const ImplicitObject& o) {
+        const surface::ImplicitSurface& s = o.surface;
+        auto index = static_cast<uint>(out.implicits.size());
+        const glm::dmat4& m = s.to_local;  // column-major: m[column][row]
+        ImplicitInfo info{};
+        info.row0 = vec4(float(m[0][0]), float(m[1][0]), float(m[2][0]), float(m[3][0]));
+        info.row1 = vec4(float(m[0][1]), float(m[1][1]), float(m[2][1]), float(m[3][1]));
+        info.row2 = vec4(float(m[0][2]), float(m[1][2]), float(m[2][2]), float(m[3][2]));
+        out.implicits.push_back(info);
+        Aabb world;
+        surface::implicit_world_bounds(s, world.lo, world.hi);
+        add({SHAPE_IMPLICIT, material, index, object, v4(s.box_lo), v4(s.box_hi), {}}, world);
+    }
+
+    // Each patch becomes 2^n x 2^n leaves (exact sub-patches, de Casteljau in double): smaller
+    // boxes cull more rays before Bezier clipping starts, and clipping converges sooner.
+    void operator()(const BezierSurface& s) {
+        const int n = 1 << s.subdivision;
+        for (std::size_t i = 0; i < s.patches.size(); ++i) {
+            for (int a = 0; a < n; ++a) {
+                for (int b = 0; b < n; ++b) {
+                    double u0 = double(a) / n, u1 = double(a + 1) / n, v0 = double(b) / n, v1 = double(b + 1) / n;
+                    surface::BezierPatch leaf = surface::sub_patch(s.patches[i], u0, u1, v0, v1);
+                    surface::PatchBounds pb = surface::bounds(leaf);
+                    dvec3 origin = 0.5 * (pb.min + pb.max);
+                    // A rational patch is the same for weights scaled by any positive factor, but
+                    // float is not: weights of 1e-50 would all be 0. Scaled (by a power of two,
+                    // exactly) so that the largest is in [1, 2): weights whose largest is 1 stay.
+                    // Equal weights become 1: a polynomial patch, which the GPU clips without
+                    // the homogeneous coordinate (SCENE_HAS_RATIONAL_PATCHES).
+                    const auto [lightest, heaviest] = std::minmax_element(leaf.weights.begin(), leaf.weights.end());
+                    int exponent = 0;
+                    std::frexp(*heaviest, &exponent);
+                    PatchLeaf g{};
+                    for (int k = 0; k < 16; ++k) {
+                        double w = *lightest == *heaviest ? 1.0 : std::ldexp(leaf.weights[k], 1 - exponent);
+                        g.points[k] = v4(leaf.points[k] - origin, w);
+                    }
+                    g.origin = v4(origin, double(i));
+                    g.domain = vec4(float(u0), float(u1), float(v0), float(v1));
+                    auto index = static_cast<uint>(out.patches.size());
+                    out.patches.push_back(g);
+                    add({SHAPE_BEZIER, material, index, object, {}, {}, {}}, Aabb{pb.min, pb.max});
+                }
+            }
+        }
+    }
+};
+
+}  // namespace
+
+void pack_object(const Shape& shape, uint material, uint object, PackedScene& out, std::vector<PrimitiveWithBox>& primitives) {
+    std::visit(PrimitivePacker{out, primitives, material, object}, shape);
+}
+
+std::uint64_t bezier_leaf_count(const Scene& scene) {
+    std::uint64_t leaves = 0;
+    for (const Object& o : scene.objects)
+        if (const auto* s = std::get_if<BezierSurface>(&o.shape)) leaves += std::uint64_t(s->patches.size()) << (2 * s->subdivision);
+    return leaves;
+}
+
+}  // namespace lancer::gpu

@@ -1,0 +1,24 @@
+#pragma once
+// Scene objects to the shader's primitives: one per sphere, plane, rectangle or box, one per
+// Bezier leaf (each patch cut into 2^n x 2^n exact sub-patches), one per parametric cell, one
+// per implicit surface; with the arrays their shapes index (patch leaves, surfaces and their
+// cells, implicit surfaces), and each primitive's box where it is bounded. A new shape adds its
+// case here (docs/adding-a-shape.md).
+#include <cstdint>
+#include <vector>
+
+#include "gpu/packing/family_boxes.hpp"
+#include "gpu/packing/scene_packing.hpp"
+#include "scene/scene.hpp"
+
+namespace lancer::gpu {
+
+// Appends the primitives of scene object `object`, made of `material`, to `primitives`, and what
+// they index to `out`'s arrays.
+void pack_object(const Shape& shape, uint material, uint object, PackedScene& out, std::vector<PrimitiveWithBox>& primitives);
+
+// The Bezier leaves of the whole scene, counted before any is made: a scene with too many for
+// the device is refused before the packer spends seconds and gigabytes on them.
+std::uint64_t bezier_leaf_count(const Scene& scene);
+
+}  // namespace lancer::gpu
