@@ -33,6 +33,7 @@ const uint PENDING_SIZE = 8u;
 // straight through, at most this many times per path; after that the path contributes black.
 const uint MAX_PASS_THROUGH = 16u;
 
+// A ray of the tree and what it carries: the twin of the CPU tracer's Branch (host/cpu/tracer.cpp).
 struct Branch {
     Ray ray;
     vec3 from;  // the surface point the ray leaves (its origin is just off it): media absorb from here
@@ -41,131 +42,136 @@ struct Branch {
     Media media;
 };
 
+// What a hit sends on: the mirror ray's and the refracted ray's directions and weights (a weight
+// below MIN_WEIGHT: no such ray).
+struct Scatter {
+    vec3 reflected_dir, reflected_weight;
+    vec3 refracted_dir, refracted_weight;
+};
+
+// A Phong (or Blinn-Phong) surface hit by b at p (normal n toward the ray), with `beyond` the
+// media past it: adds its local light (and photon mapping's gather) to `color`, and says what
+// it sends on. The twin of Tracer::phong_hit.
+void phong_hit(Material m, Hit hit, vec3 p, vec3 n, Branch b, Media beyond, bool clear, bool sheet, uint seed,
+               inout vec3 color, inout float rays, out Scatter s) {
+    Appearance look = appearance_at(m, hit, p, n);
+    vec3 scale = b.weight * (1.0 - m.reflection);
+    color += scale * shade_local(m, look.pigment, p, n, hit.error, look.normal, b.ray.dir, b.media, hash_u32(seed + b.depth), scale, rays);
+    // Photon mapping: caustics and indirect light, the diffuse BRDF k_d C' / pi times the
+    // irradiance the photons estimate.
+    if (SCENE_HAS_PHOTONS && m.phong.y > 0.0)
+        color += scale * (m.phong.y / MICROFACET_PI) * look.pigment * (vec3(1.0) - m.transmission.rgb) * photon_irradiance(p, n);
+    s.reflected_weight = b.weight * m.reflection;
+    s.refracted_weight = vec3(0.0);
+    s.refracted_dir = b.ray.dir;
+    if (clear) {
+        // Fresnel splits what the surface transmits between the mirror and the refracted ray.
+        float n1 = medium_ior(innermost(b.media));
+        float n2 = sheet ? m.transmission.w : medium_ior(innermost(beyond));
+        float cos_i = -dot(b.ray.dir, n);
+        float cos_t;
+        float f = fresnel(cos_i, n1, n2, cos_t);
+        vec3 passing = b.weight * (1.0 - m.reflection) * m.transmission.rgb;
+        s.reflected_weight += passing * f;
+        s.refracted_weight = passing * (1.0 - f);
+        if (!sheet) s.refracted_dir = refraction(b.ray.dir, n, n1 / n2, cos_i, cos_t);
+    }
+    // A bump tilts the mirror direction; refraction follows the geometric surface.
+    s.reflected_dir = bounce_direction(b.ray.dir, look.normal, n);
+}
+
+// A metal or a glass of microfacets (microfacet_material.glsl): its direct light by the BRDF,
+// and the rays it sends on, drawn from its lobes. The twin of Tracer::microfacet_hit.
+void microfacet_hit(Material m, Hit hit, vec3 p, vec3 n, Branch b, Media beyond, bool sheet, uint seed, inout vec3 color,
+                    inout float rays, out Scatter s) {
+    float n1 = medium_ior(innermost(b.media));
+    float n2 = sheet ? m.transmission.w : medium_ior(innermost(beyond));
+    uint seed_d = hash_u32(seed + b.depth);
+    color += b.weight * shade_local(m, vec3(n1, n2, 0.0), p, n, hit.error, n, b.ray.dir, b.media, seed_d, b.weight, rays);
+    vec3 u = surface_sample_numbers(seed_d);
+    s.refracted_weight = vec3(0.0);
+    s.refracted_dir = b.ray.dir;
+    if (is_metal(m)) {
+        Scattered metal = sample_metal(m, n, -b.ray.dir, u);
+        s.reflected_dir = metal.dir;
+        s.reflected_weight = b.weight * metal.weight;
+        return;
+    }
+    // A thin sheet has no inside to bend into: it reflects and transmits as a smooth one.
+    Scattered mirrored, refracted;
+    sample_glass(m, sheet ? 0.0 : material_alpha(m), n, -b.ray.dir, n1, n2, u, mirrored, refracted);
+    s.reflected_dir = mirrored.dir;
+    s.reflected_weight = b.weight * mirrored.weight;
+    s.refracted_weight = b.weight * refracted.weight;
+    if (!sheet) s.refracted_dir = refracted.dir;
+}
+
 // The colour seen along `ray`. `seed` identifies the camera sample (pixel and grid sample), for
 // area light samples. Adds every ray traced (camera, shadow, reflected, refracted) to `rays`.
+// The twin of Tracer::trace.
 vec3 trace(Ray ray, uint seed, inout float rays) {
     vec3 color = vec3(0.0);
-    vec3 from = ray.origin;
-    vec3 weight = vec3(1.0);
-    uint depth = 0u;
-    Media media = no_media();
-    uint passes = 0u;
+    Branch b = Branch(ray, ray.origin, vec3(1.0), 0u, no_media());
+    uint passes = 0u;  // surfaces passed through on this path
     Branch pending[PENDING_SIZE];
     uint waiting = 0u;
     uint grid = DIRECTION_GRID_EYE;  // the camera ray's
     for (;;) {
         rays += 1.0;
         Hit hit;
-        bool found = closest_hit(ray, 0.0, grid, hit);
+        bool found = closest_hit(b.ray, 0.0, grid, hit);
         grid = NO_GRID;
-        if (SCENE_HAS_TRANSPARENCY && media.count > 0u) {
-            weight *= absorption_over(innermost(media), found ? length(ray.origin + hit.t * ray.dir - from) : INFINITY);
+        // Media absorb between surface points (not from the offset origin): the true thickness.
+        if (SCENE_HAS_TRANSPARENCY && b.media.count > 0u) {
+            b.weight *= absorption_over(innermost(b.media), found ? length(b.ray.origin + hit.t * b.ray.dir - b.from) : INFINITY);
         }
         bool goes_on = false;
         if (!found) {
-            color += weight * frame.background.rgb;
+            color += b.weight * frame.background.rgb;
         } else {
-            vec3 p = ray.origin + hit.t * ray.dir;
+            vec3 p = b.ray.origin + hit.t * b.ray.dir;
             vec3 n = hit.normal;
-            if (dot(n, ray.dir) > 0.0) n = -n;  // two-sided surfaces
+            if (dot(n, b.ray.dir) > 0.0) n = -n;  // two-sided surfaces
             uint mat = primitive_at(hit.primitive).material;
             Material m = material_at(mat);
             bool clear = SCENE_HAS_TRANSPARENCY && is_transparent(m);
             bool sheet = clear && is_thin_sheet(hit.primitive);
-            Media beyond = clear && !sheet ? cross_surface(media, mat) : media;  // the media past the surface
-            if (clear && !sheet && innermost(beyond) == innermost(media)) {
-                media = beyond;  // the surface does not show: go on through it
-                ray = Ray(past_surface(p, n, ray.dir, hit.error), ray.dir);
-                from = p;
+            Media beyond = clear && !sheet ? cross_surface(b.media, mat) : b.media;  // the media past the surface
+            if (clear && !sheet && innermost(beyond) == innermost(b.media)) {
+                // The same medium on both sides (a liquid's wall inside its glass): invisible.
+                b.media = beyond;
+                b.ray = Ray(past_surface(p, n, b.ray.dir, hit.error), b.ray.dir);
+                b.from = p;
                 goes_on = ++passes <= MAX_PASS_THROUGH;
             } else {
-                vec3 reflected_weight, reflected_dir;
-                vec3 refracted_weight = vec3(0.0);
-                vec3 refracted_dir = ray.dir;
-                if (SCENE_HAS_MICROFACET && m.model != MODEL_PHONG) {
-                    // A metal or a glass of microfacets (microfacet_material.glsl): its direct
-                    // light by the BRDF, and the rays it sends on, drawn from its lobes.
-                    float n1 = medium_ior(innermost(media));
-                    float n2 = sheet ? m.transmission.w : medium_ior(innermost(beyond));
-                    uint seed_d = hash_u32(seed + depth);
-                    color += weight * shade_local(m, vec3(n1, n2, 0.0), p, n, hit.error, n, ray.dir, media, seed_d, weight, rays);
-                    vec3 u = surface_sample_numbers(seed_d);
-                    if (is_metal(m)) {
-                        Scattered s = sample_metal(m, n, -ray.dir, u);
-                        reflected_dir = s.dir;
-                        reflected_weight = weight * s.weight;
-                    } else {
-                        Scattered mirrored, refracted;
-                        sample_glass(m, sheet ? 0.0 : material_alpha(m), n, -ray.dir, n1, n2, u, mirrored, refracted);
-                        reflected_dir = mirrored.dir;
-                        reflected_weight = weight * mirrored.weight;
-                        refracted_weight = weight * refracted.weight;
-                        if (!sheet) refracted_dir = refracted.dir;
-                    }
-                } else {
-                    Appearance look = appearance_at(m, hit, p, n);
-                    vec3 scale = weight * (1.0 - m.reflection);
-                    color += scale * shade_local(m, look.pigment, p, n, hit.error, look.normal, ray.dir, media, hash_u32(seed + depth), scale, rays);
-                    // Photon mapping: caustics and indirect light, the diffuse BRDF k_d C' / pi
-                    // times the irradiance the photons estimate.
-                    if (SCENE_HAS_PHOTONS && m.phong.y > 0.0)
-                        color += scale * (m.phong.y / MICROFACET_PI) * look.pigment * (vec3(1.0) - m.transmission.rgb) *
-                                 photon_irradiance(p, n);
-                    reflected_weight = weight * m.reflection;
-                    if (clear) {
-                        float n1 = medium_ior(innermost(media));
-                        float n2 = sheet ? m.transmission.w : medium_ior(innermost(beyond));
-                        float cos_i = -dot(ray.dir, n);
-                        float cos_t;
-                        float f = fresnel(cos_i, n1, n2, cos_t);
-                        vec3 passing = weight * (1.0 - m.reflection) * m.transmission.rgb;
-                        reflected_weight += passing * f;
-                        refracted_weight = passing * (1.0 - f);
-                        if (!sheet) refracted_dir = refraction(ray.dir, n, n1 / n2, cos_i, cos_t);
-                    }
-                    // A bump tilts the mirror direction; refraction follows the geometric surface.
-                    reflected_dir = bounce_direction(ray.dir, look.normal, n);
-                }
+                Scatter s;
+                if (SCENE_HAS_MICROFACET && m.model != MODEL_PHONG) microfacet_hit(m, hit, p, n, b, beyond, sheet, seed, color, rays, s);
+                else phong_hit(m, hit, p, n, b, beyond, clear, sheet, seed, color, rays, s);
                 // Past max_depth the children contribute black (POV-Ray's max_trace_level rule).
-                bool reflects = depth < frame.max_depth && max3(reflected_weight) >= MIN_WEIGHT;
-                bool refracts = depth < frame.max_depth && max3(refracted_weight) >= MIN_WEIGHT;
-                Branch reflected = Branch(Ray(offset_origin(p, n, hit.error), reflected_dir), p, reflected_weight, depth + 1u, media);
+                bool reflects = b.depth < frame.max_depth && max3(s.reflected_weight) >= MIN_WEIGHT;
+                bool refracts = b.depth < frame.max_depth && max3(s.refracted_weight) >= MIN_WEIGHT;
+                Branch reflected = Branch(Ray(offset_origin(p, n, hit.error), s.reflected_dir), p, s.reflected_weight, b.depth + 1u, b.media);
                 if (refracts) {
-                    Branch refracted = Branch(Ray(past_surface(p, n, refracted_dir, hit.error), refracted_dir), p, refracted_weight, depth + 1u, beyond);
-                    Branch next = refracted;
-                    if (reflects) {
-                        bool reflected_first = max3(reflected_weight) > max3(refracted_weight);
-                        next = reflected_first ? reflected : refracted;
-                        if (waiting < PENDING_SIZE) pending[waiting++] = reflected_first ? refracted : reflected;
-                    }
-                    ray = next.ray;
-                    from = p;
-                    weight = next.weight;
-                    depth = next.depth;
-                    media = next.media;
-                    goes_on = true;
+                    Branch refracted = Branch(Ray(past_surface(p, n, s.refracted_dir, hit.error), s.refracted_dir), p,
+                                              s.refracted_weight, b.depth + 1u, beyond);
+                    // The heavier goes on now, the lighter waits (dropped when the stack is full).
+                    bool reflected_first = reflects && max3(s.reflected_weight) > max3(s.refracted_weight);
+                    if (reflects && waiting < PENDING_SIZE) pending[waiting++] = reflected_first ? refracted : reflected;
+                    b = reflected_first ? reflected : refracted;
                 } else if (reflects) {
-                    ray = reflected.ray;
-                    from = p;
-                    weight = reflected.weight;
-                    depth = reflected.depth;
-                    goes_on = true;
+                    b = reflected;
                     // A camera ray's reflection in the flat mirror (see FrameParams::mirror_plane).
                     // The condition on the constant alone is one the host removes where it is false.
                     if (DIRECTION_GRIDS) {
-                        if (depth == 1u && hit.primitive == frame.mirror_plane) grid = DIRECTION_GRID_MIRROR;
+                        if (b.depth == 1u && hit.primitive == frame.mirror_plane) grid = DIRECTION_GRID_MIRROR;
                     }
                 }
+                goes_on = reflects || refracts;
             }
         }
         if (goes_on) continue;
         if (!SCENE_HAS_TRANSPARENCY || waiting == 0u) break;
-        Branch next = pending[--waiting];
-        ray = next.ray;
-        from = next.from;
-        weight = next.weight;
-        depth = next.depth;
-        media = next.media;
+        b = pending[--waiting];
         passes = 0u;
     }
     return color;
