@@ -7,10 +7,12 @@
 //     the GLSL struct and the GLSL function that reads one from a texel buffer
 //     (shaders/interface.glsl), so a member added here is at once on both sides;
 //   - LANCER_RESOURCES lists the descriptors: the host's set layout, pool, writes, buffers and
-//     memory budget (host/gpu/resources.*) and the shader's declarations (interface.glsl);
+//     memory budget (host/gpu/trace_resources.*, host/gpu/vulkan/) and the shader's declarations
+//     (interface.glsl);
 //   - LANCER_FEATURES lists the specialisation constants: the host's ShaderFeatures and
 //     the shader's constants.
-// Rows are vec4s or four 32-bit scalars, so std140, std430, a texel buffer's RGBA32 texels and
+// Shape types come from the shape registry (shapes.h).
+// Rows are vec4s, uvec4s or four 32-bit scalars, so std140, std430, a texel buffer's RGBA32 texels and
 // the C++ ABI all agree without padding tricks; tests/unit/layout_reflection_test.cpp checks it
 // against glslang's reflection and tests/render/interface_test.cpp reads every struct back
 // through the shader's readers.

@@ -119,7 +119,7 @@ bool blocks(uint i, Primitive p, Ray ray, float t_min, bool bounded, inout Neare
 // where BVH_HAS_ANALYTIC is false; without one, all of them) are sorted by family
 // (host/gpu/packing/scene_packing.cpp), and each family is tested in a loop of its own that calls its
 // intersection directly: lavapipe would otherwise run every family's code for every primitive
-// (`seed`'s rectangle cost its spheres' tests 14%).
+// (docs/performance.md).
 // Not through shape_intersect with a constant type: lavapipe inlines the whole switch at each
 // of the loops before it folds it, and took 0.4 s longer to create the pipeline.
 uint family_end(uint type) { return frame.family_end[type / 4u][type % 4u]; }
@@ -131,7 +131,7 @@ uint family_split(uint type) { return frame.family_split[type / 4u][type % 4u]; 
 // for five or more, around each of its two halves (<NAME>_SPLIT: [2 type] the members before
 // `family_split(type)`, [2 type + 1] the rest), rounded outward like the BVH's. A ray that
 // misses a box skips its members: lavapipe runs an `if`'s body for every SIMD lane whatever the
-// condition, and saves work only where a loop runs fewer times (`seed` 0.84x the time with both).
+// condition, and saves work only where a loop runs fewer times (docs/performance.md).
 bool enters_family_box(uint box, Ray ray, float limit) {
     return box_entry(frame.family_lo[box].xyz, frame.family_hi[box].xyz, ray.origin, safe_inverse(ray.dir), limit) != INFINITY;
 }
@@ -176,19 +176,19 @@ bool unbounded_hit(Ray ray, float t_min, bool any_hit, inout Nearest best) {
 
 // Where every shape of the scene is cheap to test, shadow rays take a lean path through the
 // primitives outside the BVH (lean_unbounded_hit). Scenes with Bezier patches or expression
-// surfaces keep the one path: lavapipe's code for their searches got 6-12% slower with a second
-// one (docs/performance.md).
+// surfaces keep the one path: lavapipe's code for their searches is slower beside a second one
+// (docs/performance.md).
 #define LANCER_COSTLY_BIT(NAME, name, Type, type, traits) | ((((traits) & SHAPE_CHEAP) != 0u) ? 0u : (1u << SHAPE_##NAME))
 const uint COSTLY_SHAPES = 0u LANCER_SHAPES(LANCER_COSTLY_BIT);
 const bool CHEAP_SHAPES = (SCENE_SHAPES & COSTLY_SHAPES) == 0u;
 
 // Shadow hints: a shadow ray first tests the primitive that blocked the last shadow ray to the
 // same light (dielectric.glsl's shadow_blockers), which saves the BVH traversal wherever it still
-// blocks (`many` 11% faster on lavapipe). Only with a BVH: without one, `seed` was 2-6% slower.
+// blocks. Only with a BVH: without one the extra test costs more than it saves (docs/performance.md).
 const bool SHADOW_HINTS = CHEAP_SHAPES && SCENE_HAS_BVH;
 
 // unbounded_hit for a shadow ray, with the hint (any primitive, or NO_PRIMITIVE) first and
-// without the nearest hit's bookkeeping (`seed` 5% faster on lavapipe).
+// without the nearest hit's bookkeeping.
 #define LANCER_LOOP_LIMIT best.t
 #define LANCER_ON_HIT                    \
     {                                    \
@@ -258,7 +258,7 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, uin
     if (!SCENE_HAS_BVH || frame.node_count == 0u) return best.prim != NO_PRIMITIVE;
     // Conditions on the constants alone: the host removes them where false. Where the host found
     // that every ray of the scene takes a grid (GRIDS_ONLY), the traversal below is dead code,
-    // which lavapipe would otherwise pay for in every call, taken or not (`many` 0.68x the time).
+    // which lavapipe would otherwise pay for in every call, taken or not.
     if (DIRECTION_GRIDS) {
         if (GRIDS_ONLY) {
             if (CHECK_GRID_CONTRACT && grid == NO_GRID) grid_contract_broken = true;
@@ -308,8 +308,8 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, uin
             float t_far = box_entry(lo_b, hi_b, ray.origin, inv_dir, limit);
             // The child whose centre comes first along the ray first, rather than the one whose
             // box the ray enters first: rays of neighbouring pixels then agree on the order, and
-            // a SIMD group's lanes stay on one path (`many` 3.5%, the teapot 2.5% faster on
-            // lavapipe). Which hit is nearest does not depend on the order (ties go by key).
+            // a SIMD group's lanes stay on one path. Which hit is nearest does not depend on the
+            // order (ties go by key).
             if (dot((lo_b + hi_b) - (lo_a + hi_a), ray.dir) < 0.0) {
                 uint c = near_child; near_child = far_child; far_child = c;
                 float f = t_near; t_near = t_far; t_far = f;

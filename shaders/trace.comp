@@ -245,8 +245,8 @@ bool loop_limit_reached() {
 // The position in the 8 x 8 workgroup of invocation i, in Z order: SIMD lanes take consecutive
 // invocations (lavapipe: 8 of them at 256 bits), and in Z order 8 consecutive ones are a 4 x 2
 // tile, not a row of 8. Rays of a compact tile take more alike paths through the BVH and the
-// patches' searches, so fewer lanes wait: `many` 7%, teapot 4%, torus 3% less CPU time on
-// lavapipe, `seed` 2% (A/B, docs/performance.md). A GPU's wider warps get 4 x 4 and 8 x 4 tiles.
+// patches' searches, so fewer lanes wait (docs/performance.md). A GPU's wider warps get 4 x 4
+// and 8 x 4 tiles.
 uvec2 z_order_position(uint i) {
     return uvec2((i & 1u) | ((i >> 1u) & 2u) | ((i >> 2u) & 4u), ((i >> 1u) & 1u) | ((i >> 2u) & 2u) | ((i >> 3u) & 4u));
 }

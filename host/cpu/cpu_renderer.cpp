@@ -152,7 +152,7 @@ FloatImage CpuRenderer::render_photons(const Scene& scene, const ProgressFn& pro
     std::vector<dvec3> sum(std::size_t(rs.width) * rs.height, dvec3(0.0));
     FloatImage image(rs.width, rs.height);
     for (int pass = first; pass < last; ++pass) {
-        cpu::PhotonPass shot = cpu::shoot_photons(tracer, pass, threads_);
+        cpu::StoredPhotons shot = cpu::shoot_photons(tracer, pass, threads_);
         const cpu::PhotonMaps maps(std::move(shot.caustic), std::move(shot.global),
                                    photon_radius(ps.caustic_radius, ps.alpha, pass),
                                    photon_radius(ps.global_radius, ps.alpha, pass));

@@ -74,7 +74,7 @@ public:
         for (Emitter& e : emitters_) e.cdf /= total;
     }
 
-    void shoot(int pass, std::uint32_t first, std::uint32_t last, PhotonPass& out) const {
+    void shoot(int pass, std::uint32_t first, std::uint32_t last, StoredPhotons& out) const {
         const PhotonSettings& settings = *scene_.photons;
         for (std::uint32_t i = first; i < last; ++i) {
             if (total_ <= 0.0) return;
@@ -115,7 +115,7 @@ public:
     }
 
 private:
-    void store(const Photon& photon, int bounces, bool specular_only, PhotonPass& out) const {
+    void store(const Photon& photon, int bounces, bool specular_only, StoredPhotons& out) const {
         if (bounces == 0) {
             if (keep_direct_) out.direct.push_back(photon);
         } else {
@@ -123,7 +123,7 @@ private:
         }
     }
 
-    void trace(Ray ray, dvec3 power, PhotonRandom& rng, PhotonPass& out) const {
+    void trace(Ray ray, dvec3 power, PhotonRandom& rng, StoredPhotons& out) const {
         const int max_bounces = scene_.photons->max_bounces;
         Media media;
         dvec3 from = ray.origin;
@@ -227,12 +227,12 @@ PhotonRandom::PhotonRandom(std::uint32_t seed, std::uint32_t pass, std::uint32_t
 
 double PhotonRandom::next() { return unit_interval(hash_u32(base_ ^ hash_u32(k_++))); }
 
-PhotonPass shoot_photons(const Tracer& tracer, int pass, unsigned threads, bool keep_direct) {
+StoredPhotons shoot_photons(const Tracer& tracer, int pass, unsigned threads, bool keep_direct) {
     const PhotonShooter shooter(tracer, keep_direct);
     const auto count = static_cast<std::uint32_t>(tracer.scene().photons->count);
     threads = std::max(1u, std::min<unsigned>(threads, count));
     // Contiguous ranges of photons per worker, joined in order: the same maps on any number of threads.
-    std::vector<PhotonPass> parts(threads);
+    std::vector<StoredPhotons> parts(threads);
     std::vector<std::thread> pool;
     auto run = [&](unsigned t) {
         shooter.shoot(pass, std::uint32_t(std::uint64_t(count) * t / threads),
@@ -248,7 +248,7 @@ PhotonPass shoot_photons(const Tracer& tracer, int pass, unsigned threads, bool 
     run(0);
     for (unsigned t = started; t < threads; ++t) run(t);
     for (auto& t : pool) t.join();
-    PhotonPass out = std::move(parts[0]);
+    StoredPhotons out = std::move(parts[0]);
     for (unsigned t = 1; t < threads; ++t) {
         out.caustic.insert(out.caustic.end(), parts[t].caustic.begin(), parts[t].caustic.end());
         out.global.insert(out.global.end(), parts[t].global.begin(), parts[t].global.end());

@@ -12,7 +12,8 @@
 
 namespace lancer::cpu {
 
-struct PhotonPass {
+// The photons one pass stored, by map.
+struct StoredPhotons {
     std::vector<Photon> caustic;  // arrived through specular and glossy surfaces only
     std::vector<Photon> global;   // arrived after at least one diffuse bounce
     std::vector<Photon> direct;   // straight from a light (kept only when asked for: tests)
@@ -21,7 +22,7 @@ struct PhotonPass {
 // Shoots the scene's PhotonSettings::count photons of pass `pass` (scene.photons must be set,
 // and every light must have a power: check_photon_lights). `threads` workers; the result does
 // not depend on their number.
-PhotonPass shoot_photons(const Tracer& tracer, int pass, unsigned threads, bool keep_direct = false);
+StoredPhotons shoot_photons(const Tracer& tracer, int pass, unsigned threads, bool keep_direct = false);
 
 // The numbers photon i of a pass draws (docs/scene-format.md): base = h(h(h(seed) ^ pass) ^ i),
 // then number k is the top 24 bits of h(base ^ h(k)) over 2^24, k = 0, 1, 2, ...

@@ -70,6 +70,18 @@ std::shared_ptr<gpu::Context> make_context(const gpu::ContextOptions& options) {
 
 }  // namespace
 
+std::vector<gpu::BufferNeed> gpu::render_buffer_needs(const PackedScene& packed, std::uint64_t output_bytes,
+                                                      std::uint64_t selection_pixels) {
+    std::vector<gpu::BufferNeed> needs = gpu::scene_buffer_needs(packed);
+    const std::uint64_t band_pixels = output_bytes / sizeof(gpu::vec4);
+    needs.push_back(gpu::resource_need(gpu::BINDING_OUTPUT, band_pixels));
+    needs.push_back(gpu::resource_need(gpu::BINDING_REFINE, band_pixels));
+    auto add = [&](const std::vector<gpu::BufferNeed>& more) { needs.insert(needs.end(), more.begin(), more.end()); };
+    if (packed.features.has_photons) add(gpu::PhotonPass::buffer_needs(gpu::photon_capacity(packed.photon_count)));
+    if (selection_pixels) add(gpu::RefineSelection::buffer_needs(selection_pixels));
+    return needs;
+}
+
 GpuRenderer::GpuRenderer(const gpu::ContextOptions& options, Acceleration acceleration)
     : context_(make_context(options)),
       layout_(std::make_shared<gpu::TraceLayout>(*context_)),
@@ -158,11 +170,7 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
         ++scenes_packed_;
     }
     const gpu::PackedScene& packed = fresh ? *fresh : *packed_;
-    std::vector<gpu::BufferNeed> needs = gpu::buffer_needs(packed, output_bytes);
-    if (selection_pixels_) {
-        const std::vector<gpu::BufferNeed> selecting = gpu::RefineSelection::buffer_needs(selection_pixels_);
-        needs.insert(needs.end(), selecting.begin(), selecting.end());
-    }
+    std::vector<gpu::BufferNeed> needs = gpu::render_buffer_needs(packed, output_bytes, selection_pixels_);
     gpu::check_memory_budget(needs, limits);
     std::uint64_t buffer_bytes = 0;
     for (const gpu::BufferNeed& need : needs) buffer_bytes += need.bytes;

@@ -24,6 +24,15 @@
 
 namespace lancer {
 
+namespace gpu {
+// Every buffer a render allocates, as each pass states them: the scene's arrays, the output band
+// (`output_bytes`) and its list of pixels to refine (at most the band's pixels), photon mapping's
+// buffers at the size a pass starts with (a pass that stores more grows them, checked there), and
+// adaptive anti-aliasing's picture on the device (`selection_pixels`, 0: none).
+std::vector<BufferNeed> render_buffer_needs(const PackedScene& packed, std::uint64_t output_bytes,
+                                            std::uint64_t selection_pixels = 0);
+}  // namespace gpu
+
 class GpuRenderer final : public Renderer {
 public:
     explicit GpuRenderer(const gpu::ContextOptions& options, Acceleration acceleration = Acceleration::Bvh);

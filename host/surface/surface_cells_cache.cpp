@@ -24,27 +24,32 @@ void append_bits(std::string& key, const T& value) {
     key.append(bytes, sizeof(T));
 }
 
-// Everything the cells depend on, as bytes. The nodes' columns are left out: they only place
-// error messages, and failures are not cached.
+// Everything the cells depend on, as bytes. Each struct is taken apart by a structured binding,
+// which stops compiling when a field is added: a new field must join the key (or be named here
+// as one the cells do not depend on), never give stale hits. The nodes' columns only place error
+// messages, the surface's derived slot is the renderers', and failures are not cached.
 std::string cells_key(const ParametricSurface& s, const CellOptions& options) {
     std::string key;
-    for (const Expr* e : {&s.x, &s.y, &s.z}) {
+    const auto& [x, y, z, u0, u1, v0, v1, to_world, derived] = s;
+    for (const Expr* e : {&x, &y, &z}) {
         append_bits(key, e->nodes.size());
         for (const Node& n : e->nodes) {
-            append_bits(key, n.op);
-            append_bits(key, n.a);
-            append_bits(key, n.b);
-            append_bits(key, n.value);
+            const auto& [op, a, b, value, column] = n;
+            append_bits(key, op);
+            append_bits(key, a);
+            append_bits(key, b);
+            append_bits(key, value);
         }
     }
-    for (double d : {s.u0, s.u1, s.v0, s.v1}) append_bits(key, d);
-    const double* m = glm::value_ptr(s.to_world);
+    for (double d : {u0, u1, v0, v1}) append_bits(key, d);
+    const double* m = glm::value_ptr(to_world);
     for (int i = 0; i < 16; ++i) append_bits(key, m[i]);
-    append_bits(key, options.initial_grid);
-    append_bits(key, options.max_size_fraction);
-    append_bits(key, options.min_regular_fraction);
-    append_bits(key, options.max_depth);
-    append_bits(key, options.max_cells);
+    const auto& [initial_grid, max_size_fraction, min_regular_fraction, max_depth, max_cells] = options;
+    append_bits(key, initial_grid);
+    append_bits(key, max_size_fraction);
+    append_bits(key, min_regular_fraction);
+    append_bits(key, max_depth);
+    append_bits(key, max_cells);
     return key;
 }
 

@@ -32,6 +32,29 @@ TEST(Cli, RendersTheSeedSceneWithAFinalTimingLine) {
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
 }
 
+// As a packager installs it: `cmake --install build --prefix P` gives P/bin/lancer and the
+// scenes in P/share/lancer/scenes; run from another directory, far from the source tree, it
+// renders an installed scene (its patch file found beside it) to the same bytes as build/lancer.
+TEST(Cli, TheInstalledLancerRendersFromAnyDirectory) {
+    const std::string prefix = test::fresh_dir("cli-install");
+    const std::string log = prefix + ".log";
+    ASSERT_EQ(std::system(("cmake --install " + std::string(LANCER_BUILD_DIR) + " --prefix " + prefix + " >" + log + " 2>&1").c_str()), 0)
+        << test::read_file(log);
+    ASSERT_TRUE(test::file_exists(prefix + "/bin/lancer"));
+    ASSERT_TRUE(test::file_exists(prefix + "/share/doc/lancer/README.md"));
+    for (const char* name : {"seed", "teapot"}) {
+        const std::string scene = prefix + "/share/lancer/scenes/" + name + ".toml";
+        ASSERT_TRUE(test::file_exists(scene)) << scene;
+        const std::string installed = prefix + "/" + name + "-installed.png", built = out_path(std::string(name) + "-built");
+        const std::string run = "cd / && LANCER_VALIDATION=1 " + prefix + "/bin/lancer render " + scene + kSmall + "-o " + installed +
+                                " >" + log + " 2>&1 </dev/null";
+        ASSERT_EQ(std::system(run.c_str()), 0) << test::read_file(log);
+        auto r = test::run_lancer("render " + test::source_path(std::string("scenes/") + name + ".toml") + kSmall + "-o " + built);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_EQ(read_png(installed).bytes, read_png(built).bytes) << name;
+    }
+}
+
 // Any name the file system accepts works: the temporary file beside it (".NAME.XXXXXX") is
 // shortened to fit. A name it does not accept is refused before anything is rendered.
 TEST(Cli, OutputNamesUpToTheFileSystemsLimit) {

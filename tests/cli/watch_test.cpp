@@ -95,9 +95,9 @@ protected:
     void paint_the_background_magenta() {
         fs::path trace = dir / "shaders/trace.comp";
         std::string source = test::read_file(trace);
-        const std::string miss = "color += weight * frame.background.rgb;";
+        const std::string miss = "color += b.weight * frame.background.rgb;";
         ASSERT_NE(source.find(miss), std::string::npos) << "the test edits this line of trace.comp";
-        source.replace(source.find(miss), miss.size(), "color += weight * vec3(1.0, 0.0, 1.0);");
+        source.replace(source.find(miss), miss.size(), "color += b.weight * vec3(1.0, 0.0, 1.0);");
         test::write_file(trace, source);
     }
     static void expect_magenta_corner(const Rgb8Image& img) {

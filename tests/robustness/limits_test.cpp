@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "gpu/vulkan/memory_budget.hpp"
+#include "gpu/gpu_renderer.hpp"
 #include "gpu/packing/scene_packing.hpp"
+#include "gpu/passes/photon_pass.hpp"
 #include "gpu/vulkan/vk_check.hpp"
 #include "scene/limits.hpp"
 #include "scene/load_scene.hpp"
@@ -94,7 +96,7 @@ TEST(GpuMemoryBudget, NamesTheBufferTheNeedAndTheLimit) {
     Scene scene = test::scene_from_text(kHead + "[[object]]\ntype = \"bezier\"\nsubdivision = 4\nfile = \"" +
                                         test::source_path("scenes/teapot.bpt") + "\"\n");
     gpu::PackedScene packed = gpu::pack_scene(scene);
-    auto needs = gpu::buffer_needs(packed, 1 << 20);
+    auto needs = gpu::render_buffer_needs(packed, 1 << 20);
     auto leaves = std::find_if(needs.begin(), needs.end(), [](const auto& n) { return n.what == "Bezier patch leaves"; });
     ASSERT_NE(leaves, needs.end());
     EXPECT_EQ(leaves->count, 32u * 256u);
@@ -135,12 +137,13 @@ TEST(GpuMemoryBudget, NamesTheBufferTheNeedAndTheLimit) {
 
 // The budget is what the packer made: one entry per scene array of the interface, its size the
 // packed array's, then the output band and the list of pixels to refine (adaptive anti-aliasing),
-// then (photon-mapped scenes) photon mapping's three working buffers.
+// then (photon-mapped scenes) every buffer of the photon pass, as the pass allocates them.
 TEST(GpuMemoryBudget, IsThePackedArraysSizes) {
     for (const std::string& path : test::scene_files()) {
         gpu::PackedScene packed = gpu::pack_scene(load_scene(path), {Acceleration::BvhAlways});
-        auto needs = gpu::buffer_needs(packed, 64);
-        const std::size_t photon_buffers = packed.features.has_photons ? 3 : 0;
+        auto needs = gpu::render_buffer_needs(packed, 64);
+        const std::size_t photon_buffers =
+            packed.features.has_photons ? gpu::PhotonPass::buffer_needs(gpu::photon_capacity(packed.photon_count)).size() : 0;
         ASSERT_EQ(needs.size(), gpu::kSceneArrayCount + 2 + photon_buffers) << path;
         for (std::size_t a = 0; a < gpu::kSceneArrayCount; ++a) {
             EXPECT_EQ(needs[a].what, gpu::kSceneArrays[a].what);
@@ -151,6 +154,24 @@ TEST(GpuMemoryBudget, IsThePackedArraysSizes) {
         EXPECT_EQ(needs[gpu::kSceneArrayCount + 1].bytes, 16u);
         for (std::size_t b = 0; b < photon_buffers; ++b)
             EXPECT_GT(needs[gpu::kSceneArrayCount + 2 + b].bytes, 0u) << path << ": " << needs[gpu::kSceneArrayCount + 2 + b].what;
+    }
+}
+
+// The photon pass's copies for the tracer's gather are texel buffers: a capacity beyond the
+// device's maxTexelBufferElements for them is refused, naming them, though every storage buffer
+// would hold it.
+TEST(GpuMemoryBudget, PhotonGatherCopiesAreCheckedAsTexelBuffers) {
+    const std::vector<gpu::BufferNeed> needs = gpu::PhotonPass::buffer_needs(1u << 20);
+    const auto gather = std::find_if(needs.begin(), needs.end(), [](const auto& n) { return n.binding == gpu::BINDING_GATHER_PHOTONS; });
+    ASSERT_NE(gather, needs.end());
+    EXPECT_EQ(gather->count, 1u << 20);
+    const gpu::DeviceMemoryLimits few_texels{"small GPU", (1u << 20) * gpu::Photon_ROWS - 1, 1ull << 40, 1ull << 40};
+    EXPECT_FALSE(gpu::fits(*gather, few_texels));
+    try {
+        gpu::check_memory_budget(needs, few_texels);
+        FAIL() << "accepted";
+    } catch (const UserError& e) {
+        EXPECT_NE(std::string(e.what()).find("photons to gather"), std::string::npos) << e.what();
     }
 }
 

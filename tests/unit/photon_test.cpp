@@ -68,7 +68,7 @@ TEST(PhotonMap, IrradianceUnderAPointLightConvergesToTheInverseSquareLaw) {
     for (int photons : {20000, 80000, 320000, 1280000}) {
         Scene scene = floor_under_light(photons);
         cpu::Tracer tracer(scene);
-        cpu::PhotonPass pass = cpu::shoot_photons(tracer, 0, 2, /*keep_direct=*/true);
+        cpu::StoredPhotons pass = cpu::shoot_photons(tracer, 0, 2, /*keep_direct=*/true);
         EXPECT_TRUE(pass.caustic.empty());
         EXPECT_TRUE(pass.global.empty());  // nothing to bounce back to the floor
         // Half the directions reach the floor, with all their power.
@@ -95,10 +95,10 @@ TEST(PhotonMap, IrradianceUnderAPointLightConvergesToTheInverseSquareLaw) {
 TEST(PhotonMap, SameSeedSamePhotonsOnAnyNumberOfThreads) {
     Scene scene = floor_under_light(3000);
     cpu::Tracer tracer(scene);
-    cpu::PhotonPass a = cpu::shoot_photons(tracer, 2, 1, true), b = cpu::shoot_photons(tracer, 2, 5, true);
+    cpu::StoredPhotons a = cpu::shoot_photons(tracer, 2, 1, true), b = cpu::shoot_photons(tracer, 2, 5, true);
     ASSERT_EQ(a.direct.size(), b.direct.size());
     for (std::size_t i = 0; i < a.direct.size(); ++i) EXPECT_EQ(a.direct[i].position, b.direct[i].position);
-    cpu::PhotonPass c = cpu::shoot_photons(tracer, 3, 1, true);  // another pass: other photons
+    cpu::StoredPhotons c = cpu::shoot_photons(tracer, 3, 1, true);  // another pass: other photons
     EXPECT_NE(a.direct[0].position, c.direct[0].position);
 }
 
@@ -163,7 +163,7 @@ TEST(PhotonMap, CausticUnderAGlassSphereIsWhereGeometricOpticsFocusesIt) {
         power = 1000
         inner_angle = )" + std::to_string(outer * 180.0 / kPi) + "\nouter_angle = " + std::to_string(outer * 180.0 / kPi) + "\n");
     cpu::Tracer tracer(scene);
-    cpu::PhotonPass pass = cpu::shoot_photons(tracer, 0, 2);
+    cpu::StoredPhotons pass = cpu::shoot_photons(tracer, 0, 2);
 
     // Geometric optics: rays uniform in solid angle (weight sin theta), each landing at radius
     // |x| with the power Fresnel lets through twice. Rays near the ball's rim leave almost

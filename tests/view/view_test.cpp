@@ -443,10 +443,10 @@ TEST_F(View, ShaderEditsReloadAndCompileErrorsKeepTheLastGoodPicture) {
     start({"--shaders", "shaders"});
     fs::path trace = dir / "shaders/trace.comp";
     std::string source = test::read_file(trace);
-    const std::string miss = "color += weight * frame.background.rgb;";
+    const std::string miss = "color += b.weight * frame.background.rgb;";
     ASSERT_NE(source.find(miss), std::string::npos) << "the test edits this line of trace.comp";
     std::string magenta = source;
-    magenta.replace(magenta.find(miss), miss.size(), "color += weight * vec3(1.0, 0.0, 1.0);");
+    magenta.replace(magenta.find(miss), miss.size(), "color += b.weight * vec3(1.0, 0.0, 1.0);");
     int refined = test::count_occurrences(log(), "view: refined");
     test::write_file(trace, magenta);
     ASSERT_TRUE(wait_for_count("reload: shaders compiled", 1)) << log();

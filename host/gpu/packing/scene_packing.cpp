@@ -12,14 +12,6 @@
 
 namespace lancer::gpu {
 
-std::uint32_t photon_capacity(std::uint32_t count) {
-    return static_cast<std::uint32_t>(std::min<std::uint64_t>(2ull * count + 1024, 1u << 26));
-}
-
-std::uint32_t photon_buckets(std::uint32_t capacity) {
-    return std::clamp(std::bit_ceil(capacity / 8), 1024u, 1u << 20);
-}
-
 PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     if (options.limits) check_buffer_need(array_need(SceneArray::PATCHES, bezier_leaf_count(world)), *options.limits);
     PackedScene packed;
@@ -104,22 +96,9 @@ std::span<const std::byte> PackedScene::bytes(SceneArray array) const {
     return {};
 }
 
-std::vector<BufferNeed> buffer_needs(const PackedScene& packed, std::uint64_t output_bytes) {
+std::vector<BufferNeed> scene_buffer_needs(const PackedScene& packed) {
     std::vector<BufferNeed> needs;
-    for (std::size_t a = 0; a < kSceneArrayCount; ++a)
-        needs.push_back(array_need(SceneArray(a), packed.count(SceneArray(a))));
-    needs.push_back({"output rows", RESOURCE_OUTPUT, output_bytes / sizeof(vec4), output_bytes});
-    // A band of refined pixels (adaptive anti-aliasing) lists at most the band's pixels.
-    needs.push_back({"pixels to refine", RESOURCE_OUTPUT, output_bytes / sizeof(vec4), output_bytes / sizeof(vec4) * sizeof(uint)});
-    if (packed.features.has_photons) {
-        // Photon mapping's buffers at the size a pass starts with (gpu/passes/photon_pass.cpp); a pass
-        // that stores more grows them and is checked again there.
-        const std::uint64_t photons = photon_capacity(packed.photon_count);
-        needs.push_back({"photons", RESOURCE_OUTPUT, photons, photons * sizeof(Photon)});
-        needs.push_back({"photons by grid bucket", RESOURCE_OUTPUT, photons, photons * sizeof(Photon)});
-        const std::uint64_t buckets = 2ull * photon_buckets(photons);
-        needs.push_back({"grid buckets", RESOURCE_OUTPUT, 2 * buckets + 1, (2 * buckets + 1) * sizeof(uint)});
-    }
+    for (std::size_t a = 0; a < kSceneArrayCount; ++a) needs.push_back(array_need(SceneArray(a), packed.count(SceneArray(a))));
     return needs;
 }
 

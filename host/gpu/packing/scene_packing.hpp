@@ -57,15 +57,7 @@ struct PackOptions {
 PackedScene pack_scene(const Scene& scene, const PackOptions& options = {});
 FrameParams pack_frame(const Scene& scene, const PackedScene& packed);
 
-// What the packed scene needs on the device, one entry per array, and the output band.
-std::vector<BufferNeed> buffer_needs(const PackedScene& packed, std::uint64_t output_bytes);
-
-// Photon mapping on the GPU: the photons a pass's buffers hold at first (a pass that stores more
-// grows them), and the buckets per map of the hashed grid for a capacity: a power of 2 near an
-// eighth of it (photons crowd into few cells; on lavapipe, a bucket per photon made the grid
-// build of the Cornell box a third of its photon pass, measured, for no faster gather), at most
-// 2^20 (photon_grid.comp scans the block totals in one invocation, within lavapipe's loop limit).
-std::uint32_t photon_capacity(std::uint32_t count);
-std::uint32_t photon_buckets(std::uint32_t capacity);
+// What the packed scene's arrays need on the device, one entry per array.
+std::vector<BufferNeed> scene_buffer_needs(const PackedScene& packed);
 
 }  // namespace lancer::gpu

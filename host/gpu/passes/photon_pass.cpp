@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "gpu/packing/scene_packing.hpp"
 #include "gpu/vulkan/submit.hpp"
 #include "gpu/vulkan/vk_check.hpp"
 
@@ -22,6 +21,27 @@ std::uint32_t groups(std::uint64_t invocations) {
 }
 
 }  // namespace
+
+std::uint32_t photon_capacity(std::uint32_t count) {
+    return static_cast<std::uint32_t>(std::min<std::uint64_t>(2ull * count + 1024, 1u << 26));
+}
+
+std::uint32_t photon_buckets(std::uint32_t capacity) {
+    return std::clamp(std::bit_ceil(capacity / 8), 1024u, 1u << 20);
+}
+
+std::vector<BufferNeed> PhotonPass::buffer_needs(std::uint32_t capacity) {
+    const std::uint64_t buckets = 2ull * photon_buckets(capacity);  // the caustic map's, then the global map's
+    return {resource_need(BINDING_PHOTON_PARAMS, 1),
+            resource_need(BINDING_PHOTONS, capacity),
+            resource_need(BINDING_PHOTONS_SORTED, capacity),
+            resource_need(BINDING_PHOTON_COUNTER, 1),
+            resource_need(BINDING_CELL_COUNT, buckets),
+            resource_need(BINDING_CELL_START, buckets + 1),
+            resource_need(BINDING_BLOCK_SUMS, groups(buckets) + 1),
+            resource_need(BINDING_GATHER_PHOTONS, capacity),
+            resource_need(BINDING_GATHER_STARTS, buckets + 1)};
+}
 
 PhotonPass::PhotonPass(const Context& context, const TraceLayout& layout)
     : context_(context), layout_(layout), submission_(context, "photon pass") {}
@@ -73,12 +93,13 @@ std::uint32_t PhotonPass::run(const Scene& scene, int pass, const ShaderFeatures
         std::uint32_t stored = submit(p, features, resources, progress, done);
         if (stored <= capacity_) return stored;
         // Too many for the buffers: make room for them (and a margin) and shoot the same photons again.
-        std::uint64_t wanted = std::uint64_t(stored) + stored / 4;
-        std::uint64_t most = context_.limits().maxStorageBufferRange / sizeof(Photon);
-        if (wanted > most)
-            throw UserError(fmt::format("a photon pass stored {} photons, more than this device holds in one buffer "
-                                        "({}); lower [photons] count",
-                                        stored, most));
+        const std::uint64_t wanted = std::min<std::uint64_t>(std::uint64_t(stored) + stored / 4, UINT32_MAX);
+        const DeviceMemoryLimits limits = buffer_memory_limits(context_);
+        for (const BufferNeed& need : buffer_needs(static_cast<std::uint32_t>(wanted)))
+            if (!fits(need, limits))
+                throw UserError(fmt::format("a photon pass stored {} photons, more than this device holds in one buffer "
+                                            "of {}; lower [photons] count",
+                                            stored, need.what));
         capacity_ = static_cast<std::uint32_t>(wanted);
     }
 }
@@ -86,13 +107,9 @@ std::uint32_t PhotonPass::run(const Scene& scene, int pass, const ShaderFeatures
 std::uint32_t PhotonPass::submit(const PhotonParams& p, const ShaderFeatures& features, TraceResources& resources,
                                  const ProgressFn& progress, double done) {
     const std::uint64_t buckets = 2ull * p.table_size;
-    resources.working(BINDING_PHOTON_PARAMS, sizeof(PhotonParams)).write(&p, sizeof(p));
-    resources.working(BINDING_PHOTONS, std::size_t(p.capacity) * sizeof(Photon));
-    resources.working(BINDING_PHOTONS_SORTED, std::size_t(p.capacity) * sizeof(Photon));
-    resources.working(BINDING_CELL_COUNT, buckets * sizeof(uint));
-    resources.working(BINDING_CELL_START, (buckets + 1) * sizeof(uint));
-    resources.working(BINDING_BLOCK_SUMS, (groups(buckets) + 1) * sizeof(uint));
-    const Buffer& counter = resources.working(BINDING_PHOTON_COUNTER, sizeof(uint));
+    for (const BufferNeed& need : buffer_needs(p.capacity)) resources.working(need.binding, need.bytes);
+    resources.working(BINDING_PHOTON_PARAMS, 0).write(&p, sizeof(p));
+    const Buffer& counter = resources.working(BINDING_PHOTON_COUNTER, 0);
     const uint zero = 0;
     counter.write(&zero, sizeof(zero));
 
@@ -121,8 +138,8 @@ std::uint32_t PhotonPass::submit(const PhotonParams& p, const ShaderFeatures& fe
         const Buffer& sorted = resources.working(BINDING_PHOTONS_SORTED, 0);
         const Buffer& starts = resources.working(BINDING_CELL_START, 0);
         const std::size_t photon_bytes = std::size_t(stored) * sizeof(Photon), start_bytes = (buckets + 1) * sizeof(uint);
-        resources.working(BINDING_GATHER_PHOTONS, photon_bytes).write(sorted.data(), photon_bytes);
-        resources.working(BINDING_GATHER_STARTS, start_bytes).write(starts.data(), start_bytes);
+        resources.working(BINDING_GATHER_PHOTONS, 0).write(sorted.data(), photon_bytes);
+        resources.working(BINDING_GATHER_STARTS, 0).write(starts.data(), start_bytes);
     }
     return stored;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gpu/vulkan/context.hpp"
+#include "gpu/vulkan/memory_budget.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/vulkan/pipeline.hpp"
 #include "gpu/vulkan/submit.hpp"
@@ -18,6 +19,14 @@
 #include "scene/scene.hpp"
 
 namespace lancer::gpu {
+
+// The photons a pass's buffers hold at first (a pass that stores more grows them), and the
+// buckets per map of the hashed grid for a capacity: a power of 2 near an eighth of it (photons
+// crowd into few cells; on lavapipe, a bucket per photon made the grid build of the Cornell box
+// a third of its photon pass, measured, for no faster gather), at most 2^20 (photon_grid.comp
+// scans the block totals in one invocation).
+std::uint32_t photon_capacity(std::uint32_t count);
+std::uint32_t photon_buckets(std::uint32_t capacity);
 
 class PhotonPass {
 public:
@@ -39,6 +48,10 @@ public:
 
     // The parameters of pass `pass` (radii, power quantum, grid size) for a given capacity.
     static PhotonParams params(const Scene& scene, int pass, std::uint32_t capacity, const std::vector<Emitter>& emitters);
+
+    // The buffers of a pass whose photon buffers hold `capacity` photons: what a pass allocates
+    // and what the memory budget counts, the gather's copies included.
+    static std::vector<BufferNeed> buffer_needs(std::uint32_t capacity);
 
 private:
     ComputePipeline& pipeline(bool grid, const ShaderFeatures& features);

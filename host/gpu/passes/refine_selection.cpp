@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 #include "gpu/vulkan/submit.hpp"
 #include "gpu/vulkan/vk_check.hpp"
@@ -26,37 +27,31 @@ RefineSelection::RefineSelection(const Context& context, const TraceLayout& layo
 RefineSelection::~RefineSelection() { vkDeviceWaitIdle(context_.device()); }
 
 std::vector<BufferNeed> RefineSelection::buffer_needs(std::uint64_t pixels) {
-    const std::uint64_t blocks = blocks_of(pixels) + 1;
-    return {{"adaptive picture", RESOURCE_OUTPUT, pixels, pixels * sizeof(vec4)},
-            {"adaptive picture's sRGB codes", RESOURCE_OUTPUT, pixels, pixels * sizeof(uint)},
-            {"refinement flags", RESOURCE_OUTPUT, pixels, pixels * sizeof(uint)},
-            {"pixels to refine", RESOURCE_OUTPUT, pixels, pixels * sizeof(uint)},
-            {"prefix sum block totals", RESOURCE_OUTPUT, blocks, blocks * sizeof(uint)},
-            {"sRGB level starts", RESOURCE_UINT, 256, 256 * sizeof(uint)},
-            {"colour difference floors", RESOURCE_UINT, 256 * 256, 256 * 256 * sizeof(uint)}};
+    return {resource_need(BINDING_PICTURE, pixels),
+            resource_need(BINDING_PICTURE_CODES, pixels),
+            resource_need(BINDING_REFINE_FLAGS, pixels),
+            resource_need(BINDING_REFINE, pixels),
+            resource_need(BINDING_BLOCK_SUMS, blocks_of(pixels) + 1),
+            resource_need(BINDING_SRGB_LEVELS, 256),
+            resource_need(BINDING_DIFFERENCE_FLOORS, 256 * 256)};
 }
 
 bool RefineSelection::fits(std::uint64_t pixels, const Context& context) {
     if (blocks_of(pixels) > context.limits().maxComputeWorkGroupCount[0]) return false;
     const DeviceMemoryLimits limits = buffer_memory_limits(context);
-    for (const BufferNeed& need : buffer_needs(pixels)) {
-        const std::size_t texel = texel_bytes(need.kind);
-        if (texel ? need.count > limits.max_texel_elements : need.bytes > limits.max_storage_bytes) return false;
-    }
-    return true;
+    const std::vector<BufferNeed> needs = buffer_needs(pixels);
+    return std::all_of(needs.begin(), needs.end(), [&](const BufferNeed& need) { return gpu::fits(need, limits); });
 }
 
 void RefineSelection::start(const FloatImage& first, TraceResources& resources) {
     width_ = static_cast<std::uint32_t>(first.width);
     height_ = static_cast<std::uint32_t>(first.height);
     const std::size_t pixels = first.pixels.size();
-    resources.working(BINDING_PICTURE, pixels * sizeof(vec4)).write(first.pixels.data(), pixels * sizeof(vec4));
-    resources.working(BINDING_PICTURE_CODES, pixels * sizeof(uint));
-    resources.working(BINDING_REFINE_FLAGS, pixels * sizeof(uint));
-    resources.working(BINDING_REFINE, pixels * sizeof(uint));
-    resources.working(BINDING_BLOCK_SUMS, (blocks_of(pixels) + 1) * sizeof(uint));
+    for (const BufferNeed& need : buffer_needs(pixels)) resources.working(need.binding, need.bytes);
+    resources.working(BINDING_PICTURE, 0).write(first.pixels.data(), pixels * sizeof(vec4));
     const auto& levels = srgb8_level_starts();
-    resources.working(BINDING_SRGB_LEVELS, sizeof(levels)).write(levels.data(), sizeof(levels));
+    static_assert(sizeof(levels) == 256 * sizeof(uint));
+    resources.working(BINDING_SRGB_LEVELS, 0).write(levels.data(), sizeof(levels));
     encoded_ = false;
     chosen_ = 0;
 }
@@ -64,7 +59,9 @@ void RefineSelection::start(const FloatImage& first, TraceResources& resources) 
 void RefineSelection::write_tables(double threshold, TraceResources& resources) {
     if (tables_for_ && *tables_for_ == threshold) return;
     const std::vector<std::uint32_t> floors = blue_difference_floors(threshold);
-    resources.working(BINDING_DIFFERENCE_FLOORS, floors.size() * sizeof(uint)).write(floors.data(), floors.size() * sizeof(uint));
+    if (floors.size() * sizeof(uint) > resource_need(BINDING_DIFFERENCE_FLOORS, 256 * 256).bytes)
+        throw std::logic_error("the colour difference floors outgrew their buffer need");
+    resources.working(BINDING_DIFFERENCE_FLOORS, 0).write(floors.data(), floors.size() * sizeof(uint));
     tables_for_ = threshold;
 }
 

@@ -6,9 +6,16 @@
 
 namespace lancer::gpu {
 
-BufferNeed array_need(SceneArray array, std::uint64_t count) {
-    const ResourceSpec& s = spec(array);
-    return {s.what, s.kind, count, count * s.element_bytes};
+BufferNeed array_need(SceneArray array, std::uint64_t count) { return resource_need(spec(array).binding, count); }
+
+BufferNeed resource_need(uint binding, std::uint64_t count) {
+    const ResourceSpec& s = resource(binding);
+    return {s.what, binding, count, count * s.element_bytes};
+}
+
+bool fits(const BufferNeed& n, const DeviceMemoryLimits& limits) {
+    const std::size_t texel = texel_bytes(resource(n.binding).kind);
+    return texel ? n.bytes / texel <= limits.max_texel_elements : n.bytes <= limits.max_storage_bytes;
 }
 
 std::string format_bytes(std::uint64_t bytes) {
@@ -19,14 +26,11 @@ std::string format_bytes(std::uint64_t bytes) {
 }
 
 void check_buffer_need(const BufferNeed& n, const DeviceMemoryLimits& limits) {
-    const std::size_t texel = texel_bytes(n.kind);
-    std::string limit;
-    if (texel && n.bytes / texel > limits.max_texel_elements)
-        limit = fmt::format("{} ({} texels of {} bytes, maxTexelBufferElements)",
-                            format_bytes(limits.max_texel_elements * texel), limits.max_texel_elements, texel);
-    else if (!texel && n.bytes > limits.max_storage_bytes)
-        limit = fmt::format("{} (maxStorageBufferRange)", format_bytes(limits.max_storage_bytes));
-    if (limit.empty()) return;
+    if (fits(n, limits)) return;
+    const std::size_t texel = texel_bytes(resource(n.binding).kind);
+    const std::string limit = texel ? fmt::format("{} ({} texels of {} bytes, maxTexelBufferElements)",
+                                                  format_bytes(limits.max_texel_elements * texel), limits.max_texel_elements, texel)
+                                    : fmt::format("{} (maxStorageBufferRange)", format_bytes(limits.max_storage_bytes));
     throw UserError(fmt::format(
         "the scene needs {} of GPU memory for its {} ({} of them), more than {} allows in one buffer, {}; use fewer "
         "or simpler objects (a lower subdivision for Bezier patches), or render with --backend cpu",

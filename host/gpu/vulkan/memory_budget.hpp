@@ -12,9 +12,11 @@
 
 namespace lancer::gpu {
 
+// One buffer a render allocates: a descriptor of LANCER_RESOURCES at a size. Every pass states its
+// buffers this way once; allocation and the memory budget read the same list.
 struct BufferNeed {
     std::string what;     // "Bezier patch leaves"
-    uint kind;            // RESOURCE_* (which device limit applies)
+    uint binding;         // BINDING_*: the resource, whose kind says which device limit applies
     std::uint64_t count;  // elements
     std::uint64_t bytes;
 };
@@ -26,9 +28,12 @@ struct DeviceMemoryLimits {
     std::uint64_t heap_bytes = 0;          // the heap of the memory type buffers are made from
 };
 
-// The need of `count` elements of a scene array.
+// The need of `count` elements of a scene array, or of the resource at `binding`.
 BufferNeed array_need(SceneArray array, std::uint64_t count);
+BufferNeed resource_need(uint binding, std::uint64_t count);
 
+// Whether one buffer is within its limit (texels for texel buffers, bytes for storage buffers).
+bool fits(const BufferNeed& need, const DeviceMemoryLimits& limits);
 // Throws UserError when one buffer exceeds its limit.
 void check_buffer_need(const BufferNeed& need, const DeviceMemoryLimits& limits);
 // Each buffer, then all of them together against heap_bytes.
