@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 #include "gpu/packing/direction_grids.hpp"
 
