@@ -40,7 +40,11 @@ using surface::Interval;
 constexpr double kRootBound = 1e-10;   // of the box's diagonal (along the ray): a root's certified accuracy
 constexpr double kNearReal = 1e-3;     // eigenvalues this close to the real axis are candidates (t scaled to [-1, 1])
 constexpr double kCluster = 1e-6;      // real eigenvalues this close may be a double root split by rounding
-constexpr int kMaxIntervalSteps = 20000;  // per ray; a pathological ray ends with what it found so far
+constexpr int kMaxIntervalSteps = 20000;  // per search; a pathological ray ends with what it found so far
+constexpr double kRootGuard = 4.0;        // root bounds on each side of a found root left to its certificate
+constexpr double kGapPiece = 16.0;        // root bounds: a piece this short goes to interval Newton on f
+constexpr int kGapLevels = 12;            // halvings of a gap before its pieces go to interval Newton on f
+constexpr double kCoefficientRounding = 1e-12;  // of the magnitudes' sum: the restricted coefficients' rounding, with margin
 
 // The ray in the surface's coordinates, from a base point on it: x(s) = o + s d, s = t - base.
 struct ImplicitRay {
@@ -85,8 +89,9 @@ public:
     std::vector<ImplicitRoot> run() {
         if (f_.polynomial) {
             by_eigenvalues();
+            verify_the_gaps();
         } else {
-            by_interval_newton();
+            by_interval_newton(s0_, s1_);
         }
         // The eigenvalues' candidates are in order, but polishing may carry one past the next
         // (near a root of high multiplicity): nearest first, each root once, and for a first
@@ -144,6 +149,9 @@ private:
         }
         // g(centre + half * tau) for tau in [-1, 1].
         std::vector<double> c = surface::restrict_to_line(*f_.polynomial, r_.o + centre * r_.d, half * r_.d);
+        coeffs_ = c;
+        centre_ = centre;
+        half_ = half;
         std::vector<double> taus;
         for (const ComplexRoot& z : polynomial_roots(c))
             if (std::abs(z.im) <= kNearReal && std::abs(z.re) <= 1.0 + kNearReal) taus.push_back(z.re);
@@ -173,11 +181,135 @@ private:
         }
     }
 
-    // Front to back: the piece on top of the stack is always the nearest one left.
-    void by_interval_newton() {
+    // The eigenvalues of a companion matrix are not certified: clustered or many roots (a
+    // polynomial of high degree) can leave a real root's eigenvalue off the real axis, and that
+    // root would be missed. Unless Descartes' rule shows none is missing, every stretch of the
+    // segment the eigenvalues left without a root (before the nearest, for a first hit) is
+    // searched again, missing nothing: a piece is dropped only where the polynomial's Taylor
+    // bound about its middle keeps it away from 0 by more than its coefficients' rounding allows;
+    // a piece of a few root bounds that is not goes to interval Newton on f itself. Each root
+    // found keeps kRootGuard root bounds clear on each side, where its own neighbourhood cannot
+    // be excluded.
+    void verify_the_gaps() {
+        std::sort(roots_.begin(), roots_.end(), [](const ImplicitRoot& a, const ImplicitRoot& b) { return a.t < b.t; });
+        if (descartes_agrees()) return;
+        const std::vector<ImplicitRoot> found = roots_;
+        const double guard = kRootGuard * e_;
+        double from = s0_;
+        for (const ImplicitRoot& root : found) {
+            const double s = root.t - r_.base;
+            if (s - guard > from) search_gap(from, s - guard);
+            if (done() && roots_.size() > found.size()) return;  // a nearer first hit
+            if (!all_) return;
+            from = std::max(from, s + guard);
+        }
+        if (from < s1_ && (all_ || found.empty())) search_gap(from, s1_);
+    }
+
+    // The cheap certificate that usually makes the search unneeded: Descartes' rule on the
+    // Bernstein coefficients of g over the segment, whose sign variations bound its roots there.
+    // No variation, or one per simple root the eigenvalues gave, and none is missing. A
+    // coefficient within its rounding of 0 (the conversion amplifies the coefficients' rounding
+    // by binomials and powers of 2, so high degrees rarely pass) leaves the question to the search.
+    bool descartes_agrees() const {
+        const std::size_t n = coeffs_.size();
+        if (n == 0) return false;
+        std::size_t simple = 0;
+        for (const ImplicitRoot& root : roots_) {
+            const double tau = (root.t - r_.base - centre_) / half_;
+            if (root.kind != RootKind::Simple || !(tau > -1.0 && tau < 1.0)) return false;
+            ++simple;
+        }
+        // tau = 2x - 1: the coefficients in x, then the Bernstein coefficients over x in [0, 1];
+        // the same sums of magnitudes bound their rounding.
+        const std::size_t degree = n - 1;
+        thread_local std::vector<double> a, a_mag;
+        a.assign(n, 0.0);
+        a_mag.assign(n, 0.0);
+        for (std::size_t i = 0; i < n; ++i) {
+            double binomial = 1.0;  // C(i, k)
+            for (std::size_t k = 0; k <= i; ++k) {
+                const double term = coeffs_[i] * binomial * std::ldexp(((i - k) & 1) ? -1.0 : 1.0, int(k));
+                a[k] += term;
+                a_mag[k] += std::abs(term);
+                binomial = binomial * double(i - k) / double(k + 1);
+            }
+        }
+        std::size_t variations = 0;
+        int sign = 0;
+        for (std::size_t j = 0; j < n; ++j) {
+            double b = 0.0, b_mag = 0.0, c_jk = 1.0, c_nk = 1.0;  // C(j, k), C(degree, k)
+            for (std::size_t k = 0; k <= j; ++k) {
+                b += c_jk / c_nk * a[k];
+                b_mag += c_jk / c_nk * a_mag[k];
+                c_jk = c_jk * double(j - k) / double(k + 1);
+                c_nk = c_nk * double(degree - k) / double(k + 1);
+            }
+            if (std::abs(b) <= kCoefficientRounding * b_mag) return false;
+            const int s = b > 0.0 ? 1 : -1;
+            variations += sign != 0 && s != sign;
+            sign = s;
+        }
+        return variations == simple;
+    }
+
+    // Front to back: pieces the Taylor bound cannot exclude are split, down to kGapLevels halvings
+    // or a few root bounds, and then searched by interval Newton on f (which, unlike the bound,
+    // does not suffer the cancellation among the coefficients of a polynomial of high degree).
+    void search_gap(double from, double to) {
+        struct Piece {
+            double a, b;
+            int level;
+        };
+        thread_local std::vector<Piece> stack;
+        stack.assign(1, {from, to, 0});
+        const std::size_t before = roots_.size();
+        while (!stack.empty() && !(done() && roots_.size() > before)) {
+            const Piece p = stack.back();
+            stack.pop_back();
+            if (excluded_by_taylor(p.a, p.b)) continue;
+            if (p.level >= kGapLevels || p.b - p.a <= kGapPiece * e_) {
+                by_interval_newton(p.a, p.b);
+                continue;
+            }
+            const double m = 0.5 * (p.a + p.b);
+            stack.push_back({m, p.b, p.level + 1});
+            stack.push_back({p.a, m, p.level + 1});
+        }
+    }
+
+    // Whether g has no root on [a, b], by the restricted polynomial's Taylor expansion about the
+    // middle: |g(m)| > sum |g^(k)(m)| / k! r^k, beyond an allowance for the coefficients'
+    // rounding (kCoefficientRounding of the same sums of magnitudes).
+    bool excluded_by_taylor(double a, double b) const {
+        const std::size_t n = coeffs_.size();
+        if (n == 0) return false;
+        const double m = (0.5 * (a + b) - centre_) / half_, r = 0.5 * (b - a) / half_;
+        thread_local std::vector<double> d, mag;
+        d.assign(coeffs_.begin(), coeffs_.end());
+        mag.resize(n);
+        for (std::size_t i = 0; i < n; ++i) mag[i] = std::abs(coeffs_[i]);
+        // Repeated synthetic division by (tau - m): d[k] becomes g's k-th Taylor coefficient at m.
+        for (std::size_t k = 0; k < n; ++k)
+            for (std::size_t i = n - 1; i > k; --i) {
+                d[i - 1] += m * d[i];
+                mag[i - 1] += std::abs(m) * mag[i];
+            }
+        double spread = 0.0, scale = mag[0], rk = 1.0;
+        for (std::size_t k = 1; k < n; ++k) {
+            rk *= r;
+            spread += std::abs(d[k]) * rk;
+            scale += mag[k] * rk;
+        }
+        return std::abs(d[0]) > spread + kCoefficientRounding * scale;
+    }
+
+    // Front to back over [from, to]: the piece on top of the stack is always the nearest one left.
+    void by_interval_newton(double from, double to) {
         thread_local std::vector<Interval> stack;
-        stack.assign(1, Interval{s0_, s1_});
-        for (int steps = 0; !stack.empty() && steps < kMaxIntervalSteps && !done(); ++steps) {
+        stack.assign(1, Interval{from, to});
+        const std::size_t before = roots_.size();
+        for (int steps = 0; !stack.empty() && steps < kMaxIntervalSteps && !(done() && roots_.size() > before); ++steps) {
             Interval piece = stack.back();
             stack.pop_back();
             Dual<Interval> g;
@@ -233,6 +365,8 @@ private:
     double s0_, s1_, t_min_, t_max_, e_;
     bool all_;
     std::vector<ImplicitRoot> roots_;
+    std::vector<double> coeffs_;  // g(centre_ + half_ tau), by_eigenvalues' restriction
+    double centre_ = 0.0, half_ = 1.0;
     double touching_until_ = -std::numeric_limits<double>::infinity();  // the end of the last touching piece
 };
 
