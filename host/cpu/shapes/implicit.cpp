@@ -42,6 +42,7 @@ constexpr double kNearReal = 1e-3;     // eigenvalues this close to the real axi
 constexpr double kCluster = 1e-6;      // real eigenvalues this close may be a double root split by rounding
 constexpr int kMaxIntervalSteps = 20000;  // per search; a pathological ray ends with what it found so far
 constexpr double kRootGuard = 4.0;        // root bounds on each side of a found root left to its certificate
+constexpr double kTouchingGuard = 1e-6;   // of the segment on each side of a touching point: the same point
 constexpr double kGapPiece = 16.0;        // root bounds: a piece this short goes to interval Newton on f
 constexpr int kGapLevels = 12;            // halvings of a gap before its pieces go to interval Newton on f
 constexpr double kCoefficientRounding = 1e-12;  // of the magnitudes' sum: the restricted coefficients' rounding, with margin
@@ -194,10 +195,12 @@ private:
         std::sort(roots_.begin(), roots_.end(), [](const ImplicitRoot& a, const ImplicitRoot& b) { return a.t < b.t; });
         if (descartes_agrees()) return;
         const std::vector<ImplicitRoot> found = roots_;
-        const double guard = kRootGuard * e_;
         double from = s0_;
         for (const ImplicitRoot& root : found) {
             const double s = root.t - r_.base;
+            // Around a touching point g stays within rounding of 0 over about the square root of
+            // the rounding: that whole stretch is the one point.
+            const double guard = root.kind == RootKind::Simple ? kRootGuard * e_ : kTouchingGuard * (s1_ - s0_);
             if (s - guard > from) search_gap(from, s - guard);
             if (done() && roots_.size() > found.size()) return;  // a nearer first hit
             if (!all_) return;
@@ -207,18 +210,18 @@ private:
     }
 
     // The cheap certificate that usually makes the search unneeded: Descartes' rule on the
-    // Bernstein coefficients of g over the segment, whose sign variations bound its roots there.
-    // No variation, or one per simple root the eigenvalues gave, and none is missing. A
+    // Bernstein coefficients of g over the segment, whose sign variations bound its roots there
+    // (with multiplicity). As many as the roots the eigenvalues gave, and none is missing. A
     // coefficient within its rounding of 0 (the conversion amplifies the coefficients' rounding
     // by binomials and powers of 2, so high degrees rarely pass) leaves the question to the search.
     bool descartes_agrees() const {
         const std::size_t n = coeffs_.size();
         if (n == 0) return false;
-        std::size_t simple = 0;
+        std::size_t multiplicity = 0;  // a touching point is a double root
         for (const ImplicitRoot& root : roots_) {
             const double tau = (root.t - r_.base - centre_) / half_;
-            if (root.kind != RootKind::Simple || !(tau > -1.0 && tau < 1.0)) return false;
-            ++simple;
+            if (!(tau > -1.0 && tau < 1.0)) return false;
+            multiplicity += root.kind == RootKind::Simple ? 1 : 2;
         }
         // tau = 2x - 1: the coefficients in x, then the Bernstein coefficients over x in [0, 1];
         // the same sums of magnitudes bound their rounding.
@@ -250,7 +253,7 @@ private:
             variations += sign != 0 && s != sign;
             sign = s;
         }
-        return variations == simple;
+        return variations == multiplicity;
     }
 
     // Front to back: pieces the Taylor bound cannot exclude are split, down to kGapLevels halvings
