@@ -22,6 +22,17 @@ const float FLOAT_ROUNDING = 5.9604645e-8;
 
 float max_abs(vec3 v) { return max(abs(v.x), max(abs(v.y), abs(v.z))); }
 
+// The power of two 2^-e that brings `magnitude` into [0.5, 1) (1 for 0, inf or NaN). Vectors
+// scaled by it before they are squared (lengths, cross products, gradients) neither overflow nor
+// underflow within lancer's 1e12 range, and as the scaling is exact, a quotient of terms of the
+// same degree (a unit vector, a parameter) comes out bit for bit as without it.
+float unit_scale(float magnitude) {
+    if (!(magnitude > 0.0) || isinf(magnitude)) return 1.0;
+    int e;
+    frexp(magnitude, e);
+    return ldexp(1.0, -e);
+}
+
 // What k roundings of numbers no larger than `magnitude` can add up to (pbrt's gamma(k) times
 // the magnitude, for the small k used here). Each intersector bounds its hit's error with it,
 // the magnitudes being those of the ray's origin, the hit's t and the shape's data: positions

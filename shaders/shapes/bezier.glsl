@@ -253,11 +253,16 @@ void bezier_leaf_eval(uint leaf, vec2 uv, out vec3 P, out vec3 Pu, out vec3 Pv) 
 vec3 bezier_hit_normal(Primitive prim, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
     vec3 P, Pu, Pv;
     bezier_leaf_eval(prim.data, uv, P, Pu, Pv);
-    vec3 n = cross(Pu, Pv);
-    float scale = dot(Pu, Pu) + dot(Pv, Pv);
+    // The partials scaled together by a power of two first (unit_scale): a patch 1e10 across
+    // would otherwise square them past float's range.
+    float s = unit_scale(max(max_abs(Pu), max_abs(Pv)));
+    vec3 u = s * Pu, v = s * Pv;
+    vec3 n = cross(u, v);
+    float scale = dot(u, u) + dot(v, v);
     if (dot(n, n) <= 1e-12 * scale * scale) {
         bezier_leaf_eval(prim.data, mix(uv, vec2(0.5), 1e-3), P, Pu, Pv);
-        n = cross(Pu, Pv);
+        s = unit_scale(max(max_abs(Pu), max_abs(Pv)));
+        n = cross(s * Pu, s * Pv);
     }
     float len = length(n);
     return len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);

@@ -186,12 +186,18 @@ vec3 implicit_hit_normal(Primitive prim, Ray ray, float t, vec3 p, vec2 uv, inou
     mat3 rows = mat3(info.row0.xyz, info.row1.xyz, info.row2.xyz);
     vec3 local = p * rows + vec3(info.row0.w, info.row1.w, info.row2.w);
     vec3 step = (prim.p1.xyz - prim.p0.xyz) * 0.57735027;
+    // Gradients scaled by a power of two before they are squared (unit_scale): f = 1e20 (...)
+    // or 1e-30 (...) would otherwise overflow or underflow float; |grad f| is then the scaled
+    // length over the scale.
     vec3 g = implicit_gradient(prim.data, local);
-    error += implicit_band(prim, local, length(rows * g), p);
+    float s = unit_scale(max_abs(g));
+    error += implicit_band(prim, local, length(rows * (s * g)) / s, p);
+    g = s * g;
     if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-5 * step);
     if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-3 * step);
     if (!(dot(g, g) > 0.0) || isinf(dot(g, g))) g = implicit_gradient(prim.data, local + 1e-2 * step);
     vec3 n = rows * g;
+    n *= unit_scale(max_abs(n));
     float len = length(n);
     return len > 0.0 && !isinf(len) ? n / len : vec3(0.0, 0.0, 1.0);
 }

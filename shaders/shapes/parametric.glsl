@@ -287,13 +287,18 @@ vec3 parametric_hit_normal(Primitive prim, Ray ray, float t, vec3 p, vec2 uv, in
     uint surface = uint(cell_at(prim.data).su_lo.w);
     vec3 P, Pu, Pv;
     surface_world(surface, uv, P, Pu, Pv);
-    vec3 n = cross(Pu, Pv);
-    float scale = dot(Pu, Pu) + dot(Pv, Pv);
+    // The partials scaled together by a power of two first (unit_scale): a sphere of radius
+    // 1e10 would otherwise square them past float's range.
+    float s = unit_scale(max(max_abs(Pu), max_abs(Pv)));
+    vec3 u = s * Pu, v = s * Pv;
+    vec3 n = cross(u, v);
+    float scale = dot(u, u) + dot(v, v);
     if (dot(n, n) <= 1e-12 * scale * scale) {
         vec4 dom = surface_at(surface).domain;
         vec2 centre = vec2(0.5 * (dom.x + dom.y), 0.5 * (dom.z + dom.w));
         surface_world(surface, mix(uv, centre, 1e-3), P, Pu, Pv);
-        n = cross(Pu, Pv);
+        s = unit_scale(max(max_abs(Pu), max_abs(Pv)));
+        n = cross(s * Pu, s * Pv);
     }
     float len = length(n);
     return len > 0.0 && !isinf(len) ? n / len : vec3(0.0, 0.0, 1.0);

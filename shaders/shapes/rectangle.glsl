@@ -1,8 +1,11 @@
 // Ray/parallelogram corner + a*edge_u + b*edge_v, a, b in [0, 1].
 // Twin of host/cpu/shapes/rectangle.cpp. p0 = corner, p1 = edge_u, p2 = edge_v.
 bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv, inout float error) {
-    vec3 eu = r.p1.xyz;
-    vec3 ev = r.p2.xyz;
+    // Edges scaled together by a power of two (unit_scale): their cross product and its square
+    // stay finite for edges up to lancer's 1e12, and t, a and b are ratios that do not change.
+    float s = unit_scale(max(max_abs(r.p1.xyz), max_abs(r.p2.xyz)));
+    vec3 eu = s * r.p1.xyz;
+    vec3 ev = s * r.p2.xyz;
     vec3 n = cross(eu, ev);
     float denom = dot(n, ray.dir);
     if (denom == 0.0) return false;
@@ -10,7 +13,7 @@ bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out flo
     float t = dot(rel, n) / denom;
     if (t <= t_min || t >= t_max) return false;
     // Parallelogram coordinates of the hit, from p - corner = a eu + b ev.
-    vec3 q = ray.dir * t - rel;
+    vec3 q = s * (ray.dir * t - rel);
     float nn = dot(n, n);
     float a = dot(cross(q, ev), n) / nn;
     float b = dot(cross(eu, q), n) / nn;
@@ -28,7 +31,8 @@ float rectangle_hit_error(Primitive r, Ray ray, float t) {
 
 vec3 rectangle_hit_normal(Primitive r, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
     error = rectangle_hit_error(r, ray, t);
-    return normalize(cross(r.p1.xyz, r.p2.xyz));
+    float s = unit_scale(max(max_abs(r.p1.xyz), max_abs(r.p2.xyz)));
+    return normalize(cross(s * r.p1.xyz, s * r.p2.xyz));
 }
 
 // Texture (u, v): (a, b) along its edges, as the intersection found them.

@@ -56,6 +56,50 @@ TEST(FloatRange, TinyRationalWeightsRenderOnTheGpuAsTheReferenceDoes) {
     test::expect_same_picture("tiny-weights-vs-unit-weights", gpu, to_srgb8(test::render_on(test::Backend::Gpu, unit)));
 }
 
+// The stage with every length times `scale`: camera, light and the object's place.
+std::string scaled_stage(double scale) {
+    return fmt::format(R"(
+        [render]
+        width = 96
+        height = 72
+        samples = 2
+        [camera]
+        eye = [{0}, {1}, {2}]
+        look_at = [0, 0, 0]
+        fov = 50
+        [[light]]
+        position = [{3}, {4}, {5}]
+        [material.m]
+        checker = {{ colors = [[0.8, 0.5, 0.2], [0.2, 0.3, 0.8]], size = {6} }}
+        [[object]]
+        material = "m"
+    )", 0.3 * scale, 0.6 * scale, -3 * scale, -3 * scale, 4 * scale, -5 * scale, 0.25 * scale);
+}
+
+// Surfaces whose partial derivatives or gradients are far from 1 within lancer's range: their
+// squares overflow or underflow float, and the GPU drew them flat and unlit until each was
+// scaled by a power of two first (common.glsl, unit_scale).
+TEST(FloatRange, NormalsOfHugeAndTinyScalesAreTheReferences) {
+    const std::pair<const char*, std::string> cases[] = {
+        {"parametric sphere of radius 1e10",
+         scaled_stage(1e10) + "type = \"parametric\"\nx = \"R*cos(u)*cos(v)\"\ny = \"R*sin(v)\"\nz = \"R*sin(u)*cos(v)\"\n"
+                              "u = [0, \"2*pi\"]\nv = [\"-pi/2\", \"pi/2\"]\nparams = { R = 1e10 }\n"},
+        {"Bezier patch 3e10 across", scaled_stage(1.5e10) + bulging_patch("1") + "transform = { scale = 1.5e10 }\n"},
+        {"implicit 1e20 (x^2 + y^2 + z^2 - 1)",
+         std::string(kStage) + "type = \"implicit\"\nfunction = \"1e20*(x^2 + y^2 + z^2 - 1)\"\n"
+                               "box = { min = [-1.1, -1.1, -1.1], max = [1.1, 1.1, 1.1] }\n"},
+        {"implicit 1e-30 (x^2 + y^2 + z^2 - 1)",
+         std::string(kStage) + "type = \"implicit\"\nfunction = \"1e-30*(x^2 + y^2 + z^2 - 1)\"\n"
+                               "box = { min = [-1.1, -1.1, -1.1], max = [1.1, 1.1, 1.1] }\n"},
+    };
+    for (const auto& [what, text] : cases) {
+        SCOPED_TRACE(what);
+        const Scene scene = test::scene_from_text(text);
+        test::expect_same_picture(std::string("scaled-normals-") + what, to_srgb8(test::render_on(test::Backend::Gpu, scene)),
+                                  to_srgb8(test::render_on(test::Backend::Cpu, scene)));
+    }
+}
+
 // Equal weights are a polynomial patch, whatever their value: packed with weight 1, so that the
 // GPU clips it without the homogeneous coordinate; unequal weights keep it (and their ratios).
 TEST(FloatRange, EqualWeightsArePackedAsAPolynomialPatch) {
