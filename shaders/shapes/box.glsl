@@ -14,23 +14,20 @@ bool box_intersect(Primitive b, Ray ray, float t_min, float t_max, out float t_h
     return false;
 }
 
-// The hit's error (Hit.error): on the face of axis i, o_i + t d_i misses the face by the rounding
-// of (b_i - o_i) / d_i (3 roundings, relative: the cosine d_i cancels) and of the hit point: 16
-// roundings of |o| + |b| + t.
-float box_hit_error(Primitive b, Ray ray, float t) {
-    return rounding_bound(16.0, max_abs(ray.origin) + max(max_abs(b.p0.xyz), max_abs(b.p1.xyz)) + t);
-}
-
-// The face whose plane the point is closest to, relative to the box size.
+// The face whose plane the point is closest to, relative to the box size, and the hit's error
+// (Hit.error): on the face of axis i, o_i + t d_i misses the face by the rounding of
+// (b_i - o_i) / d_i (3 roundings, relative: the cosine d_i cancels) and of the hit point: 16
+// roundings of |o| + |b_i| + t, b_i the face's coordinate (the box's other corners, however far,
+// do not count).
 vec3 box_hit_normal(Primitive b, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
-    error = box_hit_error(b, ray, t);
     vec3 c = 0.5 * (b.p0.xyz + b.p1.xyz);
     vec3 h = 0.5 * (b.p1.xyz - b.p0.xyz);
     vec3 d = (p - c) / h;
     vec3 a = abs(d);
-    if (a.x >= a.y && a.x >= a.z) return vec3(sign(d.x), 0.0, 0.0);
-    if (a.y >= a.z) return vec3(0.0, sign(d.y), 0.0);
-    return vec3(0.0, 0.0, sign(d.z));
+    vec3 n = a.x >= a.y && a.x >= a.z ? vec3(sign(d.x), 0.0, 0.0) : (a.y >= a.z ? vec3(0.0, sign(d.y), 0.0) : vec3(0.0, 0.0, sign(d.z)));
+    vec3 face = mix(b.p0.xyz, b.p1.xyz, greaterThan(n, vec3(0.0)));
+    error = rounding_bound(16.0, max_abs(ray.origin) + abs(dot(face, abs(n))) + t);
+    return n;
 }
 
 // Texture (u, v): the whole image on each face, upright seen from outside. Side faces have v

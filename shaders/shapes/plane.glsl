@@ -1,5 +1,7 @@
 // Ray/infinite plane. Twin of host/cpu/shapes/plane.cpp.
-// p0 = (point, 0), p1 = (unit normal, 0).
+// p0 = (point, u there), p1 = (unit normal, v there), p2 = (texture u axis, 0): the point is the
+// plane's nearest the GPU's origin (the anchor near the camera), which keeps the error bound at
+// the picture's scale, with its texture coordinates.
 bool plane_intersect(Primitive pl, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     vec3 n = pl.p1.xyz;
     float denom = dot(n, ray.dir);
@@ -27,5 +29,5 @@ vec3 plane_hit_normal(Primitive pl, Ray ray, float t, vec3 p, vec2 uv, inout flo
 // Texture (u, v): distances from the plane's point along its texture axes (p2 = u, v = u x n).
 vec2 plane_texture_uv(Primitive pl, Hit hit, vec3 p) {
     vec3 d = p - pl.p0.xyz;
-    return vec2(dot(d, pl.p2.xyz), dot(d, cross(pl.p2.xyz, pl.p1.xyz)));
+    return vec2(dot(d, pl.p2.xyz) + pl.p0.w, dot(d, cross(pl.p2.xyz, pl.p1.xyz)) + pl.p1.w);
 }

@@ -1,5 +1,7 @@
 // Ray/parallelogram corner + a*edge_u + b*edge_v, a, b in [0, 1].
-// Twin of host/cpu/shapes/rectangle.cpp. p0 = corner, p1 = edge_u, p2 = edge_v.
+// Twin of host/cpu/shapes/rectangle.cpp. p0 = (its point (a0, b0), a0), p1 = (edge_u, b0),
+// p2 = (edge_v, 0): the point is about its nearest the GPU's origin (the anchor near the
+// camera), so that the error bound stays at the picture's scale however far the corners are.
 bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv, inout float error) {
     // Edges scaled together by a power of two (unit_scale): their cross product and its square
     // stay finite for edges up to lancer's 1e12, and t, a and b are ratios that do not change.
@@ -15,18 +17,19 @@ bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out flo
     // Parallelogram coordinates of the hit, from p - corner = a eu + b ev.
     vec3 q = s * (ray.dir * t - rel);
     float nn = dot(n, n);
-    float a = dot(cross(q, ev), n) / nn;
-    float b = dot(cross(eu, q), n) / nn;
+    float a = r.p0.w + dot(cross(q, ev), n) / nn;
+    float b = r.p1.w + dot(cross(eu, q), n) / nn;
     if (a < 0.0 || a > 1.0 || b < 0.0 || b > 1.0) return false;
     t_hit = t;
     uv = vec2(a, b);
     return true;
 }
 
-// The hit's error (Hit.error) is the plane's (plane.glsl), with the corner as the plane's point
-// and the normal cross(edge_u, edge_v), whose rounding tilts it by a few ulps over the edges.
+// The hit's error (Hit.error) is the plane's (plane.glsl), with the normal cross(edge_u, edge_v),
+// whose rounding tilts it by a few ulps about the rectangle's point: at the hit, a few ulps of
+// its distance from there, which |origin| + |point| + t bounds; the edges' length does not count.
 float rectangle_hit_error(Primitive r, Ray ray, float t) {
-    return rounding_bound(16.0, max_abs(ray.origin) + max_abs(r.p0.xyz) + max_abs(r.p1.xyz) + max_abs(r.p2.xyz) + t);
+    return rounding_bound(16.0, max_abs(ray.origin) + max_abs(r.p0.xyz) + t);
 }
 
 vec3 rectangle_hit_normal(Primitive r, Ray ray, float t, vec3 p, vec2 uv, inout float error) {

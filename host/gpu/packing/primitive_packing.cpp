@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include "accel/shape_bounds.hpp"
@@ -28,11 +29,30 @@ struct PrimitivePacker {
         add({SHAPE_SPHERE, material, 0, object, v4(s.center, s.radius), v4(s.orientation[0]), v4(s.orientation[1])},
             shape_bounds(s));
     }
+    // A plane's point is any point of it: the shader gets the one nearest its origin (the anchor
+    // near the camera), so that its error bound, which grows with the point's distance, stays that
+    // of the picture's scale; the texture's (u, v) there go with it (p0.w, p1.w).
     void operator()(const Plane& p) {
-        add({SHAPE_PLANE, material, 0, object, v4(p.point), v4(p.normal), v4(p.u_axis)}, std::nullopt);
+        const dvec3 foot = p.normal * glm::dot(p.point, p.normal);
+        const dvec3 v_axis = glm::cross(p.u_axis, p.normal);
+        add({SHAPE_PLANE, material, 0, object, v4(foot, glm::dot(foot - p.point, p.u_axis)),
+             v4(p.normal, glm::dot(foot - p.point, v_axis)), v4(p.u_axis)},
+            std::nullopt);
     }
+    // Likewise a rectangle's corner becomes (about) its point nearest the origin, with that
+    // point's (a, b) along the edges (p0.w, p1.w).
     void operator()(const Rectangle& r) {
-        add({SHAPE_RECTANGLE, material, 0, object, v4(r.corner), v4(r.edge_u), v4(r.edge_v)}, shape_bounds(r));
+        const double uu = glm::dot(r.edge_u, r.edge_u), uv = glm::dot(r.edge_u, r.edge_v), vv = glm::dot(r.edge_v, r.edge_v);
+        const double det = uu * vv - uv * uv;
+        double a = 0.0, b = 0.0;
+        if (det > 0.0) {
+            const double pu = glm::dot(-r.corner, r.edge_u), pv = glm::dot(-r.corner, r.edge_v);
+            a = std::clamp((pu * vv - pv * uv) / det, 0.0, 1.0);
+            b = std::clamp((pv * uu - pu * uv) / det, 0.0, 1.0);
+        }
+        add({SHAPE_RECTANGLE, material, 0, object, v4(r.corner + a * r.edge_u + b * r.edge_v, a), v4(r.edge_u, b),
+             v4(r.edge_v)},
+            shape_bounds(r));
     }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
