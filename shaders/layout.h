@@ -465,7 +465,8 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(SPLIT_FAMILIES, 22, uint, split_families, 0xffffffffu) /* ... and with a box around each half (<NAME>_SPLIT) */ \
     X(DIRECTION_GRIDS, 25, bool, direction_grids, true)   /* camera and shadow rays through DirectionGrids, not the BVH */ \
     X(GRIDS_ONLY, 26, bool, grids_only, false)            /* every ray takes a grid: the BVH's traversal compiled out */ \
-    X(CHECK_GRID_CONTRACT, 27, bool, check_grid_contract, false) /* tests: a ray without a grid under GRIDS_ONLY fails the render */
+    X(CHECK_GRID_CONTRACT, 27, bool, check_grid_contract, false) /* tests: a ray without a grid under GRIDS_ONLY fails the render */ \
+    X(SPHERES_BY_NEAR_POINTS, 28, bool, spheres_by_near_points, false) /* spheres packed by their points nearest the camera (sphere.glsl) */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

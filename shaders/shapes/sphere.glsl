@@ -1,16 +1,37 @@
 // Ray/sphere. Twin of host/cpu/shapes/sphere.cpp. Each file of shapes/ implements the same three
 // functions for its shape (shapes.h, docs/adding-a-shape.md): <name>_intersect, <name>_hit_normal
 // and <name>_texture_uv.
-// p0 = (center, radius). Uses the cancellation-free discriminant of Ray Tracing Gems ch. 7:
-// r^2 - |f - (f.d)d|^2 instead of b^2 - c, which loses all precision for distant spheres.
+// p0 = (center, radius), p1, p2 = (the sphere's own x and y axes: its texture's frame, 0). Uses
+// the cancellation-free discriminant of Ray Tracing Gems ch. 7: r^2 - |f - (f.d)d|^2 instead of
+// b^2 - c, which loses all precision for distant spheres.
+//
+// A sphere far larger than its distance from the camera (a ground of radius 10^6 under the scene,
+// a POV-Ray habit) has a centre float cannot place to within the picture's detail. Where the
+// scene has one (SPHERES_BY_NEAR_POINTS), every sphere is packed by its point q nearest the GPU's
+// origin (the anchor near the camera) instead, with n, the unit normal there: p0 = (q, radius),
+// p1 = (x axis, n.x), p2 = (y axis, n.y), data = n.z's bits. With e = o - q and f = e + r n
+// never formed, |f|^2 - r^2 = |e|^2 + 2 r e.n and r^2 - |perp|^2 = r^2 (n.d)^2 - 2 r e'.n' - |e'|^2
+// (e', n' across the ray) hold only terms of the picture's scale, or squares.
+vec3 sphere_near_normal(Primitive s) { return vec3(s.p1.w, s.p2.w, uintBitsToFloat(s.data)); }
+
 bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
-    vec3 f = ray.origin - s.p0.xyz;
     float r = s.p0.w;
-    float b = dot(f, ray.dir);
-    vec3 perp = f - b * ray.dir;
-    float disc = r * r - dot(perp, perp);
+    float b, disc, c;
+    if (SPHERES_BY_NEAR_POINTS) {
+        vec3 e = ray.origin - s.p0.xyz, n = sphere_near_normal(s);
+        float ed = dot(e, ray.dir), nd = dot(n, ray.dir);
+        vec3 e_across = e - ed * ray.dir, n_across = n - nd * ray.dir;
+        b = ed + r * nd;
+        disc = (r * nd) * (r * nd) - 2.0 * r * dot(e_across, n_across) - dot(e_across, e_across);
+        c = dot(e, e) + 2.0 * r * dot(e, n);
+    } else {
+        vec3 f = ray.origin - s.p0.xyz;
+        b = dot(f, ray.dir);
+        vec3 perp = f - b * ray.dir;
+        disc = r * r - dot(perp, perp);
+        c = dot(f, f) - r * r;
+    }
     if (disc < 0.0) return false;
-    float c = dot(f, f) - r * r;
     float q = -b - sign(b) * sqrt(disc);
     if (b == 0.0) q = -sqrt(disc);
     float t0 = c / q;
@@ -25,21 +46,27 @@ bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float 
 // a tangent their effect on t grows as 1 / cos, the cosine between the ray and the normal, but
 // the hit point's distance from the sphere is that t error times cos again, so it stays a few
 // roundings of |f| <= |o| + |c|. With the centre's and radius's own rounding and the hit
-// point's (hit_point_rounding): 32 roundings of |o| + |c| + r + t.
+// point's (hit_point_rounding): 32 roundings of |o| + |c| + r + t. By the near point: the same
+// with |q| for |c| + r, the roundings of r n being relative to the terms they enter.
 float sphere_hit_error(Primitive s, Ray ray, float t) {
-    return rounding_bound(32.0, max_abs(ray.origin) + max_abs(s.p0.xyz) + s.p0.w + t);
+    return rounding_bound(32.0, max_abs(ray.origin) + max_abs(s.p0.xyz) + (SPHERES_BY_NEAR_POINTS ? 0.0 : s.p0.w) + t);
+}
+
+// The unit vector from the centre to p.
+vec3 sphere_direction(Primitive s, vec3 p) {
+    return SPHERES_BY_NEAR_POINTS ? (p - s.p0.xyz) / s.p0.w + sphere_near_normal(s) : (p - s.p0.xyz) / s.p0.w;
 }
 
 // The unit normal at the hit at t (point p), and the hit's error bound.
 vec3 sphere_hit_normal(Primitive s, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
     error = sphere_hit_error(s, ray, t);
-    return (p - s.p0.xyz) / s.p0.w;
+    return sphere_direction(s, p);
 }
 
 // Texture (u, v): longitude and latitude in the sphere's own frame (p1, p2 = its x and y axes):
 // u = 0.5 faces -z and grows toward +x; v runs from 0 at the south pole to 1 at the north pole.
 vec2 sphere_texture_uv(Primitive s, Hit hit, vec3 p) {
-    vec3 w = (p - s.p0.xyz) / s.p0.w;
+    vec3 w = sphere_direction(s, p);
     vec3 d = vec3(dot(w, s.p1.xyz), dot(w, s.p2.xyz), dot(w, cross(s.p1.xyz, s.p2.xyz)));
     const float PI = 3.14159265358979;
     float longitude = (d.x == 0.0 && d.z == 0.0) ? 0.0 : atan(d.x, -d.z);  // atan(0, 0) is undefined in GLSL

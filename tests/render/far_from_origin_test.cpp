@@ -6,9 +6,11 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "gpu/packing/float_anchor.hpp"
+#include "gpu/packing/scene_packing.hpp"
 #include "scene/animation.hpp"
 #include "support/test_support.hpp"
 
@@ -140,6 +142,53 @@ TEST(FarAnchors, FloorsReachingFarKeepTheirContactShadows) {
         test::expect_same_picture(std::string("far-anchor-") + name, to_srgb8(test::render_on(test::Backend::Gpu, scene)),
                                   to_srgb8(test::render_on(test::Backend::Cpu, scene)));
     }
+}
+
+// A sphere as the ground (a POV-Ray habit): radius R, centre R below two unit balls resting on
+// it. Float placed its centre to 2^-24 R, far coarser than the picture's detail near the camera
+// (R = 10^6: contact shadows gone, 10% of the pixels; 10^4: 26%); such scenes pack spheres by
+// their points nearest the camera (SPHERES_BY_NEAR_POINTS, shaders/shapes/sphere.glsl).
+TEST(FarAnchors, AGroundSphereFarLargerThanItsDistanceIsTheReferences) {
+    for (double radius : {1e3, 1e4, 1e6}) {
+        SCOPED_TRACE(radius);
+        const Scene scene = test::scene_from_text(fmt::format(R"(
+            [render]
+            width = 96
+            height = 64
+            samples = 2
+            [camera]
+            eye = [2, 14, -6]
+            look_at = [0, 0.5, 0]
+            fov = 30
+            [[light]]
+            position = [-6, 10, -8]
+            [material.floor]
+            checker = {{ colors = [[0.9, 0.9, 0.9], [0.2, 0.25, 0.3]], size = 0.5 }}
+            [material.red]
+            color = [0.8, 0.2, 0.2]
+            specular = 0.5
+            [[object]]
+            type = "sphere"
+            center = [-1.2, 1, 0]
+            radius = 1
+            material = "red"
+            [[object]]
+            type = "sphere"
+            center = [1.2, 1, 0.5]
+            radius = 1
+            material = "red"
+            [[object]]
+            type = "sphere"
+            center = [0, {}, 0]
+            radius = {}
+            material = "floor"
+        )", -radius, radius));
+        EXPECT_TRUE(gpu::pack_scene(scene).features.spheres_by_near_points);
+        test::expect_same_picture(fmt::format("ground-sphere-{}", radius), to_srgb8(test::render_on(test::Backend::Gpu, scene)),
+                                  to_srgb8(test::render_on(test::Backend::Cpu, scene)));
+    }
+    // Spheres of the picture's own scale keep their centres.
+    EXPECT_FALSE(gpu::pack_scene(test::scene_from_text(kScene)).features.spheres_by_near_points);
 }
 
 TEST(FloatAnchor, IsTheOriginNearItAndTheEyeFarFromIt) {

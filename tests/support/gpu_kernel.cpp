@@ -43,6 +43,7 @@ gpu::ShaderFeatures GpuKernel::all_features() {
     f.output_hits = false;
     f.check_loop_limit = false;
     f.check_grid_contract = false;
+    f.spheres_by_near_points = false;  // as the packer packs spheres unless a scene needs it
     return f;
 }
 

@@ -1,6 +1,7 @@
 #include "gpu/packing/primitive_packing.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -22,11 +23,20 @@ struct PrimitivePacker {
     std::vector<PrimitiveWithBox>& prims;
     uint material = 0;
     uint object = 0;
+    const SpherePacking& spheres;
 
     void add(Primitive p, std::optional<Aabb> box) { prims.emplace_back(p, box); }
 
     void operator()(const Sphere& s) {
-        add({SHAPE_SPHERE, material, 0, object, v4(s.center, s.radius), v4(s.orientation[0]), v4(s.orientation[1])},
+        if (!spheres.by_near_points) {
+            add({SHAPE_SPHERE, material, 0, object, v4(s.center, s.radius), v4(s.orientation[0]), v4(s.orientation[1])},
+                shape_bounds(s));
+            return;
+        }
+        const dvec3 toward = spheres.eye - s.center;
+        const dvec3 n = glm::length(toward) > 0.0 ? glm::normalize(toward) : dvec3(0.0, 1.0, 0.0);
+        add({SHAPE_SPHERE, material, std::bit_cast<uint>(float(n.z)), object, v4(s.center + s.radius * n, s.radius),
+             v4(s.orientation[0], n.x), v4(s.orientation[1], n.y)},
             shape_bounds(s));
     }
     // A plane's point is any point of it: the shader gets the one nearest its origin (the anchor
@@ -164,8 +174,23 @@ struct PrimitivePacker {
 
 }  // namespace
 
-void pack_object(const Shape& shape, uint material, uint object, PackedScene& out, std::vector<PrimitiveWithBox>& primitives) {
-    std::visit(PrimitivePacker{out, primitives, material, object}, shape);
+SpherePacking sphere_packing(const Scene& scene) {
+    // The centre's float rounding against the picture's detail there: a millionth of the eye's
+    // distance from the sphere.
+    SpherePacking packing{false, scene.camera.eye};
+    for (const Object& o : scene.objects) {
+        const auto* s = std::get_if<Sphere>(&o.shape);
+        if (!s) continue;
+        const double rounding = 0x1p-24 * std::max({std::abs(s->center.x), std::abs(s->center.y), std::abs(s->center.z)});
+        const double detail = 1e-6 * std::abs(glm::length(scene.camera.eye - s->center) - s->radius);
+        packing.by_near_points |= rounding > detail;
+    }
+    return packing;
+}
+
+void pack_object(const Shape& shape, uint material, uint object, const SpherePacking& spheres, PackedScene& out,
+                 std::vector<PrimitiveWithBox>& primitives) {
+    std::visit(PrimitivePacker{out, primitives, material, object, spheres}, shape);
 }
 
 std::uint64_t bezier_leaf_count(const Scene& scene) {

@@ -13,9 +13,19 @@
 
 namespace lancer::gpu {
 
+// How spheres are packed: by centre and radius, or, where some sphere's centre is too far for
+// float to place it within the picture's detail (a ground of radius 10^6), each by its point
+// nearest `eye` (SPHERES_BY_NEAR_POINTS, shaders/shapes/sphere.glsl).
+struct SpherePacking {
+    bool by_near_points = false;
+    dvec3 eye{0.0};
+};
+SpherePacking sphere_packing(const Scene& scene);
+
 // Appends the primitives of scene object `object`, made of `material`, to `primitives`, and what
 // they index to `out`'s arrays.
-void pack_object(const Shape& shape, uint material, uint object, PackedScene& out, std::vector<PrimitiveWithBox>& primitives);
+void pack_object(const Shape& shape, uint material, uint object, const SpherePacking& spheres, PackedScene& out,
+                 std::vector<PrimitiveWithBox>& primitives);
 
 // The Bezier leaves of the whole scene, counted before any is made: a scene with too many for
 // the device is refused before the packer spends seconds and gigabytes on them.

@@ -22,8 +22,9 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     const Scene& scene = local ? *local : world;
 
     std::vector<PrimitiveWithBox> primitives;
+    const SpherePacking spheres = sphere_packing(scene);
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        pack_object(scene.objects[i].shape, scene.objects[i].material, static_cast<uint>(i), packed, primitives);
+        pack_object(scene.objects[i].shape, scene.objects[i].material, static_cast<uint>(i), spheres, packed, primitives);
     pack_materials(scene, packed.anchor, packed);
     for (const lancer::Light& l : scene.lights) packed.lights.push_back(pack_light(l));
     if (scene.photons) {
@@ -59,6 +60,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     f.direction_grids = plan.flags.direction_grids;
     f.grids_only = plan.flags.grids_only;
     f.has_photons = scene.photons.has_value();
+    f.spheres_by_near_points = spheres.by_near_points && f.has_shape(SHAPE_SPHERE);
     for (const PatchLeaf& leaf : packed.patches)
         for (const vec4& point : leaf.points) f.has_rational_patches |= point.w != 1.0f;
     f.has_textures = !packed.textures.empty();
