@@ -154,8 +154,10 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // never the generated shader code: p = (dot(row0.xyz, w) + row0.w, dot(row1.xyz, w) + row1.w,
 // dot(row2.xyz, w) + row2.w) for a world point w; directions without the w terms, and normals by
 // the transpose.
-#define LANCER_ROWS_ImplicitInfo(VEC4, VEC4S, SCALARS, UVEC4S) \
-    VEC4(row0) VEC4(row1) VEC4(row2)
+#define LANCER_ROWS_ImplicitInfo(VEC4, VEC4S, SCALARS, UVEC4S)                                          \
+    VEC4(row0) VEC4(row1) VEC4(row2)                                                                \
+    VEC4(texture_box) /* (x0, y0, x1, y1) of the surface's box, which maps textures; the primitive's */ \
+                      /* box is where the surface can be in it (surface::shrink_to_surface), searched */
 
 // One cell of a parametric surface's domain, where the GPU searches for roots
 // (shapes/parametric.glsl). S at the cell's centre and the bounds of S's partials over the whole

@@ -7,6 +7,7 @@
 // a constant beyond float's range, a function whose float evaluation overflows or strays from
 // double's (the GPU evaluates f in float), a function above the operation limit and a surface
 // that provably does not meet its box are errors too.
+#include <array>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -105,6 +106,9 @@ Shape read_implicit(TableReader& t) {
     dvec3 lo, hi;
     surface::implicit_world_bounds(s, lo, hi);
     check_world_extent(t, t.has("transform") ? "transform" : "box", lo, hi);
+    std::array<dvec3, 2> search{s.box_lo, s.box_hi};
+    surface::shrink_to_surface(s, search[0], search[1]);
+    s.search_box = search;
     return object;
 }
 

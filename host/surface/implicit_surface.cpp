@@ -54,12 +54,14 @@ dvec3 implicit_normal(const ImplicitSurface& s, const dvec3& world) {
     return {0.0, 0.0, 1.0};
 }
 
-bool proved_without_zero(const ImplicitSurface& s, int budget) {
+bool proved_without_zero(const ImplicitSurface& s, int budget) { return proved_without_zero(s, s.box_lo, s.box_hi, budget); }
+
+bool proved_without_zero(const ImplicitSurface& s, const dvec3& lo, const dvec3& hi, int budget) {
     struct Box {
         Interval axis[3];
     };
-    std::vector<Box> boxes{{{{s.box_lo.x, s.box_hi.x}, {s.box_lo.y, s.box_hi.y}, {s.box_lo.z, s.box_hi.z}}}};
-    const dvec3 size = s.box_hi - s.box_lo;
+    std::vector<Box> boxes{{{{lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}}}};
+    const dvec3 size = hi - lo;
     while (!boxes.empty()) {
         Box box = boxes.back();
         boxes.pop_back();
@@ -76,6 +78,34 @@ bool proved_without_zero(const ImplicitSurface& s, int budget) {
         boxes.push_back(high);
     }
     return true;
+}
+
+void shrink_to_surface(const ImplicitSurface& s, dvec3& lo, dvec3& hi) {
+    constexpr double kResolution = 1.0 / 64;  // of the box's size on that axis
+    constexpr int kSlabBudget = 16;           // sub-boxes to prove one slab empty
+    const dvec3 original_lo = lo, original_hi = hi;
+    for (bool moved = true; moved;) {
+        moved = false;
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int side = 0; side < 2; ++side) {
+                // The widest slab at this face that holds no zero, halving down to the resolution.
+                for (double w = 0.5 * (hi[axis] - lo[axis]); w > kResolution * (hi[axis] - lo[axis]);) {
+                    dvec3 slab_lo = lo, slab_hi = hi;
+                    if (side == 0) slab_hi[axis] = lo[axis] + w;
+                    else slab_lo[axis] = hi[axis] - w;
+                    if (proved_without_zero(s, slab_lo, slab_hi, kSlabBudget)) {
+                        (side == 0 ? lo : hi)[axis] = side == 0 ? slab_hi[axis] : slab_lo[axis];
+                        moved = true;
+                    } else {
+                        w *= 0.5;
+                    }
+                }
+            }
+        }
+    }
+    const dvec3 margin = kResolution * (hi - lo);
+    lo = glm::max(original_lo, lo - margin);
+    hi = glm::min(original_hi, hi + margin);
 }
 
 glm::dvec2 implicit_texture_uv(const ImplicitSurface& s, const dvec3& p) {

@@ -3,6 +3,7 @@
 // placed in the world by an affine transform. When f is a polynomial its expansion is kept too:
 // the CPU reference then intersects rays with it exactly (companion matrix), any other f by
 // interval Newton.
+#include <array>
 #include <optional>
 
 #include <glm/mat4x4.hpp>
@@ -22,6 +23,9 @@ struct ImplicitSurface {
     Program program;                         // f compiled: one output
     std::optional<Polynomial3> polynomial;   // the expansion, when f is a polynomial
     dvec3 box_lo{-1.0}, box_hi{1.0};         // the box f = 0 is clipped to, in the surface's coordinates
+    // The part of the box where the surface can be (shrink_to_surface, when loaded; unset: all of
+    // it): where the GPU searches. The box itself still maps textures.
+    std::optional<std::array<dvec3, 2>> search_box;
     glm::dmat4 to_world{1.0};                // affine: surface coordinates -> world
     glm::dmat4 to_local{1.0};                // its inverse
 
@@ -48,6 +52,13 @@ glm::dvec2 implicit_texture_uv(const ImplicitSurface& s, const dvec3& local);
 // Whether interval arithmetic proves, within `budget` sub-boxes, that f has no zero in the box
 // (f > 0 or f < 0 wherever it is defined there): the surface is empty. False when it cannot tell.
 bool proved_without_zero(const ImplicitSurface& s, int budget = 4096);
+bool proved_without_zero(const ImplicitSurface& s, const dvec3& lo, const dvec3& hi, int budget);
+
+// The box [lo, hi] shrunk, face by face, past slabs of it that interval arithmetic proves hold no
+// zero of f, to within 1/64 of its size (and a margin of that much again): the part of the
+// surface's box where the surface can be. A unit sphere given a box of 10^6 gets one of about its
+// own size, whose scale the GPU's float search can resolve.
+void shrink_to_surface(const ImplicitSurface& s, dvec3& lo, dvec3& hi);
 
 // The surface's box in world space (the transformed box's eight corners, boxed).
 void implicit_world_bounds(const ImplicitSurface& s, dvec3& lo, dvec3& hi);

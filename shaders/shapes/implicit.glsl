@@ -141,7 +141,8 @@ bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out f
             if (hit) {
                 t_hit = t0 + s;
                 vec3 p = base + s * d;
-                uv_hit = (p.xy - lo.xy) / (hi.xy - lo.xy);
+                vec4 box = implicit_at(surface).texture_box;
+                uv_hit = (p.xy - box.xy) / (box.zw - box.xy);
                 error = spread + hit_point_rounding(ray.origin, t_hit);
                 return true;
             }

@@ -113,6 +113,46 @@ TEST(ImplicitExactness, APolynomialOfManyClusteredRootsIsItsFactors) {
     }
 }
 
+// A unit sphere given a box of 10^4 to 10^6 on each side: the float search worked in steps of
+// the box's scale and tore the sphere (37.5% of the pixels off at 10^6). The loader shrinks the
+// box to where the surface can be (surface::shrink_to_surface), both backends search only there,
+// and the picture is the one with a tight box, on both.
+TEST(ImplicitExactness, ASurfaceInAHugeBoxIsSearchedWhereItIs) {
+    const std::string head = R"(
+        [render]
+        width = 96
+        height = 64
+        samples = 2
+        [camera]
+        eye = [0.5, 1.2, -4]
+        look_at = [0, 0, 0]
+        fov = 45
+        [[light]]
+        position = [-4, 6, -5]
+        [material.m]
+        color = [0.8, 0.5, 0.2]
+        specular = 0.5
+        [[object]]
+        type = "implicit"
+        function = "x^2 + y^2 + z^2 - 1"
+        material = "m"
+    )";
+    auto boxed = [&](double side) {
+        return test::scene_from_text(head + fmt::format("box = {{ min = [{0}, {0}, {0}], max = [{1}, {1}, {1}] }}\n", -side, side));
+    };
+    const Scene tight = boxed(1.1);
+    for (double side : {1e4, 1e5, 1e6}) {
+        SCOPED_TRACE(side);
+        const Scene huge = boxed(side);
+        const auto& search = std::get<ImplicitObject>(huge.objects[0].shape).surface.search_box;
+        ASSERT_TRUE(search.has_value());
+        EXPECT_LT(glm::length((*search)[1] - (*search)[0]), 10.0) << "the box was not shrunk to the sphere";
+        for (test::Backend backend : {test::Backend::Gpu, test::Backend::Cpu})
+            test::expect_same_picture(fmt::format("huge-box-{}-{}", side, test::backend_name(backend)),
+                                      to_srgb8(test::render_on(backend, huge)), to_srgb8(test::render_on(backend, tight)));
+    }
+}
+
 // Every implicit surface of scenes/, alone, from several directions: the first hit of the ray
 // through each pixel's centre on the GPU (float interval arithmetic and Newton) against the CPU
 // reference's certified root. Where the ray meets the surface at |n.d| >= 0.2 they must agree:

@@ -377,19 +377,22 @@ private:
 std::vector<ImplicitRoot> roots_along(const ImplicitSurface& f, const Ray& ray, double t_min, double t_max, bool all) {
     const dvec3 o = dvec3(f.to_local * glm::dvec4(ray.origin, 1.0));
     const dvec3 d = glm::dmat3(f.to_local) * ray.dir;
+    // Only where the surface can be (the loader proved the rest of the box empty): the root bound
+    // is relative to it, not to a box chosen far too large.
+    const dvec3 box_lo = f.search_box ? (*f.search_box)[0] : f.box_lo, box_hi = f.search_box ? (*f.search_box)[1] : f.box_hi;
     double t0 = t_min, t1 = t_max;
     for (int i = 0; i < 3; ++i) {
         if (d[i] == 0.0) {
-            if (o[i] < f.box_lo[i] || o[i] > f.box_hi[i]) return {};
+            if (o[i] < box_lo[i] || o[i] > box_hi[i]) return {};
             continue;
         }
-        double a = (f.box_lo[i] - o[i]) / d[i], b = (f.box_hi[i] - o[i]) / d[i];
+        double a = (box_lo[i] - o[i]) / d[i], b = (box_hi[i] - o[i]) / d[i];
         if (a > b) std::swap(a, b);
         t0 = std::max(t0, a);
         t1 = std::min(t1, b);
     }
     if (!(t0 <= t1) || !std::isfinite(t0) || !std::isfinite(t1)) return {};
-    const double e = kRootBound * glm::length(f.box_hi - f.box_lo) / glm::length(d);
+    const double e = kRootBound * glm::length(box_hi - box_lo) / glm::length(d);
     const ImplicitRay r{o + t0 * d, d, t0};
     return RootFinder(f, r, 0.0, t1 - t0, t_min, t_max, e, all).run();
 }

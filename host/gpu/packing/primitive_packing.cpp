@@ -131,10 +131,18 @@ struct PrimitivePacker {
         info.row0 = vec4(float(m[0][0]), float(m[1][0]), float(m[2][0]), float(m[3][0]));
         info.row1 = vec4(float(m[0][1]), float(m[1][1]), float(m[2][1]), float(m[3][1]));
         info.row2 = vec4(float(m[0][2]), float(m[1][2]), float(m[2][2]), float(m[3][2]));
+        info.texture_box = vec4(float(s.box_lo.x), float(s.box_lo.y), float(s.box_hi.x), float(s.box_hi.y));
         out.implicits.push_back(info);
+        // Searched only where the surface can be: a box of 10^6 around a unit sphere is beyond
+        // what the float search resolves.
+        surface::ImplicitSurface searched = s;
+        if (s.search_box) {
+            searched.box_lo = (*s.search_box)[0];
+            searched.box_hi = (*s.search_box)[1];
+        }
         Aabb world;
-        surface::implicit_world_bounds(s, world.lo, world.hi);
-        add({SHAPE_IMPLICIT, material, index, object, v4(s.box_lo), v4(s.box_hi), {}}, world);
+        surface::implicit_world_bounds(searched, world.lo, world.hi);
+        add({SHAPE_IMPLICIT, material, index, object, v4(searched.box_lo), v4(searched.box_hi), {}}, world);
     }
 
     // Each patch becomes 2^n x 2^n leaves (exact sub-patches, de Casteljau in double): smaller
