@@ -83,19 +83,27 @@ bool proved_without_zero(const ImplicitSurface& s, const dvec3& lo, const dvec3&
 void shrink_to_surface(const ImplicitSurface& s, dvec3& lo, dvec3& hi) {
     constexpr double kResolution = 1.0 / 64;  // of the box's size on that axis
     constexpr int kSlabBudget = 16;           // sub-boxes to prove one slab empty
+    constexpr int kMaxSlabs = 2000;           // slabs tried in all: a bound on the work, never reached by a box of sane numbers
     const dvec3 original_lo = lo, original_hi = hi;
-    for (bool moved = true; moved;) {
+    int slabs = 0;
+    for (bool moved = true; moved && slabs < kMaxSlabs;) {
         moved = false;
         for (int axis = 0; axis < 3; ++axis) {
             for (int side = 0; side < 2; ++side) {
                 // The widest slab at this face that holds no zero, halving down to the resolution.
-                for (double w = 0.5 * (hi[axis] - lo[axis]); w > kResolution * (hi[axis] - lo[axis]);) {
+                for (double w = 0.5 * (hi[axis] - lo[axis]); w > kResolution * (hi[axis] - lo[axis]) && slabs < kMaxSlabs; ++slabs) {
                     dvec3 slab_lo = lo, slab_hi = hi;
                     if (side == 0) slab_hi[axis] = lo[axis] + w;
                     else slab_lo[axis] = hi[axis] - w;
+                    double& face = side == 0 ? lo[axis] : hi[axis];
+                    const double moved_to = side == 0 ? slab_hi[axis] : slab_lo[axis];
+                    // A face that would not move (w below the coordinate's rounding) or pass the
+                    // other one ends the search on this side.
+                    if (moved_to == face || !(slab_lo[axis] < slab_hi[axis]) || !(lo[axis] < hi[axis])) break;
                     if (proved_without_zero(s, slab_lo, slab_hi, kSlabBudget)) {
-                        (side == 0 ? lo : hi)[axis] = side == 0 ? slab_hi[axis] : slab_lo[axis];
+                        face = moved_to;
                         moved = true;
+                        w = std::min(w, 0.5 * (hi[axis] - lo[axis]));
                     } else {
                         w *= 0.5;
                     }

@@ -40,7 +40,7 @@ using surface::Interval;
 constexpr double kRootBound = 1e-10;   // of the box's diagonal (along the ray): a root's certified accuracy
 constexpr double kNearReal = 1e-3;     // eigenvalues this close to the real axis are candidates (t scaled to [-1, 1])
 constexpr double kCluster = 1e-6;      // real eigenvalues this close may be a double root split by rounding
-constexpr int kMaxIntervalSteps = 20000;  // per search; a pathological ray ends with what it found so far
+constexpr int kMaxIntervalSteps = 20000;  // per ray, all searches together; a pathological ray ends with what it found so far
 constexpr double kRootGuard = 4.0;        // root bounds on each side of a found root left to its certificate
 constexpr double kTouchingGuard = 1e-6;   // of the segment on each side of a touching point: the same point
 constexpr double kGapPiece = 16.0;        // root bounds: a piece this short goes to interval Newton on f
@@ -267,7 +267,8 @@ private:
         thread_local std::vector<Piece> stack;
         stack.assign(1, {from, to, 0});
         const std::size_t before = roots_.size();
-        while (!stack.empty() && !(done() && roots_.size() > before)) {
+        while (!stack.empty() && steps_left_ > 0 && !(done() && roots_.size() > before)) {
+            --steps_left_;
             const Piece p = stack.back();
             stack.pop_back();
             if (excluded_by_taylor(p.a, p.b)) continue;
@@ -312,7 +313,7 @@ private:
         thread_local std::vector<Interval> stack;
         stack.assign(1, Interval{from, to});
         const std::size_t before = roots_.size();
-        for (int steps = 0; !stack.empty() && steps < kMaxIntervalSteps && !(done() && roots_.size() > before); ++steps) {
+        for (; !stack.empty() && steps_left_ > 0 && !(done() && roots_.size() > before); --steps_left_) {
             Interval piece = stack.back();
             stack.pop_back();
             Dual<Interval> g;
@@ -369,6 +370,7 @@ private:
     bool all_;
     std::vector<ImplicitRoot> roots_;
     std::vector<double> coeffs_;  // g(centre_ + half_ tau), by_eigenvalues' restriction
+    int steps_left_ = kMaxIntervalSteps;
     double centre_ = 0.0, half_ = 1.0;
     double touching_until_ = -std::numeric_limits<double>::infinity();  // the end of the last touching piece
 };
