@@ -6,7 +6,8 @@
 // undefined or infinite everywhere in the box, a polynomial above the degree limit, an empty box
 // a constant beyond float's range, a function whose float evaluation overflows or strays from
 // double's (the GPU evaluates f in float), a function above the operation limit and a surface
-// that provably does not meet its box are errors too.
+// that provably does not meet its box, or whose zeros fill a region or a face of the box, are
+// errors too.
 #include <array>
 #include <cmath>
 
@@ -94,6 +95,8 @@ Shape read_implicit(TableReader& t) {
         t.fail("function", t.what() + (c == 0.0 ? ": the function is 0 everywhere: the surface would fill its whole box"
                                                 : fmt::format(": the function is the constant {:g}: it is 0 nowhere", c)));
     }
+    if (std::optional<std::string> degenerate = surface::degenerate_zero_set(s))
+        t.fail("function", t.what() + ": " + *degenerate);
     s.place(read_transform(t));
     if (surface::proved_without_zero(s)) {
         dvec3 centre = 0.5 * (s.box_lo + s.box_hi);

@@ -10,6 +10,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include <fmt/format.h>
+
 namespace lancer::surface {
 namespace {
 
@@ -130,6 +132,59 @@ void implicit_world_bounds(const ImplicitSurface& s, dvec3& lo, dvec3& hi) {
         lo = glm::min(lo, w);
         hi = glm::max(hi, w);
     }
+}
+
+}  // namespace lancer::surface
+
+namespace lancer::surface {
+
+std::optional<std::string> degenerate_zero_set(const ImplicitSurface& s) {
+    // f is 0 at a point where its outward-rounded interval value there holds 0: as far as
+    // double's arithmetic can tell, whatever the scale of f's terms at that point.
+    const auto zero_at = [&](const dvec3& p) {
+        const Interval xyz[] = {p.x, p.y, p.z};
+        Interval f;
+        evaluate_program<Interval>(s.program, xyz, &f);
+        return !f.is_empty() && f.contains(0.0);
+    };
+    // Cell centres of an n^3 grid (never on the box's faces), and an n^2 grid on each face.
+    constexpr int n = 12;
+    const dvec3 size = s.box_hi - s.box_lo;
+    std::vector<char> grid(n * n * n);
+    const auto at = [&](int i, int j, int k) { return grid[(i * n + j) * n + k] != 0; };
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) grid[(i * n + j) * n + k] = zero_at(s.box_lo + size * (dvec3(i, j, k) + 0.5) / double(n));
+    const auto face_is_zero = [&](int axis, int side) {
+        for (int a = 0; a < n; ++a)
+            for (int b = 0; b < n; ++b) {
+                dvec3 t(0.0);
+                t[(axis + 1) % 3] = (a + 0.5) / n;
+                t[(axis + 2) % 3] = (b + 0.5) / n;
+                t[axis] = side;
+                if (!zero_at(s.box_lo + size * t)) return false;
+            }
+        return true;
+    };
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side)
+            if (face_is_zero(axis, side))
+                return fmt::format("the function is 0 all over the box's face {} = {:g}: the surface lies on the box's "
+                                   "boundary, where the clipping decides whether it is seen; make the box larger or "
+                                   "smaller across it",
+                                   "xyz"[axis], side ? s.box_hi[axis] : s.box_lo[axis]);
+    for (int i = 1; i + 1 < n; ++i)
+        for (int j = 1; j + 1 < n; ++j)
+            for (int k = 1; k + 1 < n; ++k)
+                if (at(i, j, k) && at(i - 1, j, k) && at(i + 1, j, k) && at(i, j - 1, k) && at(i, j + 1, k) &&
+                    at(i, j, k - 1) && at(i, j, k + 1)) {
+                    const dvec3 p = s.box_lo + size * (dvec3(i, j, k) + 0.5) / double(n);
+                    return fmt::format("the function is 0 throughout a region of the box (at ({:g}, {:g}, {:g}) and "
+                                       "all around it), not only on a surface: a solid of zeros has no surface in it "
+                                       "to find; write a function that changes sign across the surface you mean",
+                                       p.x, p.y, p.z);
+                }
+    return std::nullopt;
 }
 
 }  // namespace lancer::surface

@@ -5,6 +5,7 @@
 // interval Newton.
 #include <array>
 #include <optional>
+#include <string>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -59,6 +60,13 @@ bool proved_without_zero(const ImplicitSurface& s, const dvec3& lo, const dvec3&
 // surface's box where the surface can be. A unit sphere given a box of 10^6 gets one of about its
 // own size, whose scale the GPU's float search can resolve.
 void shrink_to_surface(const ImplicitSurface& s, dvec3& lo, dvec3& hi);
+
+// Where f's zero set is not a surface that both renderers can find the same way, what it is
+// instead, for the loader's error: f is 0 over one of the box's faces (the surface lies on the
+// box's boundary, where clipping decides whether it is seen) or throughout a region of the box (a
+// solid of zeros has no surface in it to find). Found by sampling f with interval arithmetic on a
+// grid of the box and of each face (0 where the rounding cannot tell f from 0); nothing otherwise.
+std::optional<std::string> degenerate_zero_set(const ImplicitSurface& s);
 
 // The surface's box in world space (the transformed box's eight corners, boxed).
 void implicit_world_bounds(const ImplicitSurface& s, dvec3& lo, dvec3& hi);

@@ -88,6 +88,10 @@ TEST(FloatRange, NormalsOfHugeAndTinyScalesAreTheReferences) {
         {"implicit 1e20 (x^2 + y^2 + z^2 - 1)",
          std::string(kStage) + "type = \"implicit\"\nfunction = \"1e20*(x^2 + y^2 + z^2 - 1)\"\n"
                                "box = { min = [-1.1, -1.1, -1.1], max = [1.1, 1.1, 1.1] }\n"},
+        {"implicit torus, a quartic times 1e-6",
+         std::string(kStage) + "type = \"implicit\"\n"
+                               "function = \"1e-6*((x^2 + y^2 + z^2 + 0.8)^2 - 4*(x^2 + z^2))\"\n"
+                               "box = { min = [-1.5, -0.5, -1.5], max = [1.5, 0.5, 1.5] }\n"},
         {"implicit 1e-30 (x^2 + y^2 + z^2 - 1)",
          std::string(kStage) + "type = \"implicit\"\nfunction = \"1e-30*(x^2 + y^2 + z^2 - 1)\"\n"
                                "box = { min = [-1.1, -1.1, -1.1], max = [1.1, 1.1, 1.1] }\n"},

@@ -9,9 +9,12 @@
 #include <fstream>
 #include <string>
 
+#include <fmt/format.h>
+
 #include <gtest/gtest.h>
 
 #include "cpu/cpu_renderer.hpp"
+#include "gpu/vulkan/driver_memory.hpp"
 #include "image/image.hpp"
 #include "support/test_support.hpp"
 
@@ -107,6 +110,47 @@ TEST(MemoryLimits, CpuReferenceRendersWithTheThreadsThatFit) {
     setrlimit(RLIMIT_AS, &before);
     EXPECT_TRUE(rendered);
     EXPECT_EQ(width, 32);
+}
+
+// `count` small implicit surfaces that are not polynomials, `extra` adding operations to each
+// (issue 42: 32 of them crashed lavapipe inside the address space lancer's check had passed).
+std::string implicit_surfaces_scene(int count, bool extra) {
+    std::string toml = "[render]\nwidth = 120\nheight = 90\nsamples = 1\n"
+                       "[camera]\neye = [0, 0, -12]\nlook_at = [0, 0, 0]\nfov = 50\n"
+                       "[[light]]\nposition = [-10, 10, -10]\n";
+    for (int i = 0; i < count; ++i)
+        toml += fmt::format("[[object]]\ntype = \"implicit\"\n"
+                            "function = \"x^2 + y^2 + z^2 - 0.16 + 0.02*{}\"\n"
+                            "box = {{ min = [-0.6, -0.6, -0.6], max = [0.6, 0.6, 0.6] }}\n"
+                            "transform = {{ translate = [{}, {}, 0] }}\n",
+                            extra ? fmt::format("(sin({}*x)*cos(y) + sin(y)*cos(z))", i + 1)
+                                  : fmt::format("sin({}*x + y)", i + 1),
+                            1.3 * (i % 8 - 3.5), 1.3 * (i / 8 - 1.5));
+    return toml;
+}
+
+// The render's estimate covers, by 10%, the peak address space these scenes were measured to
+// take (VmPeak of a cold render, one malloc arena as under a limit; `bench/memory_peaks.sh`
+// measures them again), on both lavapipes lancer runs on. `in_use` is the address space the
+// process held at the check (the driver started), from the need lancer printed for each.
+TEST(MemoryLimits, TheRenderEstimateCoversTheMeasuredPeaksOfManyImplicitSurfaces) {
+    struct Measured {
+        int surfaces;
+        bool extra;
+        const char* driver;
+        int in_use_mib, peak_mib;
+    };
+    const Measured measured[] = {
+        {8, false, "Mesa 25.0.7", 351, 551},    {32, false, "Mesa 25.0.7", 351, 1113},
+        {32, true, "Mesa 25.0.7", 351, 1763},   {8, false, "Mesa 22.3.6", 270, 512},
+        {32, false, "Mesa 22.3.6", 270, 1195},  {32, true, "Mesa 22.3.6", 270, 1990},
+    };
+    for (const Measured& m : measured) {
+        const Scene scene = test::scene_from_text(implicit_surfaces_scene(m.surfaces, m.extra));
+        const double need_mib = m.in_use_mib + double(gpu::render_memory_estimate(scene, 0).address_space) / (1 << 20);
+        EXPECT_GE(need_mib, 1.1 * m.peak_mib) << m.surfaces << " surfaces" << (m.extra ? " of more operations" : "")
+                                              << " on " << m.driver;
+    }
 }
 
 }  // namespace

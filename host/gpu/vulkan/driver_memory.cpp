@@ -34,15 +34,15 @@ void check_driver_startup_memory() {
     check_memory_headroom(address_space, 140 * kMiB, "the Vulkan driver", kAdvice);
 }
 
-void check_render_memory(const Scene& scene, std::uint64_t scene_buffer_bytes) {
+RenderMemoryEstimate render_memory_estimate(const Scene& scene, std::uint64_t scene_buffer_bytes) {
     // The float image on the host and its copy while it is converted, the scene's buffers (host
     // visible memory on lavapipe: both host and device), and the pipeline compile: with
     // expression surfaces, glslang's run-time compile and a larger LLVM compile (the torus needs
     // 400 to 450 MiB of address space in all, against 386 for a scene without them), and about
-    // 0.6 MiB more for every operation (measured: 205 MiB peak resident memory for a
-    // one-operation surface, 508 MiB for 511 operations).
+    // 0.6 MiB more for every operation of a parametric surface (measured: 205 MiB peak resident
+    // memory for a one-operation surface, 508 MiB for 511 operations).
     const std::uint64_t image = std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height) * 16;
-    std::uint64_t operations = 0;
+    std::uint64_t operations = 0, implicit_operations = 0;
     bool expressions = false;
     for (const Object& o : scene.objects) {
         if (const auto* p = std::get_if<ParametricObject>(&o.shape)) {
@@ -51,15 +51,25 @@ void check_render_memory(const Scene& scene, std::uint64_t scene_buffer_bytes) {
             operations += static_cast<std::uint64_t>(surface::count_operations(surface::compile_program(xyz)));
         } else if (const auto* i = std::get_if<ImplicitObject>(&o.shape)) {
             // f becomes three functions in the tracer (value and derivative along the ray, gradient,
-            // interval enclosure), so each operation is counted three times: an upper estimate, not
-            // measured as the parametric figure above was.
+            // interval enclosure), so each operation is counted three times.
             expressions = true;
-            operations += 3 * static_cast<std::uint64_t>(surface::count_operations(i->surface.program));
+            const auto n = static_cast<std::uint64_t>(surface::count_operations(i->surface.program));
+            operations += 3 * n;
+            implicit_operations += n;
         }
     }
-    const std::uint64_t compile = (expressions ? 128 : 32) * kMiB + operations * (kMiB * 3 / 4);
-    check_memory_headroom(2 * image + 2 * scene_buffer_bytes + compile, 2 * image + scene_buffer_bytes + compile,
-                          "this render", kAdvice);
+    // The driver's compile of many implicit surfaces grows with the square of their operations
+    // (docs/robustness.md, "Implicit surfaces' compile": 32 surfaces of 16 operations each peak
+    // at 1.76 GiB of address space on Mesa 25 and 1.99 GiB on Mesa 22.3, 0.4 GiB over the linear
+    // estimate); 2.5 KiB per operation squared covers both drivers' measured peaks by 10%.
+    const std::uint64_t compile = (expressions ? 128 : 32) * kMiB + operations * (kMiB * 3 / 4) +
+                                  implicit_operations * implicit_operations * (kMiB * 5 / 2048);
+    return {2 * image + 2 * scene_buffer_bytes + compile, 2 * image + scene_buffer_bytes + compile};
+}
+
+void check_render_memory(const Scene& scene, std::uint64_t scene_buffer_bytes) {
+    const RenderMemoryEstimate need = render_memory_estimate(scene, scene_buffer_bytes);
+    check_memory_headroom(need.address_space, need.resident, "this render", kAdvice);
 }
 
 }  // namespace lancer::gpu

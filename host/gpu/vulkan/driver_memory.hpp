@@ -14,6 +14,13 @@ namespace lancer::gpu {
 // Throws UserError when starting the GPU backend does not fit under the process's limits.
 void check_driver_startup_memory();
 
+// What rendering `scene` takes beyond the driver's start: address space and resident memory.
+struct RenderMemoryEstimate {
+    std::uint64_t address_space;
+    std::uint64_t resident;
+};
+RenderMemoryEstimate render_memory_estimate(const Scene& scene, std::uint64_t scene_buffer_bytes);
+
 // Throws UserError when rendering `scene` (its buffers, the image and the pipeline it needs) does
 // not fit in what is left.
 void check_render_memory(const Scene& scene, std::uint64_t scene_buffer_bytes);
