@@ -116,6 +116,21 @@ TEST(SpirvSpecialisation, FoldsEveryConstantForEachCleanup) {
                 << "shapes " << f.scene_shapes << ", cleanup " << int(cleanup);
 }
 
+// A hit is not specialised again: a well-formed entry for this key (right name, key and checksum)
+// holding other valid words is what comes back. So the checksum is no signature: whoever can
+// write the directory can make entries (docs/robustness.md).
+TEST_F(SpirvCache, AWellFormedEntryIsUsedAsItIs) {
+    gpu::ShaderFeatures other = features_;
+    other.add_shape(SHAPE_BOX);
+    const std::vector<std::uint32_t> stand_in = gpu::specialize_spirv(spirv_, other);
+    ASSERT_NE(stand_in, gpu::specialize_spirv(spirv_, features_));
+    const Sha256Digest key = gpu::cache_entry::specialization_key(spirv_, features_, gpu::SpirvCleanup::dead_code);
+    const std::string bytes = gpu::cache_entry::encode_specialization(key, stand_in);
+    std::ofstream(dir_ + "/tracer-" + to_hex(key) + ".spv", std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), stand_in);
+    EXPECT_EQ(entries().size(), 1u);
+}
+
 // Two feature sets whose 64-bit FNV-1a keys (the cache's key before issue 42) collide: a scene
 // crafted to collide with another's must not get, or leave for it, the other's tracer.
 TEST_F(SpirvCache, InputsWhoseWeakKeysCollideKeepTheirOwnEntries) {
