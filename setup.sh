@@ -21,7 +21,7 @@ packages=(
   cmake ninja-build g++ pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-dev glslang-tools spirv-tools
-  libglm-dev libstb-dev libdeflate-dev liblapacke-dev libopenblas-dev libopenexr-dev
+  libglm-dev libstb-dev libdeflate-dev liblapacke-dev libopenblas-dev libopenexr-dev libssl-dev
   libtomlplusplus-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg

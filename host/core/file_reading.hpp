@@ -4,6 +4,7 @@
 // blocks: opening a FIFO waits for a writer, reading one waits for data. Such a call returns EINTR
 // (lancer's handlers do not restart system calls), and these functions then throw Cancelled.
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace lancer {
@@ -31,5 +32,16 @@ struct FileText {
     bool complete = true;  // false: the file is larger than the limit
 };
 FileText read_file(const std::string& path, std::size_t limit);
+
+// Files lancer reads that are not the user's explicit input (cache entries; the names a cache
+// entry asks for) may be anything someone else put there: a FIFO, whose open waits for a writer
+// and whose read waits for data; a device; a symbolic link to either; a huge file. This opens
+// without waiting (O_NONBLOCK), without following a link in the last component (O_NOFOLLOW,
+// unless `links` is follow) and reads only a regular file (fstat) of at most `max_bytes`.
+// Anything else, or any error, is nullopt: the caller treats it as a miss. Never throws but
+// std::bad_alloc; never blocks (a regular file's read does not wait for a writer).
+enum class Links { refuse, follow };
+std::optional<std::string> read_regular_file_nonblocking(const std::string& path, std::size_t max_bytes,
+                                                         Links links = Links::refuse);
 
 }  // namespace lancer

@@ -1,11 +1,18 @@
 #include "fuzz/fuzz_entries.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
+#include <unistd.h>
 #include <glm/geometric.hpp>
 
 #include "accel/bvh.hpp"
@@ -13,6 +20,7 @@
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/shapes/shapes.hpp"
 #include "gpu/packing/scene_packing.hpp"
+#include "gpu/shaders/spirv_cache.hpp"
 #include "scene/animation.hpp"
 #include "scene/camera.hpp"
 #include "scene/load_scene.hpp"
@@ -404,6 +412,80 @@ void patch_entry(const std::uint8_t* data, std::size_t size) {
         require_finite(surface::evaluate(p, 0.5, 0.5), "patch point");
         require_finite(surface::unit_normal(p, 0.0, 0.0), "patch normal");
     }
+}
+
+namespace {
+
+// Where cache_file_entry writes its entry: a directory of this process's own, removed at exit
+// (the path is never freed: the handler may run after static objects are destroyed).
+const std::string& cache_entry_path() {
+    static const std::string* path = [] {
+        namespace fs = std::filesystem;
+        const fs::path dir = fs::temp_directory_path() / fmt::format("lancer-fuzz-cache-{}", ::getpid());
+        fs::create_directories(dir);
+        auto* p = new std::string((dir / "entry.spv").string());
+        std::atexit([] {
+            std::error_code ec;
+            std::filesystem::remove_all(std::filesystem::path(*path).parent_path(), ec);
+        });
+        return p;
+    }();
+    return *path;
+}
+
+// The shader files a fuzzed compile's manifest is checked against.
+std::optional<std::string> cache_fuzz_tree(const std::string& name) {
+    static const std::map<std::string, std::string> files{{"main.comp", "#version 450\n#include \"a.glsl\"\nvoid main() {}\n"},
+                                                          {"a.glsl", "float a() { return 1.0; }\n"}};
+    if (auto f = files.find(name); f != files.end()) return f->second;
+    return std::nullopt;
+}
+
+std::vector<std::uint32_t> words_of(std::string_view bytes) {
+    std::vector<std::uint32_t> words(bytes.size() / 4);
+    if (!words.empty()) std::memcpy(words.data(), bytes.data(), words.size() * 4);
+    return words;
+}
+
+}  // namespace
+
+void cache_file_entry(const std::uint8_t* data, std::size_t size) {
+    namespace entry = gpu::cache_entry;
+    if (size == 0) return;
+    const bool compiled = data[0] & 1, sealed = data[0] & 2;
+    const std::string_view rest = as_text(data + 1, size - 1);
+    // The key a lookup asks for: that of a fixed set of inputs.
+    static const Sha256Digest key = sha256("lancer fuzz: the key looked up");
+    std::string bytes;
+    std::vector<std::uint32_t> sealed_words;
+    if (!sealed) {
+        bytes = std::string(rest);
+    } else if (!compiled) {
+        sealed_words = words_of(rest);
+        bytes = entry::encode_specialization(key, sealed_words);
+    } else {
+        const std::size_t manifest_bytes = rest.size() < 2 ? 0 : std::min<std::size_t>(
+            rest.size() - 2, static_cast<unsigned char>(rest[0]) | static_cast<std::size_t>(static_cast<unsigned char>(rest[1])) << 8);
+        const std::string manifest(rest.substr(std::min<std::size_t>(2, rest.size()), manifest_bytes));
+        sealed_words = words_of(rest.substr(std::min<std::size_t>(2, rest.size()) + manifest_bytes));
+        bytes = entry::encode_compiled(key, manifest, sealed_words);
+    }
+    {
+        std::ofstream out(cache_entry_path(), std::ios::binary | std::ios::trunc);
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        require(bool(out.flush()), "cannot write the fuzz entry");
+    }
+    const std::optional<std::vector<std::uint32_t>> hit =
+        compiled ? entry::read_compiled(cache_entry_path(), key, cache_fuzz_tree) : entry::read_specialization(cache_entry_path(), key);
+    if (hit) {
+        require(!hit->empty() && hit->size() <= entry::kMaxEntryWords, "a hit of no words or too many");
+        const std::size_t word_bytes = hit->size() * sizeof(std::uint32_t);
+        require(word_bytes <= bytes.size() && std::memcmp(hit->data(), bytes.data() + bytes.size() - word_bytes, word_bytes) == 0,
+                "a hit is not the words at the entry's end");
+        if (!compiled) require(entry::encode_specialization(key, *hit) == bytes, "a hit that is not a well-formed entry");
+        if (sealed) require(*hit == sealed_words, "a sealed entry's hit is not its words");
+    }
+    if (sealed && !compiled) require(hit.has_value() == !sealed_words.empty(), "a sealed specialisation with words was a miss");
 }
 
 }  // namespace lancer::fuzz

@@ -44,4 +44,14 @@ void expression_entry(const std::uint8_t* data, std::size_t size);
 // A patch file (.bpt or Newell) -> patches, bounded, split and evaluated.
 void patch_entry(const std::uint8_t* data, std::size_t size);
 
+// An entry of the on-disk SPIR-V cache (gpu/shaders/spirv_cache), written to a file and looked up
+// as cached_specialization and cached_compile look theirs up (read_specialization, read_compiled:
+// the same open, bounds, key and checksum checks, and a compile's manifest against a small tree of
+// shader files). The first byte chooses: bit 0, a specialisation's entry or a compile's; bit 1,
+// the rest is the whole entry, or the rest is sealed first (given the key asked for and a correct
+// checksum, so that the checks past the checksum are reached: a compile's manifest; for a compile
+// the rest is then a 2-byte manifest length, the manifest and the words). The lookup must return
+// a miss or exactly the words the entry holds; a sealed specialisation with words must be a hit.
+void cache_file_entry(const std::uint8_t* data, std::size_t size);
+
 }  // namespace lancer::fuzz

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "fuzz/fuzz_entries.hpp"
+#include "gpu/shaders/spirv_cache.hpp"
 #include "scene/scene.hpp"
 #include "support/test_support.hpp"
 
@@ -72,7 +73,8 @@ TEST_P(FuzzReplay, EveryReproducerOfAFixedBugStaysFixed) {
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay,
                          testing::Values(Target{"scene", fuzz::scene_entry}, Target{"expression", fuzz::expression_entry},
-                                         Target{"patch", fuzz::patch_entry}),
+                                         Target{"patch", fuzz::patch_entry},
+                                         Target{"cache_entry", fuzz::cache_file_entry}),
                          [](const auto& info) { return info.param.name; });
 
 // The invariants the scene target checks can fail: a scene the loader would never accept.
@@ -97,6 +99,32 @@ TEST(FuzzInvariants, BreakOnANonFiniteOrDegenerateScene) {
     Scene dangling = scene;
     dangling.objects[0].material = 99;
     EXPECT_THROW(fuzz::check_scene_invariants(dangling, "material index"), fuzz::InvariantBroken);
+}
+
+// The seeds of the cache entry target (tests/fuzz/cache_entry_seeds.py writes them in the cache's
+// format): the well-formed ones are hits, so the fuzzer starts past the checksum.
+TEST(FuzzCacheEntrySeeds, TheWellFormedSeedsAreHits) {
+    const Sha256Digest key = sha256("lancer fuzz: the key looked up");
+    const std::string dir = test::fresh_dir("fuzz-cache-entry-seeds");
+    auto entry = [&](const std::string& seed) {
+        const std::vector<std::uint8_t> data = bytes_of((kFuzzDir / "corpus" / "cache_entry" / seed).string());
+        const std::string path = dir + "/" + seed;
+        std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data.data()) + 1, std::streamsize(data.size() - 1));
+        return path;
+    };
+    const gpu::ShaderTree tree = [](const std::string& name) -> std::optional<std::string> {
+        if (name == "main.comp") return "#version 450\n#include \"a.glsl\"\nvoid main() {}\n";
+        if (name == "a.glsl") return "float a() { return 1.0; }\n";
+        return std::nullopt;
+    };
+    const auto spv = gpu::cache_entry::read_specialization(entry("spv-good"), key);
+    ASSERT_TRUE(spv);
+    EXPECT_EQ(spv->size(), 5u);
+    EXPECT_FALSE(gpu::cache_entry::read_specialization(entry("spv-bad-checksum"), key));
+    const auto compiled = gpu::cache_entry::read_compiled(entry("gls-good"), key, tree);
+    ASSERT_TRUE(compiled);
+    EXPECT_EQ(compiled->size(), 4u);
+    EXPECT_FALSE(gpu::cache_entry::read_compiled(entry("gls-stale-file"), key, tree));
 }
 
 }  // namespace

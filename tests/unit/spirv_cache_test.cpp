@@ -9,6 +9,7 @@
 #include <iterator>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include "gpu/shaders/embedded_shaders.hpp"
 #include "gpu/shaders/shader_compiler.hpp"
@@ -115,29 +116,82 @@ TEST(SpirvSpecialisation, FoldsEveryConstantForEachCleanup) {
                 << "shapes " << f.scene_shapes << ", cleanup " << int(cleanup);
 }
 
-// A hit is not specialised again: an entry whose words were swapped for other (valid) ones, with
-// its checksum made to match, is what comes back.
-TEST_F(SpirvCache, AMatchingEntryIsUsedAsItIs) {
-    gpu::cached_specialization(spirv_, features_);
-    ASSERT_EQ(entries().size(), 1u);
+// A hit is not specialised again: a well-formed entry for this key (right name, key and checksum)
+// holding other valid words is what comes back. So the checksum is no signature: whoever can
+// write the directory can make entries (docs/robustness.md).
+TEST_F(SpirvCache, AWellFormedEntryIsUsedAsItIs) {
     gpu::ShaderFeatures other = features_;
     other.add_shape(SHAPE_BOX);
     const std::vector<std::uint32_t> stand_in = gpu::specialize_spirv(spirv_, other);
     ASSERT_NE(stand_in, gpu::specialize_spirv(spirv_, features_));
-    // Rewrite the entry with the stand-in's words: the header's first 24 bytes (magic, input
-    // hash, features) stay; length and checksum are the stand-in's, taken from its own entry.
+    const Sha256Digest key = gpu::cache_entry::specialization_key(spirv_, features_, gpu::SpirvCleanup::dead_code);
+    const std::string bytes = gpu::cache_entry::encode_specialization(key, stand_in);
+    std::ofstream(dir_ + "/tracer-" + to_hex(key) + ".spv", std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), stand_in);
+    EXPECT_EQ(entries().size(), 1u);
+}
+
+// Two feature sets whose 64-bit FNV-1a keys (the cache's key before issue 42) collide: a scene
+// crafted to collide with another's must not get, or leave for it, the other's tracer.
+TEST_F(SpirvCache, InputsWhoseWeakKeysCollideKeepTheirOwnEntries) {
+    gpu::ShaderFeatures a = features_, b = features_;
+    a.boxed_families = 0xecbe1c6au;  // found by Pollard's rho over (boxed_families, split_families)
+    a.split_families = 0x71cc1a12u;
+    b.boxed_families = 0xd0054817u;
+    b.split_families = 0x40aa8249u;
+    const std::vector<std::uint32_t> fresh_a = gpu::specialize_spirv(spirv_, a), fresh_b = gpu::specialize_spirv(spirv_, b);
+    ASSERT_NE(fresh_a, fresh_b) << "spheres boxed in one, not in the other";
+    EXPECT_EQ(gpu::cached_specialization(spirv_, a), fresh_a);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, b), fresh_b);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, a), fresh_a);
+    EXPECT_EQ(entries().size(), 2u);
+}
+
+// A forged entry: another scene's entry (words, length, checksum) under this entry's name, with
+// this entry's key written into its header. Before issue 42 the same splice of format 2's header
+// (magic, input hash, features) was used as it was: a scene drew with another's tracer. The
+// checksum covers the key, so it is specialised again.
+TEST_F(SpirvCache, AnotherEntrysWordsUnderThisKeyAreSpecialisedAgain) {
+    const std::vector<std::uint32_t> fresh = gpu::specialize_spirv(spirv_, features_);
+    gpu::cached_specialization(spirv_, features_);
+    ASSERT_EQ(entries().size(), 1u);
     const fs::path entry = entries()[0];
-    fs::remove_all(dir_ + "/other");
-    ::setenv("LANCER_CACHE_DIR", (dir_ + "/other").c_str(), 1);
+    gpu::ShaderFeatures other = features_;
+    other.add_shape(SHAPE_BOX);
+    ASSERT_NE(gpu::specialize_spirv(spirv_, other), fresh);
     gpu::cached_specialization(spirv_, other);
-    ASSERT_FALSE(fs::is_empty(dir_ + "/other"));
-    const fs::path other_entry = fs::directory_iterator(dir_ + "/other")->path();
+    ASSERT_EQ(entries().size(), 2u);
+    const fs::path other_entry = entries()[0] == entry ? entries()[1] : entries()[0];
     std::ifstream a(entry, std::ios::binary), b(other_entry, std::ios::binary);
     std::vector<char> mine((std::istreambuf_iterator<char>(a)), {}), theirs((std::istreambuf_iterator<char>(b)), {});
-    std::copy(mine.begin(), mine.begin() + 24, theirs.begin());
+    std::copy(mine.begin() + 8, mine.begin() + 40, theirs.begin() + 8);  // the key, after the magic
     std::ofstream(entry, std::ios::binary | std::ios::trunc).write(theirs.data(), std::streamsize(theirs.size()));
-    ::setenv("LANCER_CACHE_DIR", dir_.c_str(), 1);
-    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), stand_in);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+    EXPECT_EQ(fs::file_size(entry), mine.size()) << "written back";
+}
+
+// Where an entry would be read: a FIFO (opening it would wait for a writer), a symbolic link
+// (here to a FIFO) or a directory. Each is a miss at once: the lookup returning shows it.
+TEST_F(SpirvCache, AFifoLinkOrDirectoryAtAnEntrysPathIsAMiss) {
+    const std::vector<std::uint32_t> fresh = gpu::specialize_spirv(spirv_, features_);
+    gpu::cached_specialization(spirv_, features_);
+    const fs::path entry = entries().at(0);
+    fs::remove(entry);
+    ASSERT_EQ(::mkfifo(entry.c_str(), 0600), 0);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(entry))) << "written back in the FIFO's place";
+
+    const std::string pipe = dir_ + "/pipe";
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+    fs::remove(entry);
+    fs::create_symlink(pipe, entry);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(entry))) << "the link replaced";
+    EXPECT_EQ(fs::status(pipe).type(), fs::file_type::fifo) << "not what it pointed to";
+
+    fs::remove(entry);
+    fs::create_directory(entry);
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
 }
 
 TEST_F(SpirvCache, DamagedOrTruncatedEntriesAreSpecialisedAgain) {
@@ -260,6 +314,58 @@ TEST_F(SpirvCache, AFailedCompileIsNotKeptAndADamagedEntryIsCompiledAgain) {
         damaged.seekp(std::streamoff(fs::file_size(entry) - 4));
         damaged.write("\x7f\x7f\x7f\x7f", 4);  // a word flipped
     }
+    EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp"), fresh);
+}
+
+// A forged compile: another scene's compiled entry (manifest, words, checksum) under this one's
+// name, with this one's key written into its header, is compiled again.
+TEST_F(SpirvCache, AnotherCompilesEntryUnderThisKeyIsCompiledAgain) {
+    TwoFileTree files;
+    const gpu::ShaderFiles scene_a{{"value.glsl", "#define VALUE 4.0\n"}}, scene_b{{"value.glsl", "#define VALUE 5.0\n"}};
+    const std::vector<std::uint32_t> a = gpu::compile_compute(gpu::with_files(files.tree(), scene_a), "main.comp");
+    ASSERT_EQ(gpu::cached_compile(files.tree(), scene_a, "main.comp"), a);
+    ASSERT_EQ(entries().size(), 1u);
+    const fs::path entry = entries()[0];
+    gpu::cached_compile(files.tree(), scene_b, "main.comp");
+    ASSERT_EQ(entries().size(), 2u);
+    const fs::path other_entry = entries()[0] == entry ? entries()[1] : entries()[0];
+    std::ifstream in_a(entry, std::ios::binary), in_b(other_entry, std::ios::binary);
+    std::vector<char> mine((std::istreambuf_iterator<char>(in_a)), {}), theirs((std::istreambuf_iterator<char>(in_b)), {});
+    std::copy(mine.begin() + 8, mine.begin() + 40, theirs.begin() + 8);  // the key, after the magic
+    std::ofstream(entry, std::ios::binary | std::ios::trunc).write(theirs.data(), std::streamsize(theirs.size()));
+    EXPECT_EQ(gpu::cached_compile(files.tree(), scene_a, "main.comp"), a);
+}
+
+// An entry of an earlier format (FNV-1a keys) left in the directory is a miss, not an error.
+TEST_F(SpirvCache, AnEntryOfTheEarlierFormatIsAMiss) {
+    const std::vector<std::uint32_t> fresh = gpu::specialize_spirv(spirv_, features_);
+    gpu::cached_specialization(spirv_, features_);
+    const fs::path entry = entries().at(0);
+    {
+        std::fstream f(entry, std::ios::binary | std::ios::in | std::ios::out);
+        f.write("lancspv2", 8);
+    }
+    EXPECT_EQ(gpu::cached_specialization(spirv_, features_), fresh);
+    std::ifstream in(entry, std::ios::binary);
+    char magic[8] = {};
+    in.read(magic, 8);
+    EXPECT_EQ(std::string(magic, 8), "lancspv3") << "written back in the current format";
+}
+
+// The same for the entry of a compile: a FIFO or a link to one is a miss, not a wait.
+TEST_F(SpirvCache, AFifoOrLinkAtACompilesEntryPathIsAMiss) {
+    TwoFileTree files;
+    const std::vector<std::uint32_t> fresh = gpu::compile_compute(files.tree(), "main.comp");
+    gpu::cached_compile(files.tree(), {}, "main.comp");
+    const fs::path entry = entries().at(0);
+    fs::remove(entry);
+    ASSERT_EQ(::mkfifo(entry.c_str(), 0600), 0);
+    EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp"), fresh);
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(entry)));
+    const std::string pipe = dir_ + "/pipe";
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+    fs::remove(entry);
+    fs::create_symlink(pipe, entry);
     EXPECT_EQ(gpu::cached_compile(files.tree(), {}, "main.comp"), fresh);
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <map>
 
-#include <fstream>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -13,8 +12,13 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include "core/file_reading.hpp"
+
 namespace lancer::gpu {
 namespace {
+
+// A shader file larger than this is not read (the largest of shaders/ is about 21 KiB).
+constexpr std::size_t kMaxShaderFileBytes = std::size_t{16} << 20;
 
 void initialize_glslang() {
     static std::once_flag once;
@@ -161,12 +165,11 @@ Compiled compile(const ShaderTree& tree, const std::string& entry, const std::ve
 }  // namespace
 
 ShaderTree directory_tree(const std::string& root) {
+    // The names come from #include lines and from a cache entry's manifest (spirv_cache), which
+    // may name anything: a FIFO or a device there is a file not found, not a wait, and no file
+    // is read past kMaxShaderFileBytes. Links are followed (the directory is the user's).
     return [root](const std::string& name) -> std::optional<std::string> {
-        std::ifstream in(root + "/" + name, std::ios::binary);
-        if (!in) return std::nullopt;
-        std::ostringstream text;
-        text << in.rdbuf();
-        return text.str();
+        return read_regular_file_nonblocking(root + "/" + name, kMaxShaderFileBytes, Links::follow);
     };
 }
 

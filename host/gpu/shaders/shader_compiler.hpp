@@ -18,6 +18,8 @@ namespace lancer::gpu {
 // Where shader files come from: name relative to the shader root -> contents.
 using ShaderTree = std::function<std::optional<std::string>(const std::string& name)>;
 
+// The files under `root`; a name that is not a regular file there (or a link to one) of at most
+// 16 MiB reads as not found, at once (a FIFO does not wait for a writer).
 ShaderTree directory_tree(const std::string& root);
 
 // Files that stand in for files of a tree, by name (code generated for a scene).

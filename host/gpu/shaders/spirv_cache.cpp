@@ -4,82 +4,195 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <glslang/build_info.h>
+#include <spirv-tools/libspirv.h>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/file_reading.hpp"
 #include "gpu/shaders/spirv_specialize.hpp"
 #include "image/image.hpp"
 
 namespace lancer::gpu {
+namespace cache_entry {
 namespace {
 
-// An entry: this header, then the specialised module's words.
-struct EntryHeader {
-    char magic[8];                 // kMagic: also versions the entry format
-    std::uint64_t input_hash;      // of the unspecialised module
-    std::uint64_t features;        // a hash of every LANCER_FEATURES value, in table order
-    std::uint64_t recipe_hash;     // of spirv_recipe(cleanup): the passes run
-    std::uint64_t words;           // the module's length
-    std::uint64_t output_hash;     // of the module's words: a torn or damaged file does not match
-};
-constexpr char kMagic[8] = {'l', 'a', 'n', 'c', 's', 'p', 'v', '2'};
+// A specialisation's entry (all integers little-endian):
+//   magic[8] | key[32] | words (u64) | checksum[32] | the module's words
+// A compile's entry:
+//   magic[8] | key[32] | manifest bytes (u64) | words (u64) | checksum[32] | manifest | words
+// The key is the SHA-256 of every input (specialization_key, compile_key) and names the file;
+// the checksum is the SHA-256 of every other byte of the entry, the key included, so an entry
+// copied under another entry's name or key, torn or damaged, does not match. The magic versions
+// the format: "lancspv2"/"lancgls1" (FNV-1a keys of 64 bits) are read as misses.
+constexpr char kMagic[8] = {'l', 'a', 'n', 'c', 's', 'p', 'v', '3'};
+constexpr char kCompiledMagic[8] = {'l', 'a', 'n', 'c', 'g', 'l', 's', '2'};
+constexpr std::size_t kKeyAt = 8, kDigestBytes = 32;
+constexpr std::size_t kWordsAt = kKeyAt + kDigestBytes, kChecksumAt = kWordsAt + 8, kPayloadAt = kChecksumAt + kDigestBytes;
+constexpr std::size_t kCompiledManifestBytesAt = kKeyAt + kDigestBytes, kCompiledWordsAt = kCompiledManifestBytesAt + 8,
+                      kCompiledChecksumAt = kCompiledWordsAt + 8, kCompiledPayloadAt = kCompiledChecksumAt + kDigestBytes;
+
+void put_u64(std::string& out, std::uint64_t v) {
+    for (int i = 0; i < 8; ++i) out += static_cast<char>(static_cast<unsigned char>(v >> (8 * i)));
+}
+
+std::uint64_t get_u64(std::string_view bytes, std::size_t at) {
+    std::uint64_t v = 0;
+    for (int i = 0; i < 8; ++i) v |= std::uint64_t(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+    return v;
+}
+
+std::string_view digest_view(const Sha256Digest& d) { return {reinterpret_cast<const char*>(d.data()), d.size()}; }
+
+// SHA-256 of the entry but for its checksum's own bytes.
+Sha256Digest checksum_of(std::string_view bytes, std::size_t checksum_at) {
+    Sha256 h;
+    h.add(bytes.substr(0, checksum_at));
+    h.add(bytes.substr(checksum_at + kDigestBytes));
+    return h.finish();
+}
+
+bool checksum_holds(std::string_view bytes, std::size_t checksum_at) {
+    return digest_view(checksum_of(bytes, checksum_at)) == bytes.substr(checksum_at, kDigestBytes);
+}
+
+std::vector<std::uint32_t> words_at(std::string_view bytes, std::size_t at, std::size_t count) {
+    std::vector<std::uint32_t> words(count);
+    std::memcpy(words.data(), bytes.data() + at, count * sizeof(std::uint32_t));
+    return words;
+}
+
+std::string_view word_bytes(const std::vector<std::uint32_t>& words) {
+    return {reinterpret_cast<const char*>(words.data()), words.size() * sizeof(std::uint32_t)};
+}
+
+// A manifest line's hash of a file's contents: SHA-256 in hex, "-" for a file not found.
+std::string contents_hash(const std::optional<std::string>& contents) {
+    return contents ? to_hex(sha256(*contents)) : "-";
+}
+
+}  // namespace
+
+Sha256Digest specialization_key(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
+                                SpirvCleanup cleanup) {
+    Sha256 h;
+    h.add_field("lancer tracer specialisation");
+    h.add_field(spvSoftwareVersionDetailsString());
+    h.add_field(word_bytes(spirv));
+    h.add_u64(kFeatureCount);
+    for (std::size_t i = 0; i < kFeatureCount; ++i) h.add_u64(feature_value(features, i));
+    h.add_field(spirv_recipe(cleanup));
+    h.add_u64(static_cast<std::uint64_t>(cleanup));
+    return h.finish();
+}
+
+std::string encode_specialization(const Sha256Digest& key, const std::vector<std::uint32_t>& words) {
+    std::string bytes(kMagic, sizeof kMagic);
+    bytes += digest_view(key);
+    put_u64(bytes, words.size());
+    bytes.append(kDigestBytes, '\0');
+    bytes += word_bytes(words);
+    const Sha256Digest checksum = checksum_of(bytes, kChecksumAt);
+    bytes.replace(kChecksumAt, kDigestBytes, digest_view(checksum));
+    return bytes;
+}
+
+std::optional<std::vector<std::uint32_t>> parse_specialization(std::string_view bytes, const Sha256Digest& key) {
+    if (bytes.size() < kPayloadAt || bytes.substr(0, sizeof kMagic) != std::string_view(kMagic, sizeof kMagic) ||
+        bytes.substr(kKeyAt, kDigestBytes) != digest_view(key))
+        return std::nullopt;
+    const std::uint64_t words = get_u64(bytes, kWordsAt);
+    if (words == 0 || words > kMaxEntryWords || bytes.size() != kPayloadAt + words * sizeof(std::uint32_t) ||
+        !checksum_holds(bytes, kChecksumAt))
+        return std::nullopt;
+    return words_at(bytes, kPayloadAt, words);
+}
+
+Sha256Digest compile_key(const ShaderTree& tree, const ShaderFiles& generated, const std::string& entry,
+                         const std::vector<ShaderDefine>& defines) {
+    Sha256 h;
+    h.add_field("lancer glslang compile");
+    h.add_field(fmt::format("glslang {}.{}.{}{}", GLSLANG_VERSION_MAJOR, GLSLANG_VERSION_MINOR, GLSLANG_VERSION_PATCH,
+                            GLSLANG_VERSION_FLAVOR));
+    h.add_field(entry);
+    h.add_u64(defines.size());
+    for (const ShaderDefine& d : defines) h.add_field(d.name).add_field(d.value);
+    h.add_u64(generated.size());
+    for (const auto& [name, contents] : generated) h.add_field(name).add_field(contents);
+    const std::optional<std::string> text = tree(entry);
+    h.add_u64(text.has_value());
+    if (text) h.add_field(*text);
+    return h.finish();
+}
+
+std::string encode_compiled(const Sha256Digest& key, const std::string& manifest, const std::vector<std::uint32_t>& words) {
+    std::string bytes(kCompiledMagic, sizeof kCompiledMagic);
+    bytes += digest_view(key);
+    put_u64(bytes, manifest.size());
+    put_u64(bytes, words.size());
+    bytes.append(kDigestBytes, '\0');
+    bytes += manifest;
+    bytes += word_bytes(words);
+    const Sha256Digest checksum = checksum_of(bytes, kCompiledChecksumAt);
+    bytes.replace(kCompiledChecksumAt, kDigestBytes, digest_view(checksum));
+    return bytes;
+}
+
+std::optional<std::vector<std::uint32_t>> parse_compiled(std::string_view bytes, const Sha256Digest& key,
+                                                         const ShaderTree& tree) {
+    if (bytes.size() < kCompiledPayloadAt ||
+        bytes.substr(0, sizeof kCompiledMagic) != std::string_view(kCompiledMagic, sizeof kCompiledMagic) ||
+        bytes.substr(kKeyAt, kDigestBytes) != digest_view(key))
+        return std::nullopt;
+    const std::uint64_t manifest_bytes = get_u64(bytes, kCompiledManifestBytesAt), words = get_u64(bytes, kCompiledWordsAt);
+    if (manifest_bytes > kMaxManifestBytes || words == 0 || words > kMaxEntryWords ||
+        bytes.size() != kCompiledPayloadAt + manifest_bytes + words * sizeof(std::uint32_t) ||
+        !checksum_holds(bytes, kCompiledChecksumAt))
+        return std::nullopt;
+    // Every file the compile looked up must read as it did then. The names are the entry's, so
+    // what they may cost is bounded: so many lines, each name once, so many bytes read in all.
+    std::istringstream lines{std::string(bytes.substr(kCompiledPayloadAt, manifest_bytes))};
+    std::set<std::string> names;
+    std::size_t read = 0;
+    for (std::string line; std::getline(lines, line);) {
+        const std::size_t space = line.find(' ');
+        if (space == std::string::npos || space + 1 == line.size() || names.size() == kMaxManifestLines ||
+            !names.insert(line.substr(space + 1)).second)
+            return std::nullopt;
+        const std::optional<std::string> contents = tree(line.substr(space + 1));
+        read += contents ? contents->size() : 0;
+        if (read > kMaxManifestContentBytes || contents_hash(contents) != line.substr(0, space)) return std::nullopt;
+    }
+    return words_at(bytes, kCompiledPayloadAt + manifest_bytes, words);
+}
+
+std::optional<std::vector<std::uint32_t>> read_specialization(const std::string& path, const Sha256Digest& key) {
+    const std::optional<std::string> bytes = read_regular_file_nonblocking(path, kMaxEntryBytes);
+    return bytes ? parse_specialization(*bytes, key) : std::nullopt;
+}
+
+std::optional<std::vector<std::uint32_t>> read_compiled(const std::string& path, const Sha256Digest& key,
+                                                        const ShaderTree& tree) {
+    const std::optional<std::string> bytes = read_regular_file_nonblocking(path, kMaxEntryBytes);
+    return bytes ? parse_compiled(*bytes, key, tree) : std::nullopt;
+}
+
+}  // namespace cache_entry
+
+namespace {
 
 // Entries kept: editing shaders (lancer watch, view) makes a new one per edit, and each is
 // 50-200 KiB; the least recently written go first.
 constexpr std::size_t kMaxEntries = 256;
 
-// FNV-1a over 64 bits: enough to tell modules and sources apart, cheap next to the optimizer
-// and the compiler it saves.
-std::uint64_t hash_bytes(const void* data, std::size_t size, std::uint64_t h = 14695981039346656037ull) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) {
-        h ^= bytes[i];
-        h *= 1099511628211ull;
-    }
-    return h;
-}
-
-std::uint64_t hash_words(const std::vector<std::uint32_t>& words) {
-    return hash_bytes(words.data(), words.size() * sizeof(std::uint32_t));
-}
-
-std::uint64_t hash_text(const std::string& text, std::uint64_t h = 14695981039346656037ull) {
-    return hash_bytes(text.data(), text.size() + 1, h);  // the terminator separates consecutive texts
-}
-
-std::uint64_t feature_key(const ShaderFeatures& features) {
-    std::uint64_t h = 14695981039346656037ull;
-    for (std::size_t i = 0; i < kFeatureCount; ++i) {
-        const std::uint32_t value = feature_value(features, i);
-        h = hash_bytes(&value, sizeof value, h);
-    }
-    return h;
-}
-
 bool is_set(const char* name) {
     const char* v = std::getenv(name);
     return v && (std::strcmp(v, "1") == 0 || std::strcmp(v, "true") == 0);
-}
-
-std::optional<std::vector<std::uint32_t>> read_entry(const std::string& path, const EntryHeader& wanted) {
-    std::ifstream in(path, std::ios::binary);
-    EntryHeader header{};
-    if (!in.read(reinterpret_cast<char*>(&header), sizeof header)) return std::nullopt;
-    if (std::memcmp(header.magic, kMagic, sizeof kMagic) != 0 || header.input_hash != wanted.input_hash ||
-        header.features != wanted.features || header.recipe_hash != wanted.recipe_hash || header.words == 0 || header.words > (std::uint64_t{1} << 24))
-        return std::nullopt;
-    std::vector<std::uint32_t> words(header.words);
-    if (!in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * sizeof(std::uint32_t))))
-        return std::nullopt;
-    if (hash_words(words) != header.output_hash) return std::nullopt;
-    return words;
 }
 
 void evict_oldest(const std::filesystem::path& dir) {
@@ -93,7 +206,10 @@ void evict_oldest(const std::filesystem::path& dir) {
     for (std::size_t i = 0; i + kMaxEntries < entries.size(); ++i) fs::remove(entries[i].second, ec);
 }
 
-void write_bytes(const std::string& path, const std::vector<char>& bytes) {
+// Written to a temporary file and renamed into place: a reader sees the old entry or the new one,
+// and whatever was at the path (a FIFO, a symbolic link: the link, not what it names) is replaced.
+// A directory there is not: the entry is then a miss every time, nothing worse.
+void write_bytes(const std::string& path, const std::string& bytes) {
     try {
         std::filesystem::create_directories(std::filesystem::path(path).parent_path());
         write_file_atomically(path, bytes.data(), bytes.size());
@@ -102,71 +218,6 @@ void write_bytes(const std::string& path, const std::vector<char>& bytes) {
         return;
     }
     evict_oldest(std::filesystem::path(path).parent_path());
-}
-
-void write_entry(const std::string& path, EntryHeader header, const std::vector<std::uint32_t>& words) {
-    header.words = words.size();
-    header.output_hash = hash_words(words);
-    std::vector<char> bytes(sizeof header + words.size() * sizeof(std::uint32_t));
-    std::memcpy(bytes.data(), &header, sizeof header);
-    std::memcpy(bytes.data() + sizeof header, words.data(), words.size() * sizeof(std::uint32_t));
-    write_bytes(path, bytes);
-}
-
-// A compiled entry: this header, a manifest of every file the compile looked up, found or not
-// ("HASH NAME" lines, HASH of the contents in hex, 0 for a file not found), then the words.
-struct CompiledHeader {
-    char magic[8];
-    std::uint64_t key;  // of the compiler's version, the entry point and its text, the defines
-    std::uint64_t manifest_bytes;
-    std::uint64_t words;
-    std::uint64_t output_hash;  // of the manifest and the words
-};
-constexpr char kCompiledMagic[8] = {'l', 'a', 'n', 'c', 'g', 'l', 's', '1'};
-
-std::uint64_t contents_hash(const std::optional<std::string>& contents) {
-    return contents ? hash_text(*contents) | 1u : 0;  // never 0 for a file that exists
-}
-
-// The module of a compile whose files all read as they did then; nullopt for anything else.
-std::optional<std::vector<std::uint32_t>> read_compiled(const std::string& path, std::uint64_t key,
-                                                        const ShaderTree& tree) {
-    std::ifstream in(path, std::ios::binary);
-    CompiledHeader header{};
-    if (!in.read(reinterpret_cast<char*>(&header), sizeof header)) return std::nullopt;
-    if (std::memcmp(header.magic, kCompiledMagic, sizeof kCompiledMagic) != 0 || header.key != key ||
-        header.manifest_bytes > (std::uint64_t{1} << 20) || header.words == 0 || header.words > (std::uint64_t{1} << 24))
-        return std::nullopt;
-    std::string manifest(header.manifest_bytes, '\0');
-    std::vector<std::uint32_t> words(header.words);
-    if (!in.read(manifest.data(), std::streamsize(manifest.size())) ||
-        !in.read(reinterpret_cast<char*>(words.data()), std::streamsize(words.size() * sizeof(std::uint32_t))))
-        return std::nullopt;
-    if ((hash_words(words) ^ hash_text(manifest)) != header.output_hash) return std::nullopt;
-    std::istringstream lines(manifest);
-    for (std::string line; std::getline(lines, line);) {
-        const std::size_t space = line.find(' ');
-        if (space == std::string::npos) return std::nullopt;
-        if (fmt::format("{:016x}", contents_hash(tree(line.substr(space + 1)))) != line.substr(0, space))
-            return std::nullopt;
-    }
-    return words;
-}
-
-void write_compiled(const std::string& path, std::uint64_t key, const std::string& manifest,
-                    const std::vector<std::uint32_t>& words) {
-    CompiledHeader header{};
-    std::memcpy(header.magic, kCompiledMagic, sizeof kCompiledMagic);
-    header.key = key;
-    header.manifest_bytes = manifest.size();
-    header.words = words.size();
-    header.output_hash = hash_words(words) ^ hash_text(manifest);
-    const std::size_t word_bytes = words.size() * sizeof(std::uint32_t);
-    std::vector<char> bytes(sizeof header + manifest.size() + word_bytes);
-    std::memcpy(bytes.data(), &header, sizeof header);
-    std::memcpy(bytes.data() + sizeof header, manifest.data(), manifest.size());
-    std::memcpy(bytes.data() + sizeof header + manifest.size(), words.data(), word_bytes);
-    write_bytes(path, bytes);
 }
 
 }  // namespace
@@ -188,25 +239,26 @@ std::vector<std::uint32_t> cached_compile(const ShaderTree& base, const ShaderFi
     // The generated files and the entry point's text are in the key, so that each scene's code
     // and each edit of the entry point gets an entry of its own rather than replacing another's;
     // the files it includes are checked against the entry's manifest.
-    std::uint64_t key = hash_text(fmt::format("glslang {}.{}.{}{}", GLSLANG_VERSION_MAJOR, GLSLANG_VERSION_MINOR,
-                                              GLSLANG_VERSION_PATCH, GLSLANG_VERSION_FLAVOR));
-    key = hash_text(entry, key);
-    for (const ShaderDefine& d : defines) key = hash_text(d.value, hash_text(d.name, key));
-    for (const auto& [name, contents] : generated) key = hash_text(contents, hash_text(name, key));
-    if (std::optional<std::string> text = tree(entry)) key = hash_text(*text, key);
-    const std::string path = fmt::format("{}/glsl-{:016x}.spv", *dir, key);
-    if (std::optional<std::vector<std::uint32_t>> hit = read_compiled(path, key, tree)) return std::move(*hit);
+    const Sha256Digest key = cache_entry::compile_key(tree, generated, entry, defines);
+    const std::string path = fmt::format("{}/glsl-{}.spv", *dir, to_hex(key));
+    if (std::optional<std::vector<std::uint32_t>> hit = cache_entry::read_compiled(path, key, tree))
+        return std::move(*hit);
 
-    std::map<std::string, std::uint64_t> looked_up;
+    std::map<std::string, std::string> looked_up;
     const ShaderTree recording = [&tree, &looked_up](const std::string& name) {
         std::optional<std::string> contents = tree(name);
-        looked_up[name] = contents_hash(contents);
+        looked_up[name] = cache_entry::contents_hash(contents);
         return contents;
     };
     std::vector<std::uint32_t> spirv = compile_compute(recording, entry, defines, display_root);
     std::string manifest;
-    for (const auto& [name, hash] : looked_up) manifest += fmt::format("{:016x} {}\n", hash, name);
-    write_compiled(path, key, manifest, spirv);
+    bool recordable = true;
+    for (const auto& [name, hash] : looked_up) {
+        recordable = recordable && !name.empty() && name.find('\n') == std::string::npos;
+        manifest += hash + " " + name + "\n";
+    }
+    if (recordable && looked_up.size() <= cache_entry::kMaxManifestLines && manifest.size() <= cache_entry::kMaxManifestBytes)
+        write_bytes(path, cache_entry::encode_compiled(key, manifest, spirv));
     return spirv;
 }
 
@@ -214,16 +266,12 @@ std::vector<std::uint32_t> cached_specialization(const std::vector<std::uint32_t
                                                  SpirvCleanup cleanup) {
     const std::optional<std::string> dir = spirv_cache_directory();
     if (!dir) return specialize_spirv(spirv, features, cleanup);
-    EntryHeader key{};
-    std::memcpy(key.magic, kMagic, sizeof kMagic);
-    key.input_hash = hash_words(spirv);
-    key.features = feature_key(features);
-    key.recipe_hash = hash_text(spirv_recipe(cleanup));
-    const std::string path = fmt::format("{}/tracer-{:016x}-{:016x}-{}.spv", *dir, key.input_hash, key.features,
-                                         static_cast<int>(cleanup));
-    if (std::optional<std::vector<std::uint32_t>> hit = read_entry(path, key)) return std::move(*hit);
+    const Sha256Digest key = cache_entry::specialization_key(spirv, features, cleanup);
+    const std::string path = fmt::format("{}/tracer-{}.spv", *dir, to_hex(key));
+    if (std::optional<std::vector<std::uint32_t>> hit = cache_entry::read_specialization(path, key))
+        return std::move(*hit);
     std::vector<std::uint32_t> specialized = specialize_spirv(spirv, features, cleanup);
-    write_entry(path, key, specialized);
+    write_bytes(path, cache_entry::encode_specialization(key, specialized));
     return specialized;
 }
 

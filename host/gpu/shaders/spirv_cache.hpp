@@ -8,11 +8,21 @@
 // The directory is $LANCER_CACHE_DIR, else $XDG_CACHE_HOME/lancer, else $HOME/.cache/lancer;
 // LANCER_CACHE_DISABLE=1 (or true) turns the cache off. A missing, unwritable, damaged or
 // foreign entry is never an error: it is specialised again (and written back if possible).
+//
+// The cache may be shared, and its files are not the user's input: an entry is named by the
+// SHA-256 of all its inputs (a crafted scene cannot collide with another's entry), carries a
+// SHA-256 checksum over its key and contents (another entry's module copied under this name is a
+// miss), and is opened without waiting and read only when it is a regular file of bounded size
+// (a FIFO or a link there is a miss, replaced by the fresh entry). The checksum is no signature:
+// whoever may write the directory can write a matching entry, as with Mesa's shader cache.
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/sha256.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/shaders/shader_compiler.hpp"
 #include "gpu/shaders/spirv_specialize.hpp"
@@ -33,5 +43,34 @@ std::vector<std::uint32_t> cached_compile(const ShaderTree& base, const ShaderFi
 // specialize_spirv(spirv, features, cleanup), from the cache when an entry matches all three exactly.
 std::vector<std::uint32_t> cached_specialization(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
                                                  SpirvCleanup cleanup = SpirvCleanup::dead_code);
+
+// The entries' format, for the tests and the fuzz target fuzz_cache_entry. A parse returns the
+// module of a well-formed entry for `key` whose checksum holds (and, for a compile, whose
+// manifest's files read as they did); nullopt for anything else. A read opens `path` as
+// read_regular_file_nonblocking does, then parses.
+namespace cache_entry {
+constexpr std::uint64_t kMaxEntryWords = std::uint64_t{1} << 24;   // 64 MiB of module
+constexpr std::uint64_t kMaxManifestBytes = std::uint64_t{1} << 20;
+constexpr std::size_t kMaxManifestLines = 4096;                       // far more names than a compile looks up
+constexpr std::size_t kMaxManifestContentBytes = std::size_t{64} << 20;  // read to check a manifest
+constexpr std::size_t kMaxEntryBytes = 128 + kMaxManifestBytes + kMaxEntryWords * 4;
+
+Sha256Digest specialization_key(const std::vector<std::uint32_t>& spirv, const ShaderFeatures& features,
+                                SpirvCleanup cleanup);
+std::string encode_specialization(const Sha256Digest& key, const std::vector<std::uint32_t>& words);
+std::optional<std::vector<std::uint32_t>> parse_specialization(std::string_view bytes, const Sha256Digest& key);
+std::optional<std::vector<std::uint32_t>> read_specialization(const std::string& path, const Sha256Digest& key);
+
+// The key reads the entry point's text from `tree` (generated files included).
+Sha256Digest compile_key(const ShaderTree& tree, const ShaderFiles& generated, const std::string& entry,
+                         const std::vector<ShaderDefine>& defines);
+// `manifest`: a line "HASH NAME" per file the compile looked up, HASH the SHA-256 of its contents
+// in hex, or "-" for a file not found.
+std::string encode_compiled(const Sha256Digest& key, const std::string& manifest, const std::vector<std::uint32_t>& words);
+std::optional<std::vector<std::uint32_t>> parse_compiled(std::string_view bytes, const Sha256Digest& key,
+                                                         const ShaderTree& tree);
+std::optional<std::vector<std::uint32_t>> read_compiled(const std::string& path, const Sha256Digest& key,
+                                                        const ShaderTree& tree);
+}  // namespace cache_entry
 
 }  // namespace lancer::gpu
