@@ -1,5 +1,5 @@
 #pragma once
-// lancer's documented input limits (README: "Limits"). They are checked while loading, before
+// lancer's documented input limits (docs/limits.md). They are checked while loading, before
 // anything is allocated for the values they bound.
 #include "core/magnitude.hpp"
 #include "image/image.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The viewer's keys and mouse, as the on-screen help (h) lists them. The README's table says the
+// The viewer's keys and mouse, as the on-screen help (h) lists them. docs/viewer.md's table says the
 // same, and a test checks that it names every key listed here.
 #include <string>
 #include <vector>
