@@ -8,16 +8,6 @@
 
 namespace lancer::gpu {
 
-float round_down(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-
-float round_up(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
-
 void pack_box(const Aabb& box, vec4& lo, vec4& hi) {
     double pad = 1e-6 * std::max({1.0, glm::length(box.lo), glm::length(box.hi)});
     lo = vec4(round_down(box.lo.x - pad), round_down(box.lo.y - pad), round_down(box.lo.z - pad), 0.0f);

@@ -2,15 +2,12 @@
 // Doubles to the floats the shader reads: vectors, and bounds rounded outward so that a float
 // box still holds what its double box held.
 #include "accel/aabb.hpp"
+#include "core/float_rounding.hpp"
 #include "gpu/layout.hpp"
 
 namespace lancer::gpu {
 
 inline vec4 v4(const glm::dvec3& v, double w = 0.0) { return vec4(float(v.x), float(v.y), float(v.z), float(w)); }
-
-// float(x) rounded toward -inf / +inf, so float boxes contain their double originals.
-float round_down(double x);
-float round_up(double x);
 
 // A box for the shader's slab test, rounded outward to float and padded by a few float ulps of
 // its coordinates: the slab test has rounding errors of its own, and a ray aimed exactly at a

@@ -7,21 +7,13 @@
 
 #include <fmt/format.h>
 
+#include "core/float_rounding.hpp"
 #include "gpu/shaders/glsl_emitter.hpp"
 
 namespace lancer::gpu {
 namespace {
 
 constexpr int kMaxChain = 64;  // integer powers up to this are products; beyond, pow() with a wide margin
-
-float float_down(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-float float_up(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
 
 // x^m (m >= 1) as products, by squaring.
 std::string chain(const std::string& x, int m) {
@@ -95,7 +87,7 @@ private:
         const bool va = n.a >= 0 && varies(n.a), vb = n.b >= 0 && varies(n.b);
         switch (n.op) {
             case surface::Op::Constant:
-                value_[i] = fmt::format("vec2({}, {})", glsl_float(float_down(n.value)), glsl_float(float_up(n.value)));
+                value_[i] = fmt::format("vec2({}, {})", glsl_float(round_down(n.value)), glsl_float(round_up(n.value)));
                 return;
             case surface::Op::Variable: {
                 const char axis = "xyz"[static_cast<int>(n.value)];
