@@ -128,9 +128,10 @@ struct ExrRejected : std::runtime_error {
 
 // What the header must say before anything is allocated for the pixels: one scanline image of
 // R, G and B within lancer's limits, in a file large enough for them.
-void check_exr_header(const Imf::Header& h, int version, std::size_t file_size) {
-    if (Imf::isTiled(version) || Imf::isMultiPart(version) || Imf::isNonImage(version) || h.hasTileDescription())
-        throw ExrRejected("lancer reads single-part scanline images (it writes them), not tiled, multi-part or deep ones");
+constexpr const char* kScanlineOnly = "lancer reads single-part scanline images (it writes them), not tiled, multi-part or deep ones";
+
+void check_exr_header(const Imf::Header& h, std::size_t file_size) {
+    if (h.hasTileDescription()) throw ExrRejected(kScanlineOnly);
     const Imath::Box2i w = h.dataWindow();
     const long long width = static_cast<long long>(w.max.x) - w.min.x + 1, height = static_cast<long long>(w.max.y) - w.min.y + 1;
     if (width < 1 || height < 1) throw ExrRejected("its data window is empty");
@@ -228,10 +229,11 @@ FloatImage read_exr_bytes(const std::string& path, const std::string& bytes, Exr
         if (magic != Imf::MAGIC) throw ExrRejected("not an OpenEXR file");
         if (Imf::getVersion(version) != Imf::EXR_VERSION || !Imf::supportsFlags(Imf::getFlags(version)))
             throw ExrRejected(fmt::format("OpenEXR version field {:#x} is not one lancer reads", version));
+        if (Imf::isTiled(version) || Imf::isMultiPart(version) || Imf::isNonImage(version)) throw ExrRejected(kScanlineOnly);
         check_attribute_sizes(bytes);
         Imf::Header header;
         header.readFrom(stream, version);
-        check_exr_header(header, version, bytes.size());
+        check_exr_header(header, bytes.size());
         ExrInfo attributes = read_lancer_attributes(header);
 
         stream.seekg(0);

@@ -133,6 +133,9 @@ const std::string kClaims16Mpx = window_part("window-4096", 4096, 4096);
 // The channel list B, G, R with R renamed Y (still sorted): entries are a name and 16 bytes.
 const std::string kChannelY = patched_part("channels-bgy", std::string("channels\0chlist\0", 16), 16 + 4 + 2 * 18, "Y");
 const std::string kPiz = patched_part("compression-piz", std::string("compression\0compression\0", 24), 24 + 4, std::string(1, '\4'));
+// The version field's flags (after the magic number): tiled (0x200), multi-part (0x1000).
+const std::string kTiled = patched_part("tiled", "\x76\x2f\x31\x01", 5, "\x02");
+const std::string kMultiPart = patched_part("multi-part", "\x76\x2f\x31\x01", 5, "\x10");
 const std::string kAttributeTooLarge = patched_part("attribute-size", std::string("lancerTone\0string\0", 18), 18, le32(1 << 30));
 
 INSTANTIATE_TEST_SUITE_P(
@@ -174,6 +177,8 @@ INSTANTIATE_TEST_SUITE_P(
         combine("compression", kPiz, cannot_read(kPiz) + "lancer reads uncompressed, RLE and ZIP compressed OpenEXR"),
         combine("attribute_size", kAttributeTooLarge,
                 cannot_read(kAttributeTooLarge) + "its attribute lancerTone claims 1073741824 bytes, more than the file holds"),
+        combine("tiled", kTiled, cannot_read(kTiled) + "lancer reads single-part scanline images"),
+        combine("multi_part", kMultiPart, cannot_read(kMultiPart) + "lancer reads single-part scanline images"),
         Case{"not_exr", "combine " + test::source_path("scenes/seed.toml") + " " + kSecond + " -o OUT", "",
              cannot_read(test::source_path("scenes/seed.toml")) + "not an OpenEXR file"},
         Case{"part_missing", "combine /nonexistent/part.exr " + kSecond + " -o OUT", "",
