@@ -156,31 +156,62 @@ void check_exr_header(const Imf::Header& h, std::size_t file_size) {
                                       file_size, width, height, least));
 }
 
+// The attribute types read_exr accepts, with their values' sizes (0: as the size field says).
+// OpenEXR reads a value by its type's structure, not by the size field before it, and allocates
+// what a string's size, a preview image's or a string vector's own fields claim: a value whose
+// size field disagrees with its structure would make OpenEXR read the rest of the header out of
+// step (a 600-byte file then claimed a string of 2 GB: fuzz_exr_part). So every value must have
+// its type's size; chlist is walked; other types (preview, stringvector, idmanifest, ...) are
+// refused: lancer writes none.
+std::size_t attribute_size(const std::string& type) {
+    static const std::pair<const char*, std::size_t> kTypes[] = {
+        {"box2i", 16}, {"box2f", 16}, {"compression", 1}, {"lineOrder", 1}, {"envmap", 1}, {"deepImageState", 1},
+        {"int", 4}, {"float", 4}, {"double", 8}, {"rational", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12},
+        {"v3f", 12}, {"v3d", 24}, {"m33f", 36}, {"m33d", 72}, {"m44f", 64}, {"m44d", 128}, {"chromaticities", 32},
+        {"keycode", 28}, {"timecode", 8}, {"tiledesc", 9}, {"string", 0}, {"chlist", 0}};
+    for (const auto& [name, size] : kTypes)
+        if (type == name) return size == 0 ? std::string::npos - 1 : size;
+    return std::string::npos;
+}
+
 // Walks the header's attributes (name, type, size, value; an empty name ends it) before OpenEXR
-// reads them: OpenEXR allocates what an attribute's size field, or a preview image's or a string
-// vector's own fields, claim before reading the bytes, so each must fit in the file, and those two
-// types (lancer writes neither) are refused.
-void check_attribute_sizes(const std::string& bytes) {
+// reads them, as OpenEXR will (attribute_size above).
+void check_attribute_sizes(const std::string& bytes, int version) {
+    const std::size_t max_name = (version & Imf::LONG_NAMES_FLAG) ? 255 : 31;
     std::size_t pos = 8;  // after the magic number and the version field
+    auto c_string = [&](std::size_t max) {
+        const std::size_t end = bytes.find('\0', pos);
+        if (end == std::string::npos || end - pos > max) throw ExrRejected("its header is malformed");
+        std::string text = bytes.substr(pos, end - pos);
+        pos = end + 1;
+        return text;
+    };
     for (;;) {
         if (pos >= bytes.size()) throw ExrRejected("its header ends too early");
         if (bytes[pos] == '\0') return;
-        std::string fields[2];  // the name, the type
-        for (std::string& field : fields) {
-            const std::size_t end = bytes.find('\0', pos);
-            if (end == std::string::npos || end - pos > 255) throw ExrRejected("its header is malformed");
-            field = bytes.substr(pos, end - pos);
-            pos = end + 1;
-        }
-        if (fields[1] == "preview" || fields[1] == "stringvector")
-            throw ExrRejected(fmt::format("lancer does not read its {} attribute {}", fields[1], escape_control_characters(fields[0])));
+        const std::string name = c_string(max_name), type = c_string(max_name);
+        const std::size_t fixed = attribute_size(type);
+        if (fixed == std::string::npos)
+            throw ExrRejected(fmt::format("lancer does not read its {} attribute {}", escape_control_characters(type),
+                                          escape_control_characters(name)));
         std::int32_t size = 0;
         if (bytes.size() - pos < sizeof size) throw ExrRejected("its header ends too early");
         std::memcpy(&size, bytes.data() + pos, sizeof size);
         pos += sizeof size;
         if (size < 0 || static_cast<std::size_t>(size) > bytes.size() - pos)
-            throw ExrRejected(fmt::format("its attribute {} claims {} bytes, more than the file holds", escape_control_characters(fields[0]), size));
-        pos += static_cast<std::size_t>(size);
+            throw ExrRejected(fmt::format("its attribute {} claims {} bytes, more than the file holds",
+                                          escape_control_characters(name), size));
+        const std::size_t value_end = pos + static_cast<std::size_t>(size);
+        if (type == "chlist") {  // entries of a name and 16 bytes, then an empty name, exactly
+            while (pos < value_end && bytes[pos] != '\0') {
+                c_string(max_name);
+                pos += 16;
+            }
+            if (pos + 1 != value_end) throw ExrRejected(fmt::format("its channel list {} is malformed", escape_control_characters(name)));
+        } else if (type != "string" && static_cast<std::size_t>(size) != fixed) {
+            throw ExrRejected(fmt::format("its {} attribute {} has {} bytes, not {}", type, escape_control_characters(name), size, fixed));
+        }
+        pos = value_end;
     }
 }
 
@@ -230,7 +261,7 @@ FloatImage read_exr_bytes(const std::string& path, const std::string& bytes, Exr
         if (Imf::getVersion(version) != Imf::EXR_VERSION || !Imf::supportsFlags(Imf::getFlags(version)))
             throw ExrRejected(fmt::format("OpenEXR version field {:#x} is not one lancer reads", version));
         if (Imf::isTiled(version) || Imf::isMultiPart(version) || Imf::isNonImage(version)) throw ExrRejected(kScanlineOnly);
-        check_attribute_sizes(bytes);
+        check_attribute_sizes(bytes, version);
         Imf::Header header;
         header.readFrom(stream, version);
         check_exr_header(header, bytes.size());
