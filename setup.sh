@@ -4,7 +4,8 @@
 #   ./setup.sh render   install the packages, build, render scenes/seed.toml to seed.png
 #   ./setup.sh test     install the packages, build, run the whole test suite
 #   ./setup.sh build    install the packages and build only
-#   ./setup.sh sanitize the asan preset (ASan + UBSan) in build-asan/, and the whole suite under it
+#   ./setup.sh sanitize [CTEST ARGS] the asan preset (ASan + UBSan) in build-asan/, and the whole
+#                       suite under it (or what the ctest arguments select, e.g. -LE render)
 #   ./setup.sh fuzz [S] also clang: the fuzz targets in build-fuzz/, each run for S seconds (default 60)
 #   ./setup.sh mesa22   the GPU tests again on Debian 12's own lavapipe (Mesa 22.3), unpacked into
 #                       build/mesa22/ beside the Mesa 25 that lancer runs on
@@ -14,7 +15,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 mode="${1:-build}"
-case "$mode" in render|test|build|sanitize|fuzz|mesa22) ;; *) echo "usage: $0 render|test|build|sanitize|fuzz [seconds]|mesa22" >&2; exit 2 ;; esac
+case "$mode" in render|test|build|sanitize|fuzz|mesa22) ;; *) echo "usage: $0 render|test|build|sanitize [ctest args]|fuzz [seconds]|mesa22" >&2; exit 2 ;; esac
 
 # Every build and test dependency, all from Debian 12 (see DEVELOPERS.md for what each is for).
 packages=(
@@ -74,7 +75,7 @@ case "$mode" in
   sanitize)
     cmake --preset asan >/dev/null
     cmake --build --preset asan --parallel
-    ctest --preset asan --parallel "$(nproc)"
+    ctest --preset asan --parallel "$(nproc)" "${@:2}"
     exit
     ;;
   fuzz)

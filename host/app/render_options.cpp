@@ -1,15 +1,21 @@
 #include "app/render_options.hpp"
 
 #include <cctype>
+#include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <string_view>
 #include <utility>
 
 #include <fmt/format.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "app/option_checks.hpp"
+#include "core/file_reading.hpp"
+#include "core/version.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "gpu/vulkan/context.hpp"
 #include "gpu/gpu_renderer.hpp"
@@ -29,14 +35,23 @@ std::string check_image_name(std::string& name) {
     return {};
 }
 
+// A whole string of decimal digits as a non-negative int; nullopt for anything else (a sign,
+// spaces, "0x10", a value beyond int).
+std::optional<int> pass_number(std::string_view text) {
+    int value = 0;
+    if (text.empty() || text.front() < '0' || text.front() > '9') return std::nullopt;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    return value;
+}
+
 // "A-B" (0-based, inclusive) or "N" -> first, count; nullopt when malformed.
 std::optional<std::pair<int, int>> parse_range(const std::string& text) {
-    int a = 0, b = 0;
-    char dash = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &a, &dash, &b, &extra) == 3 && dash == '-' && a >= 0 && b >= a)
-        return std::pair{a, b - a + 1};
-    if (std::sscanf(text.c_str(), "%d%c", &a, &extra) == 1 && a >= 0) return std::pair{a, 1};
-    return std::nullopt;
+    const std::size_t dash = text.find('-');
+    std::optional<int> a = pass_number(std::string_view(text).substr(0, dash));
+    std::optional<int> b = dash == std::string::npos ? a : pass_number(std::string_view(text).substr(dash + 1));
+    if (!a || !b || *b < *a) return std::nullopt;
+    return std::pair{*a, *b - *a + 1};
 }
 
 // CLI::Range lets NaN through (every comparison with it is false).
@@ -56,34 +71,37 @@ void add_render_options(CLI::App& cmd, RenderOptions& o) {
                    "(default: the scene's name, here)")
         ->check(CLI::Validator(check_image_name, "FILE.png|.exr|.pfm"));
     cmd.add_option("--width", o.width, "Image width in pixels (overrides [render] width)")
-        ->check(CLI::Range(1, limits::kMaxImageSide));
+        ->transform(decimal_integer())->check(CLI::Range(1, limits::kMaxImageSide));
     cmd.add_option("--height", o.height, "Image height in pixels (overrides [render] height)")
-        ->check(CLI::Range(1, limits::kMaxImageSide));
+        ->transform(decimal_integer())->check(CLI::Range(1, limits::kMaxImageSide));
     cmd.add_option("--samples", o.samples, "N: an N x N grid of rays per pixel (default 3 = 9 rays)")
-        ->check(CLI::Range(1, limits::kMaxSamples));
+        ->transform(decimal_integer())->check(CLI::Range(1, limits::kMaxSamples));
     cmd.add_option("--aa-threshold", o.aa_threshold,
                    "T: adaptive anti-aliasing as POV-Ray's +A<T>: one ray per pixel, finer grids up to N x N where a "
                    "pixel differs from a neighbour by more than T (|dr|+|dg|+|db| of the sRGB colours, 0..3; POV-Ray's default 0.3)")
         ->check(CLI::Validator(check_aa_threshold, "T in [0, 3]"));
     cmd.add_option("--aa-depth", o.aa_depth,
                    "R: adaptive refinements, each on a finer grid up to N x N (default 1: straight to N x N, POV-Ray's +AM1)")
-        ->check(CLI::Range(1, limits::kMaxSamples - 1));
+        ->transform(decimal_integer())->check(CLI::Range(1, limits::kMaxSamples - 1));
     cmd.add_option("--aa-method", o.aa_method,
                    "What sends a refined pixel on to the next grid: neighbours (default; its colour against its "
                    "neighbours') or spread (its own samples', as POV-Ray's +AM2)")
         ->check(CLI::IsMember({"neighbours", "spread"}));
-    cmd.add_option("--max-depth", o.max_depth, "Levels of reflection and refraction (default 5)")->check(CLI::Range(0, limits::kMaxDepth));
-    cmd.add_option("--exposure", o.exposure, "Stops: the PNG shows the image times 2^EV (overrides [render] exposure)")
-        ->check(CLI::Range(-64.0, 64.0));
+    cmd.add_option("--max-depth", o.max_depth, "Levels of reflection and refraction (default 5)")
+        ->transform(decimal_integer())
+        ->check(CLI::Range(0, limits::kMaxDepth));
+    cmd.add_option("--exposure", o.exposure, "Stops: the PNG shows the image times 2^EV (overrides [render] exposure; -64 to 64)")
+        ->check(exposure_stops());
     cmd.add_option("--tone", o.tone, "Tone curve for the PNG: clamp, reinhard or aces (overrides [render] tone)")
         ->check(CLI::IsMember({"clamp", "reinhard", "aces"}));
     cmd.add_option("--photons", o.photons, "Photon mapping: photons shot per pass (switches it on; overrides [photons] count)")
-        ->check(CLI::Range(1, limits::kMaxPhotonsPerPass));
+        ->transform(decimal_integer())->check(CLI::Range(1, limits::kMaxPhotonsPerPass));
     cmd.add_option("--passes", o.passes, "Photon mapping: passes whose estimates are averaged (overrides [photons] passes)")
-        ->check(CLI::Range(1, limits::kMaxPhotonPasses));
+        ->transform(decimal_integer())->check(CLI::Range(1, limits::kMaxPhotonPasses));
     cmd.add_option("--pass-range", o.pass_range,
                    "Photon mapping: render only passes A-B (0-based) of the whole, for one machine of a farm; "
-                   "combine the parts with lancer combine");
+                   "combine the parts with lancer combine")
+        ->check(not_empty("expected A-B or N (0-based pass numbers)"));
     cmd.add_option("--backend", o.backend, "gpu (Vulkan compute, default) or cpu (reference renderer)")
         ->check(CLI::IsMember({"gpu", "cpu"}));
     cmd.add_option("--device", o.device, "Vulkan device: index or part of its name (see --list-devices)");
@@ -142,6 +160,64 @@ ExrInfo image_info(const Scene& scene) {
         info.total_passes = scene.photons->passes;
     }
     return info;
+}
+
+namespace {
+
+// FNV-1a, 64 bits: the same on every machine and build (std::hash is not).
+struct Fnv1a {
+    std::uint64_t h = 14695981039346656037ULL;
+    void add(const void* data, std::size_t size) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 1099511628211ULL;
+    }
+    void add(const std::string& s) {
+        const std::uint64_t n = s.size();
+        add(&n, sizeof n);  // length first: "ab" + "c" and "a" + "bc" differ
+        add(s.data(), s.size());
+    }
+};
+
+std::string vec_text(const dvec3& v) { return fmt::format("({}, {}, {})", v.x, v.y, v.z); }
+
+}  // namespace
+
+std::vector<std::string> scene_inputs(const Scene& scene) {
+    std::vector<std::string> files{scene.path};
+    files.insert(files.end(), scene.dependencies.begin(), scene.dependencies.end());
+    return files;
+}
+
+std::string scene_files_hash(const Scene& scene) {
+    Fnv1a fnv;
+    for (const std::string& file : scene_inputs(scene)) {
+        std::error_code ec;
+        // A FIFO or device was read once by the loader; reading it again could block for ever.
+        if (!std::filesystem::is_regular_file(file, ec)) {
+            fnv.add("not a regular file: " + file);
+            continue;
+        }
+        FileText text = read_file(file, std::size_t(1) << 31);
+        fnv.add(text.text);
+        if (!text.complete) fnv.add("larger than 2 GiB");
+    }
+    return fmt::format("{:016x}", fnv.h);
+}
+
+std::string render_settings_text(const Scene& scene, const RenderOptions& o) {
+    const RenderSettings& r = scene.render;
+    std::string text = fmt::format("lancer {}\nbackend {}\n", kVersion, o.backend);
+    if (!o.shader_dir.empty()) text += "shaders " + o.shader_dir + "\n";
+    text += fmt::format("size {}x{}\nsamples {}\nmax_depth {}\n", r.width, r.height, r.samples, r.max_depth);
+    if (r.aa_threshold)
+        text += fmt::format("adaptive threshold {} depth {} method {}\n", *r.aa_threshold, r.aa_depth,
+                            r.aa_method == AaMethod::Spread ? "spread" : "neighbours");
+    const CameraSpec& c = scene.camera;
+    text += fmt::format("camera eye {} look_at {} up {} fov {}\n", vec_text(c.eye), vec_text(c.look_at), vec_text(c.up), c.fov_deg);
+    if (const auto& p = scene.photons)
+        text += fmt::format("photons {} per pass, {} passes, radii {} {}, alpha {}, seed {}, max_bounces {}\n", p->count,
+                            p->passes, p->caustic_radius, p->global_radius, p->alpha, p->seed, p->max_bounces);
+    return text;
 }
 
 std::string output_path(const RenderOptions& o) {

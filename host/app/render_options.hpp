@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -38,6 +39,17 @@ Scene load_scene_with_overrides(const RenderOptions& o);
 // What an image file of this scene's render records: its tone mapping and which photon passes
 // its pixels average (a part of a farm render).
 ExrInfo image_info(const Scene& scene);
+
+// What determines the pixels of a render, for the stamp of a farm's part (lancer combine refuses
+// parts whose stamps differ): a hash of the scene file and every file it read (patch files,
+// textures), as 16 hex digits, and the settings after the command line's overrides, one
+// "name value" per line (version, backend, size, samples, depth, camera, photons).
+std::string scene_files_hash(const Scene& scene);
+std::string render_settings_text(const Scene& scene, const RenderOptions& o);
+
+// The files a render of the scene reads: the scene file and its dependencies (an output must
+// not be one of them).
+std::vector<std::string> scene_inputs(const Scene& scene);
 
 // The output path: -o, or the scene's name with .png in the current directory.
 std::string output_path(const RenderOptions& o);

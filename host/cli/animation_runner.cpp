@@ -12,6 +12,7 @@
 
 #include "app/frame_pattern.hpp"
 #include "app/interrupt.hpp"
+#include "app/option_checks.hpp"
 #include "cli/progress.hpp"
 #include "cli/still_render.hpp"
 #include "app/video.hpp"
@@ -59,9 +60,11 @@ void create_frame_directory(const std::string& dir) {
 }  // namespace
 
 void add_animation_options(CLI::App& cmd, AnimationOptions& o) {
-    cmd.add_option("--frames", o.frames, "Animated scenes: render frames A-B (or frame N) only, 0-based");
+    cmd.add_option("--frames", o.frames, "Animated scenes: render frames A-B (or frame N) only, 0-based")
+        ->check(not_empty("expected A-B or N, frame numbers from 0"));
     cmd.add_flag("--force", o.force, "Animated scenes: render frames again even when their files exist");
-    cmd.add_option("--video", o.video, "Animated scenes: also encode the frames into FILE (.mp4, .webm or .gif) with ffmpeg");
+    cmd.add_option("--video", o.video, "Animated scenes: also encode the frames into FILE (.mp4, .webm or .gif) with ffmpeg")
+        ->check(not_empty("expected FILE.mp4, .webm or .gif"));
 }
 
 int run_animation(const RenderOptions& options, const AnimationOptions& opts, const Scene& scene) {
@@ -110,6 +113,8 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
         progress.message(fmt::format("{}: rendering frame(s) {} again: their files do not decode completely at {}x{}",
                                      pattern->text(), format_frame_list(unfinished), r.width, r.height));
 
+    for (int k : todo) check_output_is_not_an_input(pattern->path(k), scene_inputs(scene));
+    if (!opts.video.empty()) check_output_is_not_an_input(opts.video, scene_inputs(scene));
     if (!todo.empty()) {
         create_frame_directory(pattern->directory());
         check_output_writable(pattern->path(todo.front()));

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "app/option_checks.hpp"
 #include "cli/commands.hpp"
 #include "image/diff.hpp"
 
@@ -29,6 +30,7 @@ struct DiffCommand {
     }
 
     int run() const {
+        if (!side_by_side.empty()) check_output_is_not_an_input(side_by_side, {a, b});
         Rgb8Image ia = read_png(a), ib = read_png(b);
         ImageDiff d = compare_images(ia, ib, threshold);
         std::printf("%s vs %s: PSNR %.2f dB, %.3f%% of pixels off by more than %d/255, largest difference %d/255\n",
@@ -46,8 +48,9 @@ Subcommand add_diff_command(CLI::App& parent) {
     cmd->add_option("a", state->a, "First image")->required();
     cmd->add_option("b", state->b, "Second image")->required();
     cmd->add_option("--threshold", state->threshold, "A pixel differs when a channel is off by more than this (0-255)")
+        ->transform(decimal_integer())
         ->check(CLI::Range(0, 255));
-    cmd->add_option("--side-by-side", state->side_by_side, "Write A | B | 8 x |A - B| to this PNG");
+    cmd->add_option("--side-by-side", state->side_by_side, "Write A | B | 8 x |A - B| to this PNG")->check(png_file_name());
     return {cmd, [state] { return state->run(); }};
 }
 

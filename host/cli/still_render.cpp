@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "app/interrupt.hpp"
+#include "app/option_checks.hpp"
 #include "cli/progress.hpp"
 #include "gpu/vulkan/context.hpp"
 #include "render/adaptive_render.hpp"
@@ -15,6 +16,7 @@ namespace lancer {
 
 int render_still(const RenderOptions& options, const Scene& scene, const std::string& output) {
     check_output_writable(output);
+    check_output_is_not_an_input(output, scene_inputs(scene));
     std::unique_ptr<Renderer> renderer = make_renderer(options);
 
     Interrupts interrupts;
@@ -31,7 +33,11 @@ int render_still(const RenderOptions& options, const Scene& scene, const std::st
         throw Interrupted(interrupts.signal_number(), "'" + output + "' was not written");
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const ExrInfo info = image_info(scene);
+    ExrInfo info = image_info(scene);
+    if (info.passes > 0) {  // a part of a farm render: stamped, so that lancer combine mixes no others
+        info.scene_hash = scene_files_hash(scene);
+        info.settings = render_settings_text(scene, options);
+    }
     write_image(output, image, info);
 
     const RenderSettings& r = scene.render;

@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "app/file_watcher.hpp"
 #include "app/hot_reload.hpp"
+#include "app/option_checks.hpp"
 #include "app/render_options.hpp"
 #include "core/cancel.hpp"
 #include "gpu/vulkan/context.hpp"
@@ -164,7 +165,7 @@ Subcommand add_watch_command(CLI::App& parent) {
     add_render_options(*cmd, state->options);
     cmd->get_option("--shaders")
         ->description("Shader directory to compile and watch (default: ./shaders if present, else the built-in shaders)");
-    cmd->add_option("--frame", state->frame, "Frame of an animated scene to preview (default 0)");
+    cmd->add_option("--frame", state->frame, "Frame of an animated scene to preview (default 0)")->transform(decimal_integer());
     return {cmd, [state] { return state->run(); }};
 }
 

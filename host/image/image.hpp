@@ -71,11 +71,16 @@ Rgb8Image read_png(const std::string& path);
 // its pixels average ("lancerFirstPass", "lancerPasses" of "lancerTotalPasses"; absent without
 // photon mapping), for combining the parts of a farm render, and the scene's tone mapping
 // ("lancerExposure", "lancerTone"), for the PNG made of them.
+// A part of a farm render also carries a stamp of what determined its pixels
+// ("lancerSceneHash": the scene's files; "lancerSettings": the render's settings, one "name
+// value" per line; app/render_options.hpp), so that parts of different renders are not mixed.
 struct ExrInfo {
     int first_pass = 0;
     int passes = 0;  // 0: not a photon render
     int total_passes = 0;
     ToneMapping tone;
+    std::string scene_hash;  // empty: not stamped
+    std::string settings;
 };
 
 // HDR output: the linear colours as they are (no exposure, no tone curve), 32-bit float:
@@ -83,8 +88,16 @@ struct ExrInfo {
 // Both atomic, as write_png.
 void write_exr(const std::string& path, const FloatImage& image, const ExrInfo& info = {});
 void write_pfm(const std::string& path, const FloatImage& image);
-// Reads them back (rgb; a = 0).
+// Reads them back (rgb; a = 0). read_exr reads files as lancer writes them and refuses, before
+// allocating for the pixels, anything larger than kMaxReadSide / kMaxReadPixels, channels other
+// than R, G and B, tiled, deep or multi-part files, compressions other than NONE, RLE, ZIPS and
+// ZIP, and a file too small for the pixels its header claims (even compressed); and lancer's
+// attributes when they are of the wrong type or out of range (an exposure that is not finite or
+// beyond kMaxExposureStops, an unknown tone curve). Throws UserError "cannot read OpenEXR
+// 'path': why".
 FloatImage read_exr(const std::string& path, ExrInfo* info = nullptr);
+// The same from the bytes of a file (the fuzz target's entry); `name` is for the messages.
+FloatImage read_exr_bytes(const std::string& name, const std::string& bytes, ExrInfo* info = nullptr);
 FloatImage read_pfm(const std::string& path);
 
 enum class ImageFormat { Png, Exr, Pfm };

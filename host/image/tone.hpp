@@ -9,6 +9,11 @@ enum class Tone {
     Aces,      // the ACES filmic curve (Narkowicz's fit): a toe, a shoulder, white from 7.24
 };
 
+// The exposures lancer accepts, in stops, wherever one is given: [render] exposure, --exposure of
+// render, watch, view and combine, and an OpenEXR part's lancerExposure attribute. 2^64 takes
+// the faintest float radiance to white and back; anything beyond is a mistake, as is NaN.
+constexpr double kMaxExposureStops = 64.0;
+
 struct ToneMapping {
     double exposure = 0.0;  // stops
     Tone tone = Tone::Clamp;

@@ -40,7 +40,7 @@ void read_render(TableReader& t, RenderSettings& r) {
         t.fail(problem->key, problem->message);
     r.max_depth = check_int_range(t, "max_depth", t.integer("max_depth", r.max_depth), 0, limits::kMaxDepth);
     r.background = check_color(t, "background", t.vec3("background", r.background));
-    r.tone.exposure = check_range(t, "exposure", t.number("exposure", r.tone.exposure), -64.0, 64.0);
+    r.tone.exposure = check_range(t, "exposure", t.number("exposure", r.tone.exposure), -kMaxExposureStops, kMaxExposureStops);
     r.tone.tone = static_cast<Tone>(one_of(t, "tone", "tone curve", {"clamp", "reinhard", "aces"}, "clamp"));
     t.finish();
 }

@@ -10,6 +10,7 @@
 #include <SDL.h>
 #include <fmt/format.h>
 
+#include "app/option_checks.hpp"
 #include "app/file_watcher.hpp"
 #include "app/frame_pattern.hpp"
 #include "app/hot_reload.hpp"
@@ -95,7 +96,10 @@ public:
         if (options.render.backend != "gpu") throw UserError("lancer view renders on the GPU only (no --backend cpu)");
         // -o names the PNGs `p` saves: checked now rather than when the user presses p.
         std::string first = snapshot_path(false);
+        if (image_format_of(first) != ImageFormat::Png)
+            throw UserError("-o " + options.render.output + ": p saves PNG images, so the name must end in .png");
         check_output_writable(first);
+        check_output_is_not_an_input(first, scene_inputs(scene_));
         if (!options.dump_frame.empty()) check_output_writable(options.dump_frame);
     }
 

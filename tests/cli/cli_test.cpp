@@ -191,6 +191,18 @@ std::string directory_named_png() {
     return dir;
 }
 
+// A small PNG in the output directory, for diff's inputs.
+std::string small_png(const std::string& name) {
+    std::string path = test::output_dir() + "/cli-input-" + name + ".png";
+    write_png(path, Rgb8Image{4, 2, std::vector<std::uint8_t>(24, 100)});
+    return path;
+}
+
+const std::string kSeedSmall = test::source_path("scenes/seed.toml") + kSmall;
+const std::string kPhotonScene = test::source_path("tests/data/photons/small.toml") + " --backend cpu";
+const std::string kNotDecimal = "' is not a whole number: write it in decimal digits";
+const std::string kExposure = "the exposure must be a finite number of stops in [-64, 64], not ";
+
 class CliRejects : public testing::TestWithParam<BadCase> {};
 
 TEST_P(CliRejects, WithExitCode2AndOneMessageAndNoOutput) {
@@ -251,7 +263,36 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"no_vulkan_device", "render " + test::source_path("scenes/seed.toml") + kSmall + "-o OUT",
                 "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json", "lancer: error: no Vulkan device found"},
         BadCase{"unknown_device", "render " + test::source_path("scenes/seed.toml") + kSmall + "--device nosuchgpu -o OUT", "",
-                "lancer: error: no Vulkan device matches 'nosuchgpu'"}),
+                "lancer: error: no Vulkan device matches 'nosuchgpu'"},
+        // Hostile input, round 3 (issue 42): integers are decimal digits (CLI11 read "0x10" as 16
+        // and "010" as 8, and said "not in range" of "1e3").
+        BadCase{"width_hex", "render " + kSeedSmall + "--width 0x10 -o OUT", "", "lancer: error: --width: '0x10" + kNotDecimal},
+        BadCase{"width_exponent", "render " + kSeedSmall + "--width 1e3 -o OUT", "", "lancer: error: --width: '1e3" + kNotDecimal},
+        BadCase{"samples_plus", "render " + kSeedSmall + "--samples +2 -o OUT", "", "lancer: error: --samples: '+2" + kNotDecimal},
+        BadCase{"photons_hex", "render " + kPhotonScene + " --photons 0x100 -o OUT", "", "lancer: error: --photons: '0x100" + kNotDecimal},
+        BadCase{"threshold_hex", "diff " + small_png("a") + " " + small_png("b") + " --threshold 0x8", "",
+                "lancer: error: --threshold: '0x8" + kNotDecimal},
+        // --exposure: NaN passed CLI::Range (a black picture, exit 0), in render, watch and view.
+        BadCase{"exposure_nan", "render " + kSeedSmall + "--exposure nan -o OUT", "", "lancer: error: --exposure: " + kExposure + "nan"},
+        BadCase{"exposure_inf", "render " + kSeedSmall + "--exposure inf -o OUT", "", "lancer: error: --exposure: " + kExposure + "inf"},
+        BadCase{"exposure_beyond", "render " + kSeedSmall + "--exposure -65 -o OUT", "", "lancer: error: --exposure: " + kExposure + "-65"},
+        BadCase{"watch_exposure_nan", "watch " + kSeedSmall + "--exposure nan -o OUT", "", "lancer: error: --exposure: " + kExposure + "nan"},
+        BadCase{"view_exposure_nan", "view " + kSeedSmall + "--exposure NaN -o OUT", "", "lancer: error: --exposure: " + kExposure + "NaN"},
+        // An empty value was taken for no value: all passes, all frames, no picture.
+        BadCase{"pass_range_empty", "render " + kPhotonScene + " --pass-range '' -o OUT", "",
+                "lancer: error: --pass-range: empty: expected A-B or N (0-based pass numbers)"},
+        BadCase{"pass_range_signed", "render " + kPhotonScene + " --pass-range +1-3 -o OUT", "",
+                "lancer: error: --pass-range +1-3: expected A-B or N (0-based pass numbers)"},
+        BadCase{"pass_range_spaces", "render " + kPhotonScene + " --pass-range '1- 3' -o OUT", "",
+                "lancer: error: --pass-range 1- 3: expected A-B or N (0-based pass numbers)"},
+        BadCase{"frames_empty", "render " + test::source_path("tests/data/anim/small.toml") + " --frames '' -o OUT", "",
+                "lancer: error: --frames: empty: expected A-B or N, frame numbers from 0"},
+        BadCase{"side_by_side_empty", "diff " + small_png("a") + " " + small_png("b") + " --side-by-side ''", "",
+                "lancer: error: --side-by-side: the output file name is empty"},
+        BadCase{"side_by_side_jpg", "diff " + small_png("a") + " " + small_png("b") + " --side-by-side " + test::output_dir() + "/cli-side.jpg", "",
+                "lancer: error: --side-by-side: '" + test::output_dir() + "/cli-side.jpg': a PNG image is written, so the name must end in .png"},
+        BadCase{"view_output_exr", "view " + kSeedSmall + "-o " + test::output_dir() + "/cli-view.exr", "",
+                "lancer: error: -o " + test::output_dir() + "/cli-view.exr: p saves PNG images, so the name must end in .png"}),
     [](const auto& info) { return info.param.name; });
 
 }  // namespace
@@ -259,6 +300,51 @@ INSTANTIATE_TEST_SUITE_P(
 
 namespace lancer {
 namespace {
+
+// Integers are read as decimal, leading zeros and all (CLI11 read "010" as octal 8).
+TEST(Cli, IntegersAreDecimal) {
+    std::string out = out_path("decimal");
+    auto r = test::run_lancer("render " + test::source_path("scenes/seed.toml") + " --width 010 --height 08 --samples 01 -q -o " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    Rgb8Image img = read_png(out);
+    EXPECT_EQ(img.width, 10);
+    EXPECT_EQ(img.height, 8);
+}
+
+// An output that is one of the command's inputs (the same file by any name) is refused before
+// anything is written: a texture of the scene, the scene itself, a frame over a texture, an
+// image diff compares.
+TEST(Cli, AnOutputThatIsAnInputIsRefused) {
+    std::string dir = test::fresh_dir("output-is-input");
+    fs::create_directories(dir + "/textures");
+    write_png(dir + "/textures/wood.png", Rgb8Image{2, 2, std::vector<std::uint8_t>(12, 200)});
+    test::write_file(dir + "/scene.toml", "[render]\nwidth = 8\nheight = 8\nsamples = 1\n[camera]\neye = [0, 0, -5]\n"
+                                          "look_at = [0, 0, 0]\n[material.ball]\ntexture = \"textures/wood.png\"\n"
+                                          "[[object]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"ball\"\n"
+                                          "[[light]]\nposition = [0, 5, -5]\n");
+    const std::string texture = test::read_file(dir + "/textures/wood.png");
+    auto fine = test::run_lancer("render " + dir + "/scene.toml --backend cpu -q -o " + dir + "/out.png");
+    ASSERT_EQ(fine.exit_code, 0) << fine.err;
+    for (const std::string& output : {dir + "/textures/wood.png", dir + "/textures/../textures/wood.png"}) {
+        auto r = test::run_lancer("render " + dir + "/scene.toml --backend cpu -q -o " + output);
+        EXPECT_EQ(r.exit_code, 2) << output;
+        EXPECT_EQ(r.err.rfind("lancer: error: cannot write '" + output + "': it is ", 0), 0u) << r.err;
+    }
+    fs::create_symlink(dir + "/textures/wood.png", dir + "/alias.png");
+    auto alias = test::run_lancer("render " + dir + "/scene.toml --backend cpu -q -o " + dir + "/alias.png");
+    EXPECT_EQ(alias.exit_code, 2);
+    EXPECT_NE(alias.err.find("it is the input"), std::string::npos) << alias.err;
+    EXPECT_EQ(test::read_file(dir + "/textures/wood.png"), texture);
+
+    std::string a = small_png("diff-input-a"), b = small_png("diff-input-b");
+    const std::string before = test::read_file(a);
+    for (const std::string& output : {a, b}) {
+        auto r = test::run_lancer("diff " + a + " " + b + " --side-by-side " + output);
+        EXPECT_EQ(r.exit_code, 2);
+        EXPECT_EQ(r.err, "lancer: error: cannot write '" + output + "': it is an input of this command\n");
+    }
+    EXPECT_EQ(test::read_file(a), before);
+}
 
 TEST(CliDiff, ReportsTheMetricAndWritesTheSideBySide) {
     std::string a = test::output_dir() + "/diff-a.png", b = test::output_dir() + "/diff-b.png";

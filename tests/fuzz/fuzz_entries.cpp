@@ -21,6 +21,7 @@
 #include "cpu/shapes/shapes.hpp"
 #include "gpu/packing/scene_packing.hpp"
 #include "gpu/shaders/spirv_cache.hpp"
+#include "image/image.hpp"
 #include "scene/animation.hpp"
 #include "scene/camera.hpp"
 #include "scene/load_scene.hpp"
@@ -486,6 +487,25 @@ void cache_file_entry(const std::uint8_t* data, std::size_t size) {
         if (sealed) require(*hit == sealed_words, "a sealed entry's hit is not its words");
     }
     if (sealed && !compiled) require(hit.has_value() == !sealed_words.empty(), "a sealed specialisation with words was a miss");
+}
+
+void exr_part_entry(const std::uint8_t* data, std::size_t size) {
+    ExrInfo info;
+    FloatImage image;
+    try {
+        image = read_exr_bytes("fuzz.exr", std::string(reinterpret_cast<const char*>(data), size), &info);
+    } catch (const UserError&) {
+        return;
+    }
+    const long long pixels = static_cast<long long>(image.width) * image.height;
+    require(image.width >= 1 && image.height >= 1 && image.width <= kMaxReadSide && image.height <= kMaxReadSide &&
+                pixels <= kMaxReadPixels,
+            "an accepted part is beyond the size limits");
+    require(static_cast<long long>(image.pixels.size()) == pixels, "an accepted part's pixels do not match its size");
+    // Three channels of at least 2 bytes each, compressed at best 1032 : 1 (deflate).
+    require(double(pixels) * 6.0 <= double(size) * 1032.0, "an accepted part has more pixels than its bytes can hold");
+    require(std::isfinite(info.tone.exposure) && std::abs(info.tone.exposure) <= kMaxExposureStops,
+            "an accepted part's exposure is not finite or out of range");
 }
 
 }  // namespace lancer::fuzz

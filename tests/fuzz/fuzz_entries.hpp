@@ -54,4 +54,10 @@ void patch_entry(const std::uint8_t* data, std::size_t size);
 // a miss or exactly the words the entry holds; a sealed specialisation with words must be a hit.
 void cache_file_entry(const std::uint8_t* data, std::size_t size);
 
+// A farm render's part -> read as `lancer combine` reads it (read_exr_bytes: the header checked
+// against the limits and the file's size before the pixels are allocated). An accepted part is
+// within kMaxReadSide and kMaxReadPixels, no larger than its bytes can hold, and its exposure is
+// finite and in range.
+void exr_part_entry(const std::uint8_t* data, std::size_t size);
+
 }  // namespace lancer::fuzz

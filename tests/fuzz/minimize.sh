@@ -5,11 +5,11 @@
 # -use_counters=0, so that edges count and hit counts do not (a tenth of the files, the same
 # edges; the fuzzers find the counts again within seconds).
 #
-#   tests/fuzz/minimize.sh [TARGET...]        (default: scene expression patch cache_entry)
+#   tests/fuzz/minimize.sh [TARGET...]        (default: scene expression patch cache_entry exr_part)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 targets=("$@")
-((${#targets[@]})) || targets=(scene expression patch cache_entry)
+((${#targets[@]})) || targets=(scene expression patch cache_entry exr_part)
 build="${LANCER_FUZZ_BUILD:-build-fuzz}"
 for target in "${targets[@]}"; do
   merged=$(mktemp -d)
