@@ -74,7 +74,9 @@ void main() {
     } else {
         EXPECT_EQ(counted.y, 2.0f);
     }
-    if (!driver_limits_loops()) EXPECT_FALSE(cut_short);
+    if (!driver_limits_loops()) {
+        EXPECT_FALSE(cut_short);
+    }
 }
 
 TEST(LoopLimit, CutShortBandsAreRenderedAgainAndMatchTheReference) {
