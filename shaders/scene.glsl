@@ -10,6 +10,7 @@
 #include "shapes/sphere.glsl"
 #include "shapes/plane.glsl"
 #include "shapes/rectangle.glsl"
+#include "shapes/disc.glsl"
 #include "shapes/box.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)

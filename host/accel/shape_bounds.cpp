@@ -1,5 +1,8 @@
 #include "accel/shape_bounds.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace lancer {
 namespace {
 
@@ -13,6 +16,13 @@ struct BoundsOf {
         return b;
     }
     std::optional<Aabb> operator()(const Box& b) const { return Aabb{b.min, b.max}; }
+    // A circle of radius R about c in the plane across unit n reaches R sqrt(1 - n_i^2) along
+    // axis i; widened by a few roundings of R so that rounding never leaves its rim outside.
+    std::optional<Aabb> operator()(const Disc& d) const {
+        dvec3 reach;
+        for (int i = 0; i < 3; ++i) reach[i] = d.radius * (std::sqrt(std::max(0.0, 1.0 - d.normal[i] * d.normal[i])) + 1e-15);
+        return Aabb{d.center - reach, d.center + reach};
+    }
     std::optional<Aabb> operator()(const ParametricObject& p) const { return Aabb{p.bounds_lo, p.bounds_hi}; }
     std::optional<Aabb> operator()(const ImplicitObject& o) const {
         Aabb b;

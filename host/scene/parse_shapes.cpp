@@ -56,6 +56,30 @@ Shape read_box(TableReader& t) {
     return b;
 }
 
+// POV-Ray's disc { center, normal, radius [, hole_radius] }, with its names.
+Shape read_disc(TableReader& t) {
+    Disc d;
+    d.center = t.required_vec3("center");
+    dvec3 n = t.required_vec3("normal");
+    if (!(glm::length(n) > 0.0)) t.fail("normal", "disc normal must not be the zero vector");
+    d.normal = glm::normalize(n);
+    d.radius = t.required_number("radius");
+    if (!(d.radius > 0.0)) t.fail("radius", fmt::format("disc radius must be positive, not {:g}", d.radius));
+    d.hole_radius = t.number("hole_radius", 0.0);
+    if (!(d.hole_radius >= 0.0))
+        t.fail("hole_radius", fmt::format("disc hole_radius must not be negative, not {:g}", d.hole_radius));
+    if (!(d.hole_radius < d.radius))
+        t.fail("hole_radius", fmt::format("disc hole_radius ({:g}) must be less than its radius ({:g}): the disc "
+                                          "would have no surface",
+                                          d.hole_radius, d.radius));
+    Plane axes;  // the texture's angle starts at the plane's u axis for this normal
+    axes.normal = d.normal;
+    set_plane_texture_axes(axes);
+    d.u_axis = axes.u_axis;
+    d.v_axis = axes.v_axis;
+    return d;
+}
+
 }  // namespace
 
 const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
@@ -67,6 +91,7 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"bezier", read_bezier},
         {"parametric", read_parametric},
         {"implicit", read_implicit},
+        {"disc", read_disc},
     };
     return readers;
 }

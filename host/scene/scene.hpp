@@ -236,7 +236,21 @@ struct ImplicitObject {
     surface::ImplicitSurface surface;
 };
 
-using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject>;
+// POV-Ray's disc: the points of the plane through `center` with unit `normal` whose distance r
+// from the centre has hole_radius <= r <= radius (0 <= hole_radius < radius). A thin sheet, no
+// inside. Texture (u, v) are polar: u the angle about the normal from u_axis toward v_axis (the
+// plane's texture axes for that normal, set_plane_texture_axes) over 2 pi, v = (r - hole_radius)
+// / (radius - hole_radius) (docs/scene-format.md).
+struct Disc {
+    dvec3 center{0.0};
+    dvec3 normal{0.0, 1.0, 0.0};  // unit length
+    double radius = 1.0;
+    double hole_radius = 0.0;
+    dvec3 u_axis{1.0, 0.0, 0.0};
+    dvec3 v_axis{0.0, 0.0, 1.0};
+};
+
+using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \

@@ -122,6 +122,11 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require_finite(s.corner, when, ": rectangle");
                     require_finite(s.edge_u, when, ": rectangle");
                     require_finite(s.edge_v, when, ": rectangle");
+                } else if constexpr (std::is_same_v<T, Disc>) {
+                    require_finite(s.center, when, ": disc");
+                    require_finite(s.normal, when, ": disc normal");
+                    require(std::isfinite(s.radius) && s.radius > 0.0, when, ": disc radius");
+                    require(s.hole_radius >= 0.0 && s.hole_radius < s.radius, when, ": disc hole radius");
                 } else if constexpr (std::is_same_v<T, Box>) {
                     require_finite(s.min, when, ": box");
                     require_finite(s.max, when, ": box");
@@ -147,6 +152,8 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                             require(std::isfinite(f.to_local[c][r]), when, ": implicit inverse transform");
                         }
                     }
+                } else {
+                    static_assert(sizeof(T) == 0, "a shape of the registry without its invariants here");
                 }
             },
             o.shape);

@@ -12,14 +12,14 @@
 namespace lancer {
 namespace {
 
-// Reduced size, same aspect ratio, 240 pixels wide so features stay visible. Patch surfaces
-// cost the reference ~50 us per ray and patch (an eigenvalue problem each), so scenes with them
-// are tested at 128 pixels and 2 x 2 samples.
+// Reduced size, same aspect ratio, 240 pixels wide so features stay visible. Shapes that are not
+// cheap (the registry's SHAPE_CHEAP) cost the reference far more: ~50 us per ray and patch for
+// Bezier surfaces (an eigenvalue problem each), so scenes with them are tested at 128 pixels and
+// 2 x 2 samples.
 void shrink(Scene& scene) {
     RenderSettings& r = scene.render;
     bool exact_surfaces = std::any_of(scene.objects.begin(), scene.objects.end(), [](const Object& o) {
-        return !std::holds_alternative<Sphere>(o.shape) && !std::holds_alternative<Plane>(o.shape) &&
-               !std::holds_alternative<Rectangle>(o.shape) && !std::holds_alternative<Box>(o.shape);
+        return !shape_has(shape_type(o.shape), SHAPE_CHEAP);
     });
     int width = exact_surfaces ? 128 : 240;
     if (exact_surfaces) r.samples = std::min(r.samples, 2);

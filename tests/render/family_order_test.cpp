@@ -3,10 +3,10 @@
 // primitive outside its family's range would never be tested. Beside expensive shapes in a BVH,
 // a few analytic ones stay outside it. (That the pictures do not depend on the order is the
 // image tests' business: ties go by a stable key.)
+#include <array>
 #include <string>
 
 #include <fmt/format.h>
-
 #include <gtest/gtest.h>
 
 #include "gpu/packing/scene_packing.hpp"
@@ -57,8 +57,13 @@ TEST(FamilyOrder, PrimitivesOutsideTheBvhAreSortedByFamilyWithTheirEnds) {
     const gpu::FrameParams frame = gpu::pack_frame(scene, packed);
     ASSERT_EQ(frame.unbounded_count, 6u);
     ASSERT_EQ(frame.primitive_count, 6u);
-    const uint expected_ends[] = {3, 4, 5, 6, 6, 6, 6};  // 3 spheres, a plane, a rectangle, a box
-    static_assert(std::size(expected_ends) == SHAPE_COUNT);
+    // 3 spheres, a plane, a rectangle, a box; every later family is empty and ends at 6.
+    std::array<uint, SHAPE_COUNT> expected_ends;
+    expected_ends.fill(6);
+    expected_ends[SHAPE_SPHERE] = 3;
+    expected_ends[SHAPE_PLANE] = 4;
+    expected_ends[SHAPE_RECTANGLE] = 5;
+    static_assert(SHAPE_SPHERE == 0 && SHAPE_PLANE == 1 && SHAPE_RECTANGLE == 2 && SHAPE_BOX == 3);
     uint begin = frame.primitive_count - frame.unbounded_count;
     for (uint type = 0; type < SHAPE_COUNT; ++type) {
         const uint end = gpu::per_shape(frame.family_end, type);

@@ -173,6 +173,9 @@ std::vector<surface::BezierPatch> moved(std::vector<surface::BezierPatch> patche
     return patches;
 }
 
+// A tilted annulus (its hole's edge is a silhouette too).
+const char* const kDisc = "type = \"disc\"\ncenter = [0.2, 0.9, 0.3]\nnormal = [0.3, 1, -0.6]\nradius = 1.6\nhole_radius = 0.5\n";
+
 struct Case {
     std::string name;
     Scene (*make)();
@@ -187,6 +190,9 @@ const Case kCases[] = {
     {"plane", [] { return analytic("type = \"plane\"\npoint = [0.2, -0.3, 0.1]\nnormal = [0.1, 1, 0.05]\n"); }},
     {"plane_far_from_origin", [] { return moved_far(analytic("type = \"plane\"\npoint = [0.2, -0.3, 0.1]\nnormal = [0.1, 1, 0.05]\n")); }},
     {"rectangle", [] { return analytic("type = \"rectangle\"\ncorner = [-1.5, 0.2, -1]\nedge_u = [3, 0.5, 0.4]\nedge_v = [-0.3, 0.2, 2.5]\n"); }},
+    {"disc", [] { return analytic(kDisc); }},
+    {"disc_far_from_origin", [] { return moved_far(analytic(kDisc)); }},
+    {"large_disc_off_centre", [] { return analytic("type = \"disc\"\ncenter = [120, -0.3, 150]\nnormal = [0.02, 1, -0.01]\nradius = 300\nhole_radius = 2\n"); }},
     {"box", [] { return analytic("type = \"box\"\nmin = [-1, 0.1, -0.7]\nmax = [1.2, 1.6, 0.9]\n"); }},
     {"box_far_from_origin", [] { return moved_far(analytic("type = \"box\"\nmin = [-1, 0.1, -0.7]\nmax = [1.2, 1.6, 0.9]\n")); }},
     {"bezier_teapot", [] { return only_object(test::shipped_scene("teapot", 64, 36), 1); }},

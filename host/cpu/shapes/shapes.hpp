@@ -26,6 +26,7 @@ std::optional<SurfaceHit> intersect(const Sphere& s, const Ray& ray, double t_mi
 std::optional<SurfaceHit> intersect(const Plane& p, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Rectangle& r, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, double t_max);
+std::optional<SurfaceHit> intersect(const Disc& d, const Ray& ray, double t_min, double t_max);
 // Certified (interval Newton) search for the nearest root; `normal` is surface_normal() there
 // and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
 std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
@@ -53,6 +54,7 @@ std::optional<SurfaceHit> intersect(const ImplicitObject& o, const Ray& ray, dou
 glm::dvec2 texture_uv(const Sphere& s, const dvec3& p);
 glm::dvec2 texture_uv(const Plane& p, const dvec3& point);
 glm::dvec2 texture_uv(const Box& b, const dvec3& p, const dvec3& face_normal);
+glm::dvec2 texture_uv(const Disc& d, const dvec3& p);
 
 // Bicubic (rational) Bezier patches, exactly, by resultant + generalized eigenvalues (bezier.cpp).
 // The ray's direction need not be unit length: t is in units of it. intersect_all returns every

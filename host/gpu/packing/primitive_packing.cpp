@@ -64,6 +64,22 @@ struct PrimitivePacker {
              v4(r.edge_v)},
             shape_bounds(r));
     }
+    // A disc is packed by (about) its point nearest the origin, as the rectangle: the plane's
+    // foot of the origin, pulled in to the rim where it lies beyond it; the centre is then that
+    // point + alpha u + beta v in the texture's axes (u, v = u x n), so the shader measures the
+    // hit's distance from the centre without ever forming the centre's large coordinates.
+    // p0 = (point, radius), p1 = (unit normal, hole radius), p2 = (u axis, alpha), data = beta's bits.
+    void operator()(const Disc& d) {
+        const dvec3 foot = d.normal * glm::dot(d.center, d.normal);  // of the origin, in the plane
+        const dvec3 across = foot - d.center;
+        const double reach = glm::length(across);
+        const dvec3 point = reach > d.radius ? d.center + across * (d.radius / reach) : foot;
+        const dvec3 to_center = d.center - point;
+        const dvec3 v_axis = glm::cross(d.u_axis, d.normal);
+        add({SHAPE_DISC, material, std::bit_cast<uint>(float(glm::dot(to_center, v_axis))), object, v4(point, d.radius),
+             v4(d.normal, d.hole_radius), v4(d.u_axis, glm::dot(to_center, d.u_axis))},
+            shape_bounds(d));
+    }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
     // Each cell of the surface's domain is a primitive with the cell's proved box; the surface
