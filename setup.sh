@@ -7,15 +7,15 @@
 #   ./setup.sh sanitize [CTEST ARGS] the asan preset (ASan + UBSan) in build-asan/, and the whole
 #                       suite under it (or what the ctest arguments select, e.g. -LE render)
 #   ./setup.sh fuzz [S] also clang: the fuzz targets in build-fuzz/, each run for S seconds (default 60)
-#   ./setup.sh mesa22   the GPU tests again on Debian 12's own lavapipe (Mesa 22.3), unpacked into
-#                       build/mesa22/ beside the Mesa 25 that lancer runs on
+#   ./setup.sh mesa22 [CTEST ARGS] the GPU tests again on Debian 12's own lavapipe (Mesa 22.3),
+#                       unpacked into build/mesa22/ beside the Mesa 25 that lancer runs on
 #
 # Packages are installed only when one is missing, so re-running is quick.
 set -euo pipefail
 cd "$(dirname "$0")"
 
 mode="${1:-build}"
-case "$mode" in render|test|build|sanitize|fuzz|mesa22) ;; *) echo "usage: $0 render|test|build|sanitize [ctest args]|fuzz [seconds]|mesa22" >&2; exit 2 ;; esac
+case "$mode" in render|test|build|sanitize|fuzz|mesa22) ;; *) echo "usage: $0 render|test|build|sanitize [ctest args]|fuzz [seconds]|mesa22 [ctest args]" >&2; exit 2 ;; esac
 
 # Every build and test dependency, all from Debian 12 (see DEVELOPERS.md for what each is for).
 packages=(
@@ -99,6 +99,6 @@ case "$mode" in
     ctest --test-dir build --output-on-failure --parallel "$(nproc)"
     ;;
   mesa22)
-    exec tests/mesa22.sh
+    exec tests/mesa22.sh "${@:2}"
     ;;
 esac

@@ -3,7 +3,9 @@
 # while the system has Mesa 25 from bookworm-backports: the driver package is downloaded once
 # into build/mesa22/, unpacked there, and chosen with VK_DRIVER_FILES for these tests only. Mesa
 # 22.3 limits loop iterations and allocates device memory differently (gpu/vulkan/driver_quirks.hpp):
-# these runs keep both code paths honest. Run through ./setup.sh mesa22 (after a build).
+# these runs keep both code paths honest. Run through ./setup.sh mesa22 [CTEST ARGS] (after a
+# build): with ctest arguments, only the tests they select (CI: every shipped scene against the
+# reference, the loop limit and the file size limits).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=build/mesa22
@@ -21,5 +23,8 @@ export VK_DRIVER_FILES="$(pwd)/$dir/lvp_icd.json" VK_ICD_FILENAMES="$(pwd)/$dir/
 devices=$(build/lancer render --list-devices)
 echo "mesa22: $devices" >&2
 case "$devices" in *"Mesa 22."*) ;; *) echo "mesa22: the device is not Mesa 22's lavapipe" >&2; exit 1 ;; esac
+if (($#)); then
+  exec ctest --test-dir build --output-on-failure --parallel "$(nproc)" "$@"
+fi
 ctest --test-dir build --output-on-failure --parallel "$(nproc)" -L render
 ctest --test-dir build --output-on-failure --parallel "$(nproc)" -R '^Faults\.FileSizeLimit'
