@@ -29,19 +29,11 @@ bool disc_intersect(Primitive d, Ray ray, float t_min, float t_max, out float t_
     return true;
 }
 
-// The hit's error (Hit.error) is the plane's (plane.glsl), and so the rectangle's: t = (p0 -
-// o).n / d.n puts o + t d off the plane by the rounding of the numerator (4 roundings of
-// |p0 - o|) plus t times that of the denominator (3); the unit normal's own rounding tilts the
-// plane by an ulp about p0, a few ulps of the hit's distance from there, which |o| + |p0| + t
-// bounds; with the hit point's: 16 roundings of |o| + |p0| + t. The radius, hole and centre
-// only decide whether there is a hit (their rounding moves the edges by ulps of the radius),
-// not how far it is from the plane.
-float disc_hit_error(Primitive d, Ray ray, float t) {
-    return rounding_bound(16.0, max_abs(ray.origin) + max_abs(d.p0.xyz) + t);
-}
-
+// The hit's error (Hit.error) is the plane's (plane.glsl: the derivation is there): the radius,
+// hole and centre only decide whether there is a hit (their rounding moves the edges by ulps of
+// the radius), not how far the hit is from the plane.
 vec3 disc_hit_normal(Primitive d, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
-    error = disc_hit_error(d, ray, t);
+    error = plane_hit_error(d, ray, t);
     return d.p1.xyz;
 }
 

@@ -27,13 +27,9 @@ bool rectangle_intersect(Primitive r, Ray ray, float t_min, float t_max, out flo
 
 // The hit's error (Hit.error) is the plane's (plane.glsl), with the normal cross(edge_u, edge_v),
 // whose rounding tilts it by a few ulps about the rectangle's point: at the hit, a few ulps of
-// its distance from there, which |origin| + |point| + t bounds; the edges' length does not count.
-float rectangle_hit_error(Primitive r, Ray ray, float t) {
-    return rounding_bound(16.0, max_abs(ray.origin) + max_abs(r.p0.xyz) + t);
-}
-
+// its distance from there, which the plane's bound already counts; the edges' length does not.
 vec3 rectangle_hit_normal(Primitive r, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
-    error = rectangle_hit_error(r, ray, t);
+    error = plane_hit_error(r, ray, t);
     float s = unit_scale(max(max_abs(r.p1.xyz), max_abs(r.p2.xyz)));
     return normalize(cross(s * r.p1.xyz, s * r.p2.xyz));
 }
