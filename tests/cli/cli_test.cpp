@@ -207,14 +207,7 @@ class CliRejects : public testing::TestWithParam<BadCase> {};
 
 TEST_P(CliRejects, WithExitCode2AndOneMessageAndNoOutput) {
     const BadCase& c = GetParam();
-    std::string out = out_path("bad-" + c.name);
-    std::string args = c.args;
-    if (auto at = args.find("OUT"); at != std::string::npos) args.replace(at, 3, out);
-    auto r = test::run_lancer(args, c.env);
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_EQ(r.err.rfind(c.message, 0), 0u) << "stderr was: " << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected: " << r.err;
-    EXPECT_FALSE(test::file_exists(out));
+    test::expect_refused(c.args, c.env, c.message, out_path("bad-" + c.name));
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -83,15 +83,9 @@ class CombineRejects : public testing::TestWithParam<Case> {};
 
 TEST_P(CombineRejects, WithExitCode2AndOneMessageAndNoOutput) {
     const Case& c = GetParam();
-    std::string out = test::output_dir() + "/combine-rejected-" + c.name + ".png";
+    const std::string out = test::output_dir() + "/combine-rejected-" + c.name + ".png";
     fs::remove(out);
-    std::string args = c.args;
-    if (auto at = args.find("OUT"); at != std::string::npos) args.replace(at, 3, out);
-    auto r = test::run_lancer(args, c.env);
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_EQ(r.err.rfind(c.message, 0), 0u) << "stderr was: " << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected: " << r.err;
-    EXPECT_FALSE(test::file_exists(out));
+    test::expect_refused(c.args, c.env, c.message, out);
 }
 
 Case combine(const std::string& name, const std::string& first, const std::string& message, const std::string& more = "") {

@@ -141,6 +141,15 @@ CommandResult run_lancer(const std::string& args, const std::string& env) {
     return r;
 }
 
+void expect_refused(std::string args, const std::string& env, const std::string& message, const std::string& out) {
+    if (auto at = args.find("OUT"); at != std::string::npos) args.replace(at, 3, out);
+    const CommandResult r = run_lancer(args, env);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind(message, 0), 0u) << "stderr was: " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected: " << r.err;
+    EXPECT_FALSE(file_exists(out));
+}
+
 bool file_exists(const std::string& path) { return std::filesystem::exists(path); }
 
 }  // namespace lancer::test

@@ -72,6 +72,9 @@ struct CommandResult {
 };
 // Runs `lancer <args>` through the shell with extra environment assignments (e.g. "VK_ICD_FILENAMES=x").
 CommandResult run_lancer(const std::string& args, const std::string& env = "");
+// `lancer <args>` (with "OUT" in them replaced by `out`) must be refused as the CLI promises: exit
+// code 2, one line on stderr that begins with `message`, and no file at `out`.
+void expect_refused(std::string args, const std::string& env, const std::string& message, const std::string& out);
 
 bool file_exists(const std::string& path);
 std::string read_file(const std::string& path);
