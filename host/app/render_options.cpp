@@ -15,6 +15,7 @@
 
 #include "app/option_checks.hpp"
 #include "core/file_reading.hpp"
+#include "core/sha256.hpp"
 #include "core/version.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "gpu/vulkan/context.hpp"
@@ -164,20 +165,6 @@ ExrInfo image_info(const Scene& scene) {
 
 namespace {
 
-// FNV-1a, 64 bits: the same on every machine and build (std::hash is not).
-struct Fnv1a {
-    std::uint64_t h = 14695981039346656037ULL;
-    void add(const void* data, std::size_t size) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 1099511628211ULL;
-    }
-    void add(const std::string& s) {
-        const std::uint64_t n = s.size();
-        add(&n, sizeof n);  // length first: "ab" + "c" and "a" + "bc" differ
-        add(s.data(), s.size());
-    }
-};
-
 std::string vec_text(const dvec3& v) { return fmt::format("({}, {}, {})", v.x, v.y, v.z); }
 
 }  // namespace
@@ -189,19 +176,19 @@ std::vector<std::string> scene_inputs(const Scene& scene) {
 }
 
 std::string scene_files_hash(const Scene& scene) {
-    Fnv1a fnv;
+    Sha256 hash;  // the same on every machine and build, as lancer's cache keys
     for (const std::string& file : scene_inputs(scene)) {
         std::error_code ec;
         // A FIFO or device was read once by the loader; reading it again could block for ever.
         if (!std::filesystem::is_regular_file(file, ec)) {
-            fnv.add("not a regular file: " + file);
+            hash.add_field("not a regular file: " + file);
             continue;
         }
         FileText text = read_file(file, std::size_t(1) << 31);
-        fnv.add(text.text);
-        if (!text.complete) fnv.add("larger than 2 GiB");
+        hash.add_field(text.text);
+        if (!text.complete) hash.add_field("larger than 2 GiB");
     }
-    return fmt::format("{:016x}", fnv.h);
+    return to_hex(hash.finish());
 }
 
 std::string render_settings_text(const Scene& scene, const RenderOptions& o) {
