@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include <openssl/crypto.h>
 #include <openssl/evp.h>
 
 namespace lancer {
@@ -48,6 +49,8 @@ Sha256Digest sha256(const void* data, std::size_t size) {
         fail("EVP_Digest");
     return digest;
 }
+
+void release_thread_hash_state() { OPENSSL_thread_stop(); }
 
 std::string to_hex(const Sha256Digest& digest) {
     static constexpr char kDigits[] = "0123456789abcdef";

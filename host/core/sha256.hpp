@@ -34,6 +34,11 @@ private:
 Sha256Digest sha256(const void* data, std::size_t size);
 inline Sha256Digest sha256(std::string_view bytes) { return sha256(bytes.data(), bytes.size()); }
 
+// Frees the calling thread's OpenSSL state now instead of at the thread's exit: a detached thread
+// that reports itself finished (PipelineBuild) must hold nothing once it has, or a process that
+// exits right after leaks it.
+void release_thread_hash_state();
+
 // Lower-case hexadecimal, 64 characters.
 std::string to_hex(const Sha256Digest& digest);
 

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "core/sha256.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/vulkan/resource_kinds.hpp"
 #include "gpu/shaders/spirv_cache.hpp"
@@ -145,6 +146,7 @@ PipelineBuild::PipelineBuild(std::shared_ptr<const Context> context, std::shared
         // An abandoned build is the last owner: this destroys the pipeline, and maybe the layout
         // and the device. Only then does it stop counting as running.
         state.reset();
+        release_thread_hash_state();  // the SPIR-V cache's hashing ran on this thread
         if (abandoned) {
             std::lock_guard count_lock(g_abandoned_mutex);
             if (--g_abandoned == 0) g_abandoned_finished.notify_all();
