@@ -13,7 +13,14 @@ struct Appearance {
 
 // n: the unit geometric normal, already facing the viewer.
 Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
-    Appearance a = Appearance(material_pigment(m, p), n);
+    // Checkers and patterns are fixed to their object: evaluated at its own coordinates.
+    vec3 q = p;
+    ObjectFrame frame;
+    if (PLACED_OBJECTS) {
+        frame = object_frame_at(primitive_at(hit.primitive).object);
+        q = object_point(frame, p);
+    }
+    Appearance a = Appearance(material_pigment(m, q), n);
     if (SCENE_HAS_TEXTURES && m.texture_map != NO_MAP) a.pigment *= texture_color(m.texture_map, texture_uv(hit, p));
     if (!SCENE_HAS_PATTERNS) return a;
     // The colour pattern, then the bump, through one evaluation site: inlined twice, the noise
@@ -22,9 +29,15 @@ Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
         uint index = k == 0u ? m.color_pattern : m.bump_pattern;
         if (index == NO_MAP) continue;
         PatternInfo pat = pattern_at(index);
-        vec4 f = pattern_value(pat, pattern_space(pat, p));
-        if (k == 0u) a.pigment *= ramp_color(pat, f.w);
-        else a.normal = bumped_normal(pat, f.xyz, n);
+        vec4 f = pattern_value(pat, pattern_space(pat, q));
+        if (k == 0u) {
+            a.pigment *= ramp_color(pat, f.w);
+        } else {
+            // The gradient in the object's coordinates, then the world's (its depth scaled alike).
+            vec3 g = pattern_gradient(pat, f.xyz);
+            if (PLACED_OBJECTS) g = world_gradient(frame, g) * frame.mean_scale;
+            a.normal = bumped_normal(pat, g, n);
+        }
     }
     return a;
 }

@@ -159,6 +159,18 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     VEC4(texture_box) /* (x0, y0, x1, y1) of the surface's box, which maps textures; the primitive's */ \
                       /* box is where the surface can be in it (surface::shrink_to_surface), searched */
 
+// Per scene object, where some object has a transform (PLACED_OBJECTS): the affine map from the
+// GPU's coordinates to the object's own (row0..2 in ImplicitInfo's form), where its checker and
+// patterns are evaluated and, for a shape kept in its own coordinates (an ellipsoid, a turned
+// box: OBJECT_SPACE_SHAPES), its rays are traced (shaders/placement.glsl).
+#define LANCER_ROWS_ObjectFrame(VEC4, VEC4S, SCALARS, UVEC4S)                                          \
+    VEC4(row0) VEC4(row1) VEC4(row2)                                                                \
+    VEC4(world0) VEC4(world1) VEC4(world2) /* and its inverse, object -> world, in the same form */   \
+    SCALARS(float, stretch,    /* the most object -> world multiplies a length by (its inf-norm) */  \
+            float, mean_scale, /* the cube root of its determinant: a bump's depth scales with it */ \
+            uint, in_object_space, /* 1: the object's primitives are in its own coordinates */       \
+            uint, reserved)
+
 // One cell of a parametric surface's domain, where the GPU searches for roots
 // (shapes/parametric.glsl). S at the cell's centre and the bounds of S's partials over the whole
 // (slightly widened) cell, in the surface's own coordinates, let the search decide most cells
@@ -347,6 +359,7 @@ LANCER_STRUCT(PatchLeaf)
 LANCER_STRUCT(SurfaceInfo)
 LANCER_STRUCT(ParametricCell)
 LANCER_STRUCT(ImplicitInfo)
+LANCER_STRUCT(ObjectFrame)
 LANCER_STRUCT(BvhNode)
 LANCER_STRUCT(Material)
 LANCER_STRUCT(TextureInfo)
@@ -400,6 +413,7 @@ LANCER_CONST RESOURCE_INT = 4;
     X(IMPLICITS, 12, RESOURCE_ROWS, ImplicitInfo, implicits, implicit_at, "implicit surfaces")          \
     X(ENERGY, 13, RESOURCE_UINT, uint, energy_tables, energy_table_at, "microfacet energy tables") /* float bits */ \
     X(EMITTERS, 14, RESOURCE_ROWS, Emitter, emitters, emitter_at, "photon emitters")                   \
+    X(OBJECT_FRAMES, 34, RESOURCE_ROWS, ObjectFrame, object_frames, object_frame_at, "object transforms") \
     X(GRIDS, 31, RESOURCE_ROWS, DirectionGrid, grids, grid_at, "direction grids")                        \
     X(GRID_CELLS, 32, RESOURCE_UINT, uint, grid_cells, grid_cell_at, "direction grid cells")             \
     X(GRID_ENTRIES, 33, RESOURCE_UINT, uint, grid_entries, grid_entry_at, "direction grid entries") /* pairs: primitive, float bits of its nearest distance */
@@ -468,7 +482,9 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(DIRECTION_GRIDS, 25, bool, direction_grids, true)   /* camera and shadow rays through DirectionGrids, not the BVH */ \
     X(GRIDS_ONLY, 26, bool, grids_only, false)            /* every ray takes a grid: the BVH's traversal compiled out */ \
     X(CHECK_GRID_CONTRACT, 27, bool, check_grid_contract, false) /* tests: a ray without a grid under GRIDS_ONLY fails the render */ \
-    X(SPHERES_BY_NEAR_POINTS, 28, bool, spheres_by_near_points, false) /* spheres packed by their points nearest the camera (sphere.glsl) */
+    X(SPHERES_BY_NEAR_POINTS, 28, bool, spheres_by_near_points, false) /* spheres packed by their points nearest the camera (sphere.glsl) */ \
+    X(PLACED_OBJECTS, 29, bool, placed_objects, false) /* some object has a transform: patterns in object coordinates (placement.glsl) */ \
+    X(OBJECT_SPACE_SHAPES, 30, bool, object_space_shapes, false) /* ... and some shape is traced in them */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");
@@ -477,6 +493,7 @@ LANCER_ASSERT_SIZE(PatchLeaf)
 LANCER_ASSERT_SIZE(SurfaceInfo)
 LANCER_ASSERT_SIZE(ParametricCell)
 LANCER_ASSERT_SIZE(ImplicitInfo)
+LANCER_ASSERT_SIZE(ObjectFrame)
 LANCER_ASSERT_SIZE(BvhNode)
 LANCER_ASSERT_SIZE(Material)
 LANCER_ASSERT_SIZE(TextureInfo)

@@ -60,11 +60,12 @@ vec3 ramp_color(PatternInfo pat, float t) {
     return color;
 }
 
-// n (unit, facing the viewer) tilted by the gradient g of a bump's pattern (in pattern space),
-// turned into world space and multiplied by the pattern's mean scale (so scaling a bump keeps
-// its depth).
-vec3 bumped_normal(PatternInfo pat, vec3 g, vec3 n) {
-    vec3 world = g.x * pat.row0.xyz + g.y * pat.row1.xyz + g.z * pat.row2.xyz;
+// The gradient g of a bump's pattern (in pattern space) in its object's coordinates.
+vec3 pattern_gradient(PatternInfo pat, vec3 g) { return g.x * pat.row0.xyz + g.y * pat.row1.xyz + g.z * pat.row2.xyz; }
+
+// n (unit, facing the viewer) tilted by the world gradient of a bump's pattern, multiplied by the
+// pattern's mean scale (so scaling a bump keeps its depth).
+vec3 bumped_normal(PatternInfo pat, vec3 world, vec3 n) {
     return normalize(n - pat.params.w * (world - dot(world, n) * n));
 }
 

@@ -6,6 +6,7 @@
 #define LANCER_SCENE_GLSL
 
 #include "interface.glsl"
+#include "placement.glsl"
 
 #include "shapes/sphere.glsl"
 #include "shapes/plane.glsl"
@@ -33,18 +34,24 @@
 // others'). Only families the scene has are compiled in (lavapipe runs every case of a switch,
 // the type being known only at run time); `bounded` (a constant: p is in the BVH) leaves out the
 // families never in it (LANCER_MAY_BE_IN_BVH).
+// A shape kept in its object's coordinates is tested there (placement.glsl).
 #define LANCER_INTERSECT_CASE(NAME, name, Type, type, traits)                                   \
     case SHAPE_##NAME:                                                                              \
-        return SCENE_HAS_##NAME && (!bounded || LANCER_MAY_BE_IN_BVH(traits)) &&               \
-               name##_intersect(p, ray, t_min, t_max, t_hit, uv, error);
-bool shape_intersect(uint type, Primitive p, Ray ray, float t_min, float t_max, bool bounded, out float t_hit, out vec2 uv,
+        hit = SCENE_HAS_##NAME && (!bounded || LANCER_MAY_BE_IN_BVH(traits)) &&               \
+              name##_intersect(p, ray, t_min * k, t_max * k, t_hit, uv, error);                   \
+        break;
+bool shape_intersect(uint type, Primitive p, Ray world_ray, float t_min, float t_max, bool bounded, out float t_hit, out vec2 uv,
                      out float error) {
     uv = vec2(0.0);
     error = 0.0;
+    float k;
+    Ray ray = primitive_ray(p, world_ray, k);
+    bool hit = false;
     switch (type) {
         LANCER_SHAPES(LANCER_INTERSECT_CASE)
     }
-    return false;
+    if (OBJECT_SPACE_SHAPES) t_hit = min(t_hit / k, t_max);
+    return hit;
 }
 
 // The unit normal at a hit on primitive `index` at t (p: the point there as the caller computed
@@ -57,12 +64,31 @@ bool shape_intersect(uint type, Primitive p, Ray ray, float t_min, float t_max, 
     case SHAPE_##NAME:                                          \
         if (SCENE_HAS_##NAME) return name##_hit_normal(prim, ray, t, p, uv, error); \
         break;
-vec3 primitive_normal(uint index, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
-    Primitive prim = primitive_at(index);
+vec3 shape_normal(Primitive prim, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
     switch (prim.type) {
         LANCER_SHAPES(LANCER_NORMAL_CASE)
     }
     return vec3(0.0, 0.0, 1.0);
+}
+
+// A shape kept in its object's coordinates gives its normal and error bound there, at the hit
+// point as it found it (an edge's face is then the one its intersection chose): the normal is
+// carried back as a gradient; the bound grows by the map's stretch, after the rounding of p's
+// own map into the object (p is what the caller will use).
+vec3 primitive_normal(uint index, Ray ray, float t, vec3 p, vec2 uv, inout float error) {
+    Primitive prim = primitive_at(index);
+    if (OBJECT_SPACE_SHAPES) {
+        ObjectFrame f = object_frame_at(prim.object);
+        if (f.in_object_space != 0u) {
+            float k;
+            Ray local = object_ray(f, ray, k);
+            float s = t * k;
+            vec3 n = shape_normal(prim, local, s, local.origin + s * local.dir, uv, error);
+            error = f.stretch * (error + object_point_rounding(f, p)) + hit_point_rounding(ray.origin, t);
+            return unit_vector(world_gradient(f, n));
+        }
+    }
+    return shape_normal(prim, ray, t, p, uv, error);
 }
 
 const int BVH_STACK_SIZE = 64;  // the builder bounds the tree depth by 60 (host/accel/bvh.cpp)
@@ -158,9 +184,13 @@ bool enters_family_box(uint box, Ray ray, float limit) {
         for (uint i = first; i < last; ++i) {                                                      \
             Primitive p = primitive_at(i);                                                         \
             float limit = LANCER_LOOP_LIMIT;                                                       \
-            float t, error = 0.0;                                                                  \
+            float t, error = 0.0, k;                                                               \
             vec2 uv = vec2(0.0);                                                                   \
-            if (name##_intersect(p, ray, t_min, limit, t, uv, error)) LANCER_ON_HIT                 \
+            Ray shape_ray = primitive_ray(p, ray, k);                                              \
+            if (name##_intersect(p, shape_ray, t_min * k, limit * k, t, uv, error)) {               \
+                if (OBJECT_SPACE_SHAPES) t = min(t / k, limit);                                    \
+                LANCER_ON_HIT                                                                      \
+            }                                                                                      \
         }                                                                                          \
     }
 

@@ -11,6 +11,13 @@
         break;
 vec2 texture_uv(Hit hit, vec3 p) {
     Primitive prim = primitive_at(hit.primitive);
+    if (OBJECT_SPACE_SHAPES) {  // a shape kept in its object's coordinates is mapped there
+        ObjectFrame f = object_frame_at(prim.object);
+        if (f.in_object_space != 0u) {
+            p = object_point(f, p);
+            hit.normal = unit_vector(object_gradient(f, hit.normal));
+        }
+    }
     switch (prim.type) {
         LANCER_SHAPES(LANCER_TEXTURE_UV_CASE)
     }

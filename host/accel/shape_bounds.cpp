@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/common.hpp>
+
 namespace lancer {
 namespace {
 
@@ -43,5 +45,27 @@ struct BoundsOf {
 }  // namespace
 
 std::optional<Aabb> shape_bounds(const Shape& shape) { return std::visit(BoundsOf{}, shape); }
+
+std::optional<Aabb> object_bounds(const Object& o) {
+    std::optional<Aabb> box = shape_bounds(o.shape);
+    if (!box || !o.placement || !o.placement->shape_in_object_space) return box;
+    const glm::dmat4& m = o.placement->to_world;
+    Aabb world;
+    if (const auto* s = std::get_if<Sphere>(&o.shape)) {
+        // An ellipsoid c + L u, |u| <= r, reaches r |row i of L| along axis i.
+        const dvec3 c(m * glm::dvec4(s->center, 1.0));
+        dvec3 reach;
+        for (int i = 0; i < 3; ++i) reach[i] = s->radius * std::hypot(m[0][i], m[1][i], m[2][i]) * (1.0 + 1e-15);
+        return Aabb{c - reach, c + reach};
+    }
+    for (int corner = 0; corner < 8; ++corner) {
+        const dvec3 p((corner & 1) ? box->hi.x : box->lo.x, (corner & 2) ? box->hi.y : box->lo.y,
+                      (corner & 4) ? box->hi.z : box->lo.z);
+        world.extend(dvec3(m * glm::dvec4(p, 1.0)));
+    }
+    // Widened by a few roundings of its size, as the disc's: the corners' products round.
+    const dvec3 pad = 1e-15 * (glm::abs(world.lo) + glm::abs(world.hi));
+    return Aabb{world.lo - pad, world.hi + pad};
+}
 
 }  // namespace lancer

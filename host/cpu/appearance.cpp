@@ -8,10 +8,13 @@
 namespace lancer::cpu {
 
 Appearance appearance_at(const Material& m, const Hit& hit, const dvec3& p, const dvec3& n) {
-    Appearance a{pigment_at(m, p), n};
+    // Checkers and patterns are fixed to the object: evaluated at its own coordinates.
+    const std::optional<Placement>& placed = hit.object->placement;
+    const dvec3 q = placed ? placed->object_point(p) : p;
+    Appearance a{pigment_at(m, q), n};
     if (m.texture) a.pigment *= texture_color(*m.texture, texture_uv(hit, p));
-    if (m.pattern) a.pigment *= pattern_color(*m.pattern, p);
-    if (m.bump) a.normal = bumped_normal(*m.bump, p, n);
+    if (m.pattern) a.pigment *= pattern_color(*m.pattern, q);
+    if (m.bump) a.normal = bumped_normal(*m.bump, q, n, placed ? glm::dmat3(placed->to_world) : glm::dmat3(1.0));
     return a;
 }
 

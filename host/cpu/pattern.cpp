@@ -84,11 +84,11 @@ dvec3 pattern_color(const Pattern& pattern, const dvec3& p) {
     return ramp_color(pattern.colors, pattern_value(pattern, to_pattern_space(pattern, p)).value);
 }
 
-dvec3 bumped_normal(const Bump& bump, const dvec3& p, const dvec3& n) {
+dvec3 bumped_normal(const Bump& bump, const dvec3& p, const dvec3& n, const glm::dmat3& object_to_world) {
     NoiseSample f = pattern_value(bump.pattern, to_pattern_space(bump.pattern, p));
-    // The world gradient of f, times the pattern's mean scale: so a bump keeps its depth when
-    // the pattern is scaled (POV-Ray's rule).
-    glm::dmat3 linear(bump.pattern.to_world);
+    // The world gradient of f, times the pattern's mean scale (its own and its object's): so a
+    // bump keeps its depth when the pattern or its object is scaled (POV-Ray's rule).
+    glm::dmat3 linear = object_to_world * glm::dmat3(bump.pattern.to_world);
     dvec3 g = glm::transpose(glm::inverse(linear)) * f.gradient * std::cbrt(std::abs(glm::determinant(linear)));
     dvec3 tilted = n - bump.amount * (g - glm::dot(g, n) * n);
     return glm::normalize(tilted);

@@ -14,10 +14,11 @@ NoiseSample pattern_value(const Pattern& pattern, const dvec3& q);
 // in between.
 dvec3 ramp_color(const std::vector<ColorStop>& ramp, double t);
 
-// The colour of a colour pattern at world point p.
+// The colour of a colour pattern at point p of its object's coordinates.
 dvec3 pattern_color(const Pattern& pattern, const dvec3& p);
 
-// The unit normal n (facing the viewer) tilted by the bump's pattern at world point p.
-dvec3 bumped_normal(const Bump& bump, const dvec3& p, const dvec3& n);
+// The unit world normal n (facing the viewer) tilted by the bump's pattern at point p of its
+// object's coordinates, which `object_to_world` (the linear part of its placement) turns.
+dvec3 bumped_normal(const Bump& bump, const dvec3& p, const dvec3& n, const glm::dmat3& object_to_world = glm::dmat3(1.0));
 
 }  // namespace lancer::cpu

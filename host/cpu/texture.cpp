@@ -3,17 +3,26 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
 
-glm::dvec2 texture_uv(const Hit& hit, const dvec3& p) {
+glm::dvec2 texture_uv(const Hit& hit, const dvec3& world_point) {
+    // A shape kept in its own coordinates (an ellipsoid, a turned box) is mapped there.
+    const std::optional<Placement>& placed = hit.object->placement;
+    const bool local = placed && placed->shape_in_object_space;
+    const dvec3 p = local ? placed->object_point(world_point) : world_point;
+    const dvec3 normal = local ? glm::normalize(glm::transpose(glm::dmat3(placed->to_world)) * hit.normal) : hit.normal;
     struct Mapping {
         const Hit& hit;
         const dvec3& p;
+        const dvec3& normal;
         glm::dvec2 operator()(const Sphere& s) const { return cpu::texture_uv(s, p); }
         glm::dvec2 operator()(const Plane& plane) const { return cpu::texture_uv(plane, p); }
-        glm::dvec2 operator()(const Box& b) const { return cpu::texture_uv(b, p, hit.normal); }
+        glm::dvec2 operator()(const Box& b) const { return cpu::texture_uv(b, p, normal); }
         glm::dvec2 operator()(const Rectangle&) const { return hit.uv; }         // (a, b) along the edges
         glm::dvec2 operator()(const Disc& d) const { return cpu::texture_uv(d, p); }
         glm::dvec2 operator()(const BezierSurface&) const { return hit.uv; }     // each patch's (u, v)
@@ -23,7 +32,7 @@ glm::dvec2 texture_uv(const Hit& hit, const dvec3& p) {
         }
         glm::dvec2 operator()(const ImplicitObject&) const { return hit.uv; }  // x and y across the box
     };
-    return std::visit(Mapping{hit, p}, hit.object->shape);
+    return std::visit(Mapping{hit, p, normal}, hit.object->shape);
 }
 
 namespace {

@@ -48,7 +48,7 @@ Tracer::Tracer(const Scene& scene, Acceleration acceleration, BvhCache* cache)
     std::vector<Aabb> boxes;
     for (const Object& object : scene.objects) {
         std::optional<Aabb> box;
-        if (acceleration != Acceleration::BruteForce) box = shape_bounds(object.shape);
+        if (acceleration != Acceleration::BruteForce) box = object_bounds(object);
         if (box) {
             bounded_.push_back(&object);
             boxes.push_back(*box);
@@ -119,7 +119,7 @@ bool Tracer::closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) c
     hit.object = nullptr;
     hit.t = t_max;
     for_each_candidate(ray, [&] { return hit.t; }, [&](const Object& object) {
-        auto h = std::visit([&](const auto& shape) { return intersect(shape, ray, t_min, hit.t); }, object.shape);
+        auto h = intersect(object, ray, t_min, hit.t);
         if (h) {
             hit.t = h->t;
             hit.normal = h->normal;
@@ -135,7 +135,7 @@ bool Tracer::closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) c
 bool Tracer::occluded(const Ray& ray, double t_min, double t_max) const {
     bool blocked = false;
     for_each_candidate(ray, [&] { return t_max; }, [&](const Object& object) {
-        auto h = std::visit([&](const auto& shape) { return intersect(shape, ray, t_min, t_max); }, object.shape);
+        auto h = intersect(object, ray, t_min, t_max);
         blocked = h.has_value();
         return !blocked;
     });

@@ -4,6 +4,8 @@
 
 #include <glm/common.hpp>
 
+#include "scene/placement.hpp"
+
 namespace lancer {
 
 dvec3 Orbit::position_at(double time) const {
@@ -69,7 +71,7 @@ Scene scene_at(const Scene& scene, double time) {
         if (k.color) light.color = glm::max(sample(*k.color, time, a.cyclic), dvec3(0.0));
     }
     for (Light& light : s.lights) aim_spot(light);
-    for (const ObjectKeys& k : a.object_keys) translate(s.objects[k.object].shape, sample(k.translate, time, a.cyclic));
+    for (const ObjectKeys& k : a.object_keys) translate(s.objects[k.object], sample(k.translate, time, a.cyclic));
     return s;
 }
 

@@ -19,8 +19,10 @@
 #include "scene/parse_material_maps.hpp"
 #include "scene/parse_optics.hpp"
 #include "scene/parse_shapes.hpp"
+#include "scene/placement.hpp"
 #include "scene/string_position.hpp"
 #include "scene/toml_reader.hpp"
+#include "scene/transform.hpp"
 #include "surface/expr/program.hpp"
 
 namespace lancer {
@@ -123,6 +125,7 @@ Object read_object(TableReader& t, const std::map<std::string, std::uint32_t, st
     Object o;
     o.where = t.location();
     o.shape = reader->second(t);
+    place(o, read_transform(t));
     o.material = default_material;
     o.name = t.string("name", "");
     if (t.has("material")) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/error.hpp"
@@ -260,8 +261,25 @@ LANCER_SHAPES(LANCER_SHAPE_ALTERNATIVE)
 static_assert(std::variant_size_v<Shape> == SHAPE_COUNT);
 inline std::uint32_t shape_type(const Shape& shape) { return static_cast<std::uint32_t>(shape.index()); }
 
+// Where an object's `transform` put it (docs/scene-format.md, "Transforms"). Patterns and
+// checkers are evaluated at the object's own coordinates, so they move with it (POV-Ray's rule).
+// A shape whose family the transform keeps (a sphere moved, turned and scaled alike on every
+// axis; a rectangle under any affine map; ...) is stored with the transform applied; the others
+// (an ellipsoid, a turned box) keep their own coordinates, and the renderers carry rays into them.
+struct Placement {
+    glm::dmat4 to_world{1.0};   // object -> world
+    glm::dmat4 to_object{1.0};  // its inverse
+    bool shape_in_object_space = false;
+
+    dvec3 object_point(const dvec3& p) const { return dvec3(to_object * glm::dvec4(p, 1.0)); }
+    dvec3 object_direction(const dvec3& d) const { return glm::dmat3(to_object) * d; }
+    // A normal of the object's coordinates, in the world (unit).
+    dvec3 world_normal(const dvec3& n) const;
+};
+
 struct Object {
     Shape shape;
+    std::optional<Placement> placement;  // none: the identity
     std::uint32_t material = 0;  // index into Scene::materials
     SourceLocation where;        // the [[object]] table, for messages
     std::string name;            // optional, for [animation] to refer to it

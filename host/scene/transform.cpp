@@ -15,6 +15,19 @@ namespace {
 glm::dmat4 read_step(const toml::table& table, const std::string& file) {
     TableReader t(table, file, "transform");
     glm::dmat4 m(1.0);
+    if (const toml::node* node = t.node("matrix")) {
+        // POV-Ray's matrix <a, b, c, d, e, f, g, h, i, tx, ty, tz>: a point (x, y, z) becomes
+        // (x a + y d + z g + tx, x b + y e + z h + ty, x c + y f + z i + tz).
+        const toml::array* entries = node->as_array();
+        if (!entries || entries->size() != 12)
+            t.fail("matrix", "matrix must be a list of 12 numbers, as POV-Ray's matrix <a, b, c, d, e, f, g, h, i, tx, ty, tz>");
+        for (const char* other : {"scale", "rotate", "translate"})
+            if (t.has(other)) t.fail("matrix", std::string("matrix cannot share its table with ") + other + ": give them as separate entries of a transform list");
+        for (int k = 0; k < 12; ++k) m[k / 3][k % 3] = node_number(*entries->get(std::size_t(k)), file, "matrix");
+        if (!(std::abs(glm::determinant(glm::dmat3(m))) > 0.0)) t.fail("matrix", "matrix is singular: it flattens the object");
+        t.finish();
+        return m;
+    }
     if (const toml::node* node = t.node("scale")) {
         dvec3 s = node->is_array() ? node_vec3(*node, file, "scale") : dvec3(node_number(*node, file, "scale"));
         if (s.x == 0.0 || s.y == 0.0 || s.z == 0.0) t.fail("scale", "scale must not be zero on any axis");
@@ -53,7 +66,7 @@ glm::dmat4 read_steps(TableReader& object) {
     if (!node) return glm::dmat4(1.0);
     if (const toml::table* table = node->as_table()) return read_step(*table, object.file());
     const toml::array* steps = node->as_array();
-    if (!steps) object.fail("transform", "transform must be a table { scale, rotate, translate } or a list of them");
+    if (!steps) object.fail("transform", "transform must be a table { scale, rotate, translate } or { matrix }, or a list of them");
     glm::dmat4 m(1.0);
     for (const toml::node& step : *steps) {
         const toml::table* table = step.as_table();

@@ -157,7 +157,7 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                 }
             },
             o.shape);
-        if (auto box = shape_bounds(o.shape)) boxes.push_back(*box);
+        if (auto box = object_bounds(o)) boxes.push_back(*box);
     }
     Bvh bvh = build_bvh(boxes);
     require(bvh.order.size() == boxes.size(), when, ": the BVH lost primitives");

@@ -43,6 +43,7 @@
 #include "gpu/packing/scene_packing.hpp"
 #include "gpu/shaders/surface_codegen.hpp"
 #include "scene/animation.hpp"
+#include "scene/placement.hpp"
 #include "support/gpu_kernel.hpp"
 #include "support/rational_patches.hpp"
 #include "support/reintersect_judge.hpp"
@@ -134,7 +135,7 @@ Scene only_object(Scene scene, std::size_t index) {
 // at the eye instead of the world origin.
 Scene moved_far(Scene scene) {
     const dvec3 offset(31000.5, -2100.25, 17000.75);
-    for (Object& o : scene.objects) translate(o.shape, offset);
+    for (Object& o : scene.objects) translate(o, offset);
     scene.camera.eye += offset;
     scene.camera.look_at += offset;
     return scene;
@@ -176,6 +177,12 @@ std::vector<surface::BezierPatch> moved(std::vector<surface::BezierPatch> patche
 // A tilted annulus (its hole's edge is a silhouette too).
 const char* const kDisc = "type = \"disc\"\ncenter = [0.2, 0.9, 0.3]\nnormal = [0.3, 1, -0.6]\nradius = 1.6\nhole_radius = 0.5\n";
 
+// Shapes kept in their own coordinates, through a transform (shaders/placement.glsl).
+const char* const kTurnedBox = "type = \"box\"\nmin = [-1, -0.7, -0.8]\nmax = [1.2, 0.8, 0.9]\n"
+                               "transform = { rotate = [30, 40, 15], translate = [0.1, 1.0, 0.2] }\n";
+const char* const kEllipsoid = "type = \"sphere\"\ncenter = [0.1, 0, 0]\nradius = 1\n"
+                               "transform = { scale = [1.6, 0.5, 1.1], rotate = [10, 30, 20], translate = [0.2, 1.0, 0.3] }\n";
+
 struct Case {
     std::string name;
     Scene (*make)();
@@ -194,6 +201,11 @@ const Case kCases[] = {
     {"disc_far_from_origin", [] { return moved_far(analytic(kDisc)); }},
     {"large_disc_off_centre", [] { return analytic("type = \"disc\"\ncenter = [120, -0.3, 150]\nnormal = [0.02, 1, -0.01]\nradius = 300\nhole_radius = 2\n"); }},
     {"box", [] { return analytic("type = \"box\"\nmin = [-1, 0.1, -0.7]\nmax = [1.2, 1.6, 0.9]\n"); }},
+    {"box_turned", [] { return analytic(kTurnedBox); }},
+    {"box_turned_far_from_origin", [] { return moved_far(analytic(kTurnedBox)); }},
+    {"ellipsoid", [] { return analytic(kEllipsoid); }},
+    {"ellipsoid_far_from_origin", [] { return moved_far(analytic(kEllipsoid)); }},
+    {"disc_stretched", [] { return analytic(std::string(kDisc) + "transform = { scale = [2, 1, 0.5] }\n"); }},
     {"box_far_from_origin", [] { return moved_far(analytic("type = \"box\"\nmin = [-1, 0.1, -0.7]\nmax = [1.2, 1.6, 0.9]\n")); }},
     {"bezier_teapot", [] { return only_object(test::shipped_scene("teapot", 64, 36), 1); }},
     {"bezier_teapot_far_from_origin", [] { return moved_far(only_object(test::shipped_scene("teapot", 64, 36), 1)); }},
@@ -298,7 +310,7 @@ TEST_P(Reintersect, HitsLieOnTheSurfaceAndRestartedRaysLeaveIt) {
     const gpu::PackedScene packed = gpu::pack_scene(world);
     const gpu::FrameParams frame = gpu::pack_frame(world, packed);
     const Scene local = packed.anchor == dvec3(0.0) ? world : gpu::rebased(world, packed.anchor);
-    test::ReintersectJudge judge(local.objects.at(0).shape);
+    test::ReintersectJudge judge(local.objects.at(0));
 
     std::mt19937 rng(1234);
     std::vector<TestRay> rays = make_rays(judge, rng);

@@ -55,7 +55,7 @@ struct DeviceHits {
 
 class ReintersectJudge {
 public:
-    explicit ReintersectJudge(const Shape& shape);
+    explicit ReintersectJudge(const Object& object);
 
     const Aabb& region() const { return region_; }  // the object's box (around a plane: a piece of it)
     double size() const { return size_; }            // the region's largest extent
@@ -76,6 +76,7 @@ private:
     enum Check { Bound, Nearest, Spurious, Rehit, Missed, Offset, Clearance, kChecks };
     struct Tally {
         int rays = 0, hits = 0, cut_short = 0, excused = 0;
+        int started_on_surface = 0;  // restarted rays not judged: the ray began within its hit's bound of the surface
         std::array<int, kChecks> failed{};
     };
 
@@ -86,7 +87,7 @@ private:
     bool near_silhouette(const dvec3& o, const dvec3& d, double t_min, double t_scale, double error) const;
     void fail(Check check, std::size_t kind, const std::string& example);
 
-    const Shape& shape_;
+    const Object& object_;
     Aabb region_;
     double size_ = 1.0;
     double magnitude_ = 1.0;  // the largest coordinate of the region

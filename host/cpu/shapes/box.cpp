@@ -8,24 +8,13 @@
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
-namespace {
 
-// The face whose plane the point is nearest, relative to the box's size.
-dvec3 face_normal(const Box& b, const dvec3& p) {
-    dvec3 center = 0.5 * (b.min + b.max);
-    dvec3 half = 0.5 * (b.max - b.min);
-    dvec3 d = (p - center) / half;
-    dvec3 a = glm::abs(d);
-    if (a.x >= a.y && a.x >= a.z) return {d.x < 0 ? -1.0 : 1.0, 0.0, 0.0};
-    if (a.y >= a.z) return {0.0, d.y < 0 ? -1.0 : 1.0, 0.0};
-    return {0.0, 0.0, d.z < 0 ? -1.0 : 1.0};
-}
-
-}  // namespace
-
+// The normal is the face of the slab that gave t, and (u, v) = (its axis, the normal's sign), as
+// the shader's: at an edge, the face the ray crossed there.
 std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, double t_max) {
     double t_enter = -std::numeric_limits<double>::infinity();
     double t_exit = std::numeric_limits<double>::infinity();
+    int enter_axis = 0, exit_axis = 0;
     for (int axis = 0; axis < 3; ++axis) {
         if (ray.dir[axis] == 0.0) {
             // Parallel to this slab: inside it for every t, or never.
@@ -35,19 +24,28 @@ std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, 
         double t0 = (b.min[axis] - ray.origin[axis]) / ray.dir[axis];
         double t1 = (b.max[axis] - ray.origin[axis]) / ray.dir[axis];
         if (t0 > t1) std::swap(t0, t1);
-        t_enter = std::max(t_enter, t0);
-        t_exit = std::min(t_exit, t1);
+        if (t0 > t_enter) {
+            t_enter = t0;
+            enter_axis = axis;
+        }
+        if (t1 < t_exit) {
+            t_exit = t1;
+            exit_axis = axis;
+        }
     }
     if (t_enter > t_exit) return std::nullopt;
-    double t;
+    double t, side;
+    int axis;
     if (t_enter > t_min && t_enter < t_max) {
-        t = t_enter;
+        t = t_enter, axis = enter_axis, side = -1.0;  // entering: the face turned toward the ray
     } else if (t_exit > t_min && t_exit < t_max) {
-        t = t_exit;
+        t = t_exit, axis = exit_axis, side = 1.0;
     } else {
         return std::nullopt;
     }
-    return SurfaceHit{t, face_normal(b, ray.origin + t * ray.dir)};
+    dvec3 n(0.0);
+    n[axis] = ray.dir[axis] < 0.0 ? -side : side;
+    return SurfaceHit{t, n, glm::dvec2(axis, n[axis])};
 }
 
 // Each face shows the whole image, upright as seen from outside: side faces with v up (+y), the

@@ -48,6 +48,10 @@ struct ImplicitRoot {
 std::vector<ImplicitRoot> implicit_roots(const surface::ImplicitSurface& s, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const ImplicitObject& o, const Ray& ray, double t_min, double t_max);
 
+// An object's nearest hit: its shape's, carried through its placement where the shape keeps its
+// own coordinates (placed.cpp); the normal is the world's.
+std::optional<SurfaceHit> intersect(const Object& o, const Ray& ray, double t_min, double t_max);
+
 // Texture coordinates (u, v) at a surface point p, for shapes whose intersection does not already
 // give them (docs/scene-format.md, "Texture mapping"). Rectangles, Bezier and parametric
 // surfaces use the (u, v) of their hits.

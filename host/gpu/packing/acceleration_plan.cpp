@@ -31,11 +31,13 @@ bool cheap_ones_stay_outside(std::span<const PrimitiveWithBox> primitives) {
 
 // The first plane that is a flat mirror (its reflections of camera rays are camera rays of the
 // eye's mirror image): packed index and plane, or none.
-std::optional<Mirror> find_mirror(const AccelerationPlan& plan, std::span<const lancer::Material> materials, uint& index) {
+std::optional<Mirror> find_mirror(const AccelerationPlan& plan, std::span<const lancer::Material> materials,
+                                  std::span<const ObjectFrame> frames, uint& index) {
     for (std::size_t i = plan.primitives.size() - plan.unbounded_count; i < plan.primitives.size(); ++i) {
         const Primitive& p = plan.primitives[i];
         const lancer::Material& m = materials[p.material];
         if (p.type != SHAPE_PLANE || !(m.reflection > 0.0) || m.microfacet() || m.bump) continue;
+        if (!frames.empty() && frames[p.object].in_object_space) continue;
         index = static_cast<uint>(i);
         return Mirror{dvec3(p.p0.x, p.p0.y, p.p0.z), glm::normalize(dvec3(p.p1.x, p.p1.y, p.p1.z))};
     }
@@ -124,7 +126,7 @@ AccelerationPlan plan_scene(const PlanInput& input, const PlanOptions& options) 
     for (const lancer::Material& m : input.materials) transparency |= m.transparent();
     f.direction_grids = options.grids != GridUse::Never && f.has_bvh && cheap && !transparency;
     if (!f.direction_grids) return plan;
-    plan.mirror = find_mirror(plan, input.materials, plan.mirror_plane);
+    plan.mirror = find_mirror(plan, input.materials, input.frames, plan.mirror_plane);
     add_light_grids(input.lights, plan.grid_boxes, plan.grids, options.grids == GridUse::Forced);
     f.grids_only = every_ray_takes_a_grid(plan, input);
     plan.view_grids_required = f.grids_only || options.grids == GridUse::Forced;

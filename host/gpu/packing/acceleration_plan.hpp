@@ -68,6 +68,8 @@ struct PlanInput {
     std::span<const lancer::Material> materials;   // the scene's, which primitives index
     std::span<const gpu::Light> lights;            // as packed (the GPU's coordinates)
     bool photons = false;                          // photon mapping traces rays of its own, without grids
+    std::span<const ObjectFrame> frames;           // by object, where objects are placed: a plane in its
+                                                   // object's coordinates is no flat mirror to the plan
 };
 
 AccelerationPlan plan_scene(const PlanInput& input, const PlanOptions& options = {});

@@ -9,6 +9,7 @@
 #include "accel/shape_bounds.hpp"
 #include "scene/animation.hpp"
 #include "scene/camera.hpp"
+#include "scene/placement.hpp"
 
 namespace lancer::gpu {
 namespace {
@@ -24,7 +25,7 @@ glm::dvec3 float_anchor(const CameraSpec& camera) { return working_origin(camera
 
 Scene rebased(const Scene& scene, const glm::dvec3& anchor) {
     Scene local = scene;
-    for (Object& o : local.objects) translate(o.shape, -anchor);
+    for (Object& o : local.objects) translate(o, -anchor);
     for (lancer::Light& l : local.lights) {
         l.position -= anchor;
         if (l.point_at) *l.point_at -= anchor;
@@ -53,7 +54,7 @@ glm::dvec3 checker_phase(const glm::dvec3& anchor, double size) {
 std::vector<std::string> float_resolution_notes(const Scene& scene, const glm::dvec3& anchor) {
     std::vector<std::string> notes;
     for (const Object& o : scene.objects) {
-        const std::optional<Aabb> box = shape_bounds(o.shape);
+        const std::optional<Aabb> box = object_bounds(o);
         if (!box) continue;
         const double extent = glm::length(box->hi - box->lo);
         // Float's step is set by the largest coordinate the GPU holds for the object.

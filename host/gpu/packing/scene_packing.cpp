@@ -4,9 +4,12 @@
 #include <bit>
 #include <optional>
 
+#include "accel/shape_bounds.hpp"
+
 #include "gpu/packing/float_anchor.hpp"
 #include "gpu/packing/float_bounds.hpp"
 #include "gpu/packing/material_packing.hpp"
+#include "gpu/packing/object_frames.hpp"
 #include "gpu/packing/primitive_packing.hpp"
 #include "scene/camera.hpp"
 
@@ -23,9 +26,27 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
 
     std::vector<PrimitiveWithBox> primitives;
     const SpherePacking spheres = sphere_packing(scene);
-    for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        pack_object(scene.objects[i].shape, scene.objects[i].material, static_cast<uint>(i), spheres, packed, primitives);
-    pack_materials(scene, packed.anchor, packed);
+    bool placed = false, object_space = false;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        placed |= o.placement.has_value();
+        if (!o.placement || !o.placement->shape_in_object_space) {
+            pack_object(o.shape, o.material, static_cast<uint>(i), spheres, packed, primitives);
+            continue;
+        }
+        // A shape in its own coordinates is packed there, by its point nearest the anchor there;
+        // its primitives' boxes are the world's.
+        object_space = true;
+        const std::size_t first = primitives.size();
+        pack_object(o.shape, o.material, static_cast<uint>(i), {spheres.by_near_points, o.placement->object_point(spheres.eye)},
+                    packed, primitives);
+        for (std::size_t k = first; k < primitives.size(); ++k)
+            if (primitives[k].second) primitives[k].second = object_bounds(o);
+    }
+    if (placed)
+        for (const Object& o : scene.objects) packed.object_frames.push_back(object_frame(o, packed.anchor));
+    // With frames, checkers and patterns see the object's own coordinates, not the GPU's.
+    pack_materials(placed ? world : scene, placed ? dvec3(0.0) : packed.anchor, packed);
     for (const lancer::Light& l : scene.lights) packed.lights.push_back(pack_light(l));
     if (scene.photons) {
         pack_emitters(scene, packed);
@@ -33,7 +54,8 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     }
 
     AccelerationPlan plan =
-        plan_scene({primitives, scene.materials, packed.lights, scene.photons.has_value()}, {options.acceleration, options.grids, options.cache});
+        plan_scene({primitives, scene.materials, packed.lights, scene.photons.has_value(), packed.object_frames},
+                   {options.acceleration, options.grids, options.cache});
     // The eye as the shader has it (pack_frame), so that camera rays start at the grid's origin.
     const CameraBasis cam = make_camera_basis(scene.camera, scene.render.width, scene.render.height);
     const vec4 eye = v4(cam.eye);
@@ -61,6 +83,8 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     f.grids_only = plan.flags.grids_only;
     f.has_photons = scene.photons.has_value();
     f.spheres_by_near_points = spheres.by_near_points && f.has_shape(SHAPE_SPHERE);
+    f.placed_objects = placed;
+    f.object_space_shapes = object_space;
     for (const PatchLeaf& leaf : packed.patches)
         for (const vec4& point : leaf.points) f.has_rational_patches |= point.w != 1.0f;
     f.has_textures = !packed.textures.empty();
