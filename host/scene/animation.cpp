@@ -71,7 +71,10 @@ Scene scene_at(const Scene& scene, double time) {
         if (k.color) light.color = glm::max(sample(*k.color, time, a.cyclic), dvec3(0.0));
     }
     for (Light& light : s.lights) aim_spot(light);
-    for (const ObjectKeys& k : a.object_keys) translate(s.objects[k.object], sample(k.translate, time, a.cyclic));
+    for (const ObjectKeys& k : a.object_keys) {
+        const dvec3 offset = sample(k.translate, time, a.cyclic);
+        for (std::size_t i = k.object; i < k.object + k.count; ++i) translate(s.objects[i], offset);
+    }
     return s;
 }
 

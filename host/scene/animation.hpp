@@ -58,8 +58,9 @@ struct LightKeys {
 };
 
 struct ObjectKeys {
-    std::size_t object;  // index into Scene::objects
-    Track translate;     // added to the object's geometry as the file gives it
+    std::size_t object;     // index into Scene::objects
+    std::size_t count = 1;  // objects [object, object + count): a group's members
+    Track translate;        // added to the objects' geometry as the file gives it
 };
 
 struct Animation {

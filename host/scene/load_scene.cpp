@@ -114,30 +114,38 @@ Material read_material(TableReader& t, const std::string& name, TextureLibrary& 
     return m;
 }
 
-Object read_object(TableReader& t, const std::map<std::string, std::uint32_t, std::less<>>& materials,
-                   std::uint32_t default_material) {
-    std::string type = t.required_string("type");
+using MaterialIndex = std::map<std::string, std::uint32_t, std::less<>>;
+
+// The material an object or group names, or `inherited` (its group's, or the scene's default).
+std::uint32_t read_material_reference(TableReader& t, const MaterialIndex& materials, std::uint32_t inherited) {
+    if (!t.has("material")) {
+        t.accept("material");
+        return inherited;
+    }
+    std::string name = t.string("material", "");
+    auto found = materials.find(name);
+    if (found == materials.end()) t.fail("material", "unknown material '" + name + "'" + did_you_mean(name, names_of(materials)));
+    return found->second;
+}
+
+// One shape of an [[object]] entry (or of a group's `objects`), placed by `parent` (its groups'
+// transforms) and then its own.
+Object read_object(TableReader& t, const std::string& type, const MaterialIndex& materials, std::uint32_t inherited_material,
+                   const glm::dmat4& parent) {
     const auto& readers = shape_readers();
     auto reader = readers.find(type);
     if (reader == readers.end()) {
-        t.fail("type", "unknown object type '" + type + "'" + did_you_mean(type, names_of(readers)));
+        auto types = names_of(readers);
+        types.insert("group");
+        t.fail("type", "unknown object type '" + type + "'" + did_you_mean(type, types));
     }
     Object o;
     o.where = t.location();
-    o.shape = reader->second(t);
-    place(o, read_transform(t));
-    o.material = default_material;
+    const glm::dmat4 to_world = read_transform(t, parent);
+    o.shape = reader->second(t, to_world);
+    place(o, to_world);
+    o.material = read_material_reference(t, materials, inherited_material);
     o.name = t.string("name", "");
-    if (t.has("material")) {
-        std::string name = t.string("material", "");
-        auto found = materials.find(name);
-        if (found == materials.end()) {
-            t.fail("material", "unknown material '" + name + "'" + did_you_mean(name, names_of(materials)));
-        }
-        o.material = found->second;
-    } else {
-        t.accept("material");
-    }
     t.finish();
     return o;
 }
@@ -175,6 +183,59 @@ struct SurfaceTotals {
         if (b && (patches += static_cast<long long>(b->patches.size())) > limits::kMaxPatches)
             t.fail("type", fmt::format("too many Bezier patches: {} so far (the limit is {} per scene)", patches,
                                        limits::kMaxPatches));
+    }
+};
+
+// "object 3 ('sphere')": an object or group in messages.
+std::string describe_object(std::string what, const toml::table& t) {
+    if (auto type = t["type"].value<std::string>()) what += " ('" + *type + "')";
+    return what;
+}
+
+// Groups nest at most this deep (each level is a recursion of the reader).
+constexpr int kMaxGroupDepth = 64;
+
+// Reads [[object]] entries into the scene's objects, groups flattened: a group (POV-Ray's union)
+// places its `objects` by its transform, gives them its material unless they name their own, and
+// its name (an animation moves the whole group).
+struct ObjectReading {
+    const MaterialIndex& materials;
+    SurfaceTotals totals;
+    Scene& scene;
+
+    void entry(TableReader& t, std::uint32_t material, const glm::dmat4& parent, int depth, const std::string& group = "") {
+        const std::string type = t.required_string("type");
+        if (type != "group") {
+            totals.before(t, type);
+            if (depth > 0 && t.has("name"))
+                t.fail("name", "a group's member cannot have its own name: an animation moves the whole group, by its name");
+            scene.objects.push_back(read_object(t, type, materials, material, parent));
+            Object& o = scene.objects.back();
+            if (depth > 0) o.name = group;
+            totals.after(t, o);
+            if (scene.objects.size() > static_cast<std::size_t>(limits::kMaxObjects))
+                t.fail("type", fmt::format("too many objects with the groups' members (the limit is {})", limits::kMaxObjects));
+            if (auto* b = std::get_if<BezierSurface>(&o.shape); b && !b->source_file.empty())
+                scene.dependencies.push_back(b->source_file);
+            return;
+        }
+        if (depth == kMaxGroupDepth) t.fail("type", fmt::format("groups nest at most {} deep", kMaxGroupDepth));
+        const glm::dmat4 to_world = read_transform(t, parent);
+        const std::uint32_t group_material = read_material_reference(t, materials, material);
+        if (depth > 0 && t.has("name"))
+            t.fail("name", "a group's member cannot have its own name: an animation moves the whole group, by its name");
+        const std::string name = depth > 0 ? group : t.string("name", "");
+        const toml::array* members = t.array("objects");
+        if (!members || members->empty())
+            t.fail(members ? "objects" : "type", "a group needs `objects`: a non-empty list of objects (tables)");
+        std::size_t k = 0;
+        for (const toml::node& node : *members) {
+            const toml::table* member = node.as_table();
+            if (!member) throw SceneError(location_of(node, t.file()), "a group's objects must be tables");
+            TableReader m(*member, t.file(), describe_object(fmt::format("{} member {}", t.what(), ++k), *member));
+            entry(m, group_material, to_world, depth + 1, name);
+        }
+        t.finish();
     }
 };
 
@@ -284,22 +345,19 @@ Scene parse_scene(std::string_view text, const std::string& path) {
         scene.materials.push_back(Material{"default"});
     }
 
+    // Entry i of [[object]] made scene objects [entry_starts[i], entry_starts[i + 1]) (a group, many).
+    std::vector<std::size_t> entry_starts{0};
     if (const toml::array* objects = top.array("object")) {
         if (objects->size() > static_cast<std::size_t>(limits::kMaxObjects))
             top.fail("object", "too many objects (the limit is " + std::to_string(limits::kMaxObjects) + ")");
-        SurfaceTotals totals;
+        ObjectReading reading{material_index, {}, scene};
         for_each_table(*objects, path, "[[object]]", [&](const toml::table& t, std::size_t index) {
-            std::string what = "object " + std::to_string(index + 1);
-            if (auto type = t["type"].value<std::string>()) what += " ('" + *type + "')";
-            TableReader o(t, path, what);
-            totals.before(o, t["type"].value<std::string>());
-            scene.objects.push_back(read_object(o, material_index, default_material));
-            totals.after(o, scene.objects.back());
-            if (auto* b = std::get_if<BezierSurface>(&scene.objects.back().shape); b && !b->source_file.empty())
-                scene.dependencies.push_back(b->source_file);
+            TableReader o(t, path, describe_object("object " + std::to_string(index + 1), t));
+            reading.entry(o, default_material, glm::dmat4(1.0), 0);
+            entry_starts.push_back(scene.objects.size());
         });
     }
-    read_animation(top, root, scene);
+    read_animation(top, root, scene, entry_starts);
     top.finish();
     if (scene.photons) check_photon_lights(scene);
     return scene;

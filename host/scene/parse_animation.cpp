@@ -201,7 +201,7 @@ void for_each_entry(TableReader& parent, std::string_view key, const std::string
 
 }  // namespace
 
-void read_animation(TableReader& top, const toml::table& root, Scene& scene) {
+void read_animation(TableReader& top, const toml::table& root, Scene& scene, std::span<const std::size_t> entry_starts) {
     const std::string& file = top.file();
     NameIndex light_names = index_names(root, "light", "light", file);
     NameIndex object_names = index_names(root, "object", "object", file);
@@ -266,11 +266,12 @@ void read_animation(TableReader& top, const toml::table& root, Scene& scene) {
         a.light_keys.push_back(std::move(keys));
     });
     for_each_entry(t, "object", "[[animation.object]]", [&](TableReader& r, const toml::table& entry) {
-        std::size_t object = resolve_reference(r, entry, "object", "object", scene.objects.size(), object_names, false);
+        std::size_t index = resolve_reference(r, entry, "object", "object", entry_starts.size() - 1, object_names, false);
+        const std::size_t first = entry_starts[index], count = entry_starts[index + 1] - first;  // a group: its members
         auto tracks = read_keys(r, {"translate"}, "objects", a.cyclic);
-        claims.claim(r, "object", "object '" + scene.objects[object].name + "'", "translate");
+        claims.claim(r, "object", "object '" + scene.objects[first].name + "'", "translate");
         r.finish();
-        a.object_keys.push_back({object, std::move(tracks.at("translate"))});
+        a.object_keys.push_back({first, count, std::move(tracks.at("translate"))});
     });
     t.finish();
     scene.animation = std::make_shared<const Animation>(std::move(a));

@@ -14,7 +14,6 @@
 
 #include "scene/limits.hpp"
 #include "scene/parse_surfaces.hpp"
-#include "scene/transform.hpp"
 #include "surface/patch_file.hpp"
 
 namespace lancer {
@@ -75,7 +74,7 @@ std::vector<BezierPatch> read_inline(TableReader& t, const toml::node& points, c
 
 }  // namespace
 
-Shape read_bezier(TableReader& t) {
+Shape read_bezier(TableReader& t, const glm::dmat4& to_world) {
     const toml::node* file = t.node("file");
     const toml::node* control_points = t.node("control_points");
     const toml::node* patch_list = t.node("patches");
@@ -120,7 +119,7 @@ Shape read_bezier(TableReader& t) {
     surface.subdivision = t.integer("subdivision", surface.subdivision);
     if (surface.subdivision < 0 || surface.subdivision > 4)
         t.fail("subdivision", "subdivision must be between 0 and 4 (each patch becomes 4^n leaves on the GPU)");
-    glm::dmat4 m = read_transform(t);
+    const glm::dmat4& m = to_world;
     dvec3 lo(kInfinity), hi(-kInfinity);
     for (auto& p : surface.patches) {
         p = surface::transformed(p, m);

@@ -16,7 +16,6 @@
 #include "scene/expression_keys.hpp"
 #include "scene/limits.hpp"
 #include "scene/parse_surfaces.hpp"
-#include "scene/transform.hpp"
 #include "surface/expr/domain_check.hpp"
 #include "surface/expr/evaluate.hpp"
 #include "surface/float_check.hpp"
@@ -61,7 +60,7 @@ void check_defined(const toml::node& node, const std::string& file, const surfac
 
 }  // namespace
 
-Shape read_implicit(TableReader& t) {
+Shape read_implicit(TableReader& t, const glm::dmat4& to_world) {
     surface::Constants constants = read_params(t);
     ImplicitObject object;
     surface::ImplicitSurface& s = object.surface;
@@ -97,7 +96,7 @@ Shape read_implicit(TableReader& t) {
     }
     if (std::optional<std::string> degenerate = surface::degenerate_zero_set(s))
         t.fail("function", t.what() + ": " + *degenerate);
-    s.place(read_transform(t));
+    s.place(to_world);
     if (surface::proved_without_zero(s)) {
         dvec3 centre = 0.5 * (s.box_lo + s.box_hi);
         const double xyz[] = {centre.x, centre.y, centre.z};

@@ -13,7 +13,6 @@
 #include "scene/limits.hpp"
 #include "scene/parse_surfaces.hpp"
 #include "scene/string_position.hpp"
-#include "scene/transform.hpp"
 #include "surface/expr/domain_check.hpp"
 #include "surface/expr/evaluate.hpp"
 #include "surface/expr/parser.hpp"
@@ -53,7 +52,7 @@ std::pair<double, double> read_range(TableReader& t, std::string_view key, const
 
 }  // namespace
 
-Shape read_parametric(TableReader& t) {
+Shape read_parametric(TableReader& t, const glm::dmat4& to_world) {
     surface::Constants constants = read_params(t);
     ParametricObject object;
     surface::ParametricSurface& s = object.surface;
@@ -94,7 +93,7 @@ Shape read_parametric(TableReader& t) {
             throw SceneError(column_in_string(*t.node(axes[i]), t.file(), e.column), e.what());
         }
     }
-    s.to_world = read_transform(t);
+    s.to_world = to_world;
     std::shared_ptr<const std::vector<surface::SurfaceCell>> cells;
     try {
         // The loader proves the surface can be cut into the GPU's cells (and bounds it by them);

@@ -21,7 +21,7 @@ void read_edges(TableReader& t, const std::string& what, dvec3& edge_u, dvec3& e
 
 namespace {
 
-Shape read_sphere(TableReader& t) {
+Shape read_sphere(TableReader& t, const glm::dmat4&) {
     Sphere s;
     s.center = t.required_vec3("center");
     s.radius = t.required_number("radius");
@@ -30,7 +30,7 @@ Shape read_sphere(TableReader& t) {
     return s;
 }
 
-Shape read_plane(TableReader& t) {
+Shape read_plane(TableReader& t, const glm::dmat4&) {
     Plane p;
     p.point = t.vec3("point", dvec3(0.0));
     dvec3 n = t.required_vec3("normal");
@@ -40,14 +40,14 @@ Shape read_plane(TableReader& t) {
     return p;
 }
 
-Shape read_rectangle(TableReader& t) {
+Shape read_rectangle(TableReader& t, const glm::dmat4&) {
     Rectangle r;
     r.corner = t.required_vec3("corner");
     read_edges(t, "rectangle", r.edge_u, r.edge_v);
     return r;
 }
 
-Shape read_box(TableReader& t) {
+Shape read_box(TableReader& t, const glm::dmat4&) {
     Box b;
     b.min = t.required_vec3("min");
     b.max = t.required_vec3("max");
@@ -57,7 +57,7 @@ Shape read_box(TableReader& t) {
 }
 
 // POV-Ray's disc { center, normal, radius [, hole_radius] }, with its names.
-Shape read_disc(TableReader& t) {
+Shape read_disc(TableReader& t, const glm::dmat4&) {
     Disc d;
     d.center = t.required_vec3("center");
     dvec3 n = t.required_vec3("normal");

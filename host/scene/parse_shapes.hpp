@@ -5,12 +5,16 @@
 #include <map>
 #include <string>
 
+#include <glm/mat4x4.hpp>
+
 #include "scene/scene.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace lancer {
 
-using ShapeReader = std::function<Shape(TableReader&)>;
+// A reader gets the object's table and its map to the world (its `transform` after its groups'):
+// the surfaces apply it to their own definitions; the placement of the others follows (place()).
+using ShapeReader = std::function<Shape(TableReader&, const glm::dmat4& to_world)>;
 
 // Reads edge_u and edge_v of a parallelogram (a rectangle, an area light): non-zero and not
 // parallel; `what` names it in messages.

@@ -2,14 +2,16 @@
 // Readers of the surface object types: "bezier" (patch sets, inline or from a patch file),
 // "parametric" (equations in u and v) and "implicit" (an equation f(x, y, z) = 0). Registered in
 // shape_readers() (parse_shapes.cpp).
+#include <glm/mat4x4.hpp>
+
 #include "scene/scene.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace lancer {
 
-Shape read_bezier(TableReader& t);
-Shape read_parametric(TableReader& t);
-Shape read_implicit(TableReader& t);
+Shape read_bezier(TableReader& t, const glm::dmat4& to_world);
+Shape read_parametric(TableReader& t, const glm::dmat4& to_world);
+Shape read_implicit(TableReader& t, const glm::dmat4& to_world);
 
 // Fails at `key` unless every coordinate of [lo, hi] is within kMaxMagnitude: geometry built by
 // transforms and equations must stay as representable as the numbers it came from.

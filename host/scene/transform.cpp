@@ -86,8 +86,8 @@ glm::dmat4 rotation_degrees(const dvec3& angles) {
     return m;
 }
 
-glm::dmat4 read_transform(TableReader& object) {
-    const glm::dmat4 m = read_steps(object);
+glm::dmat4 read_transform(TableReader& object, const glm::dmat4& parent) {
+    const glm::dmat4 m = parent * read_steps(object);
     check_scales(object, m);
     return m;
 }

@@ -12,8 +12,9 @@
 
 namespace lancer {
 
-// Reads the optional `transform` key of an object table; identity when absent.
-glm::dmat4 read_transform(TableReader& object);
+// Reads the optional `transform` key of an object table (identity when absent), after the
+// transform of the groups the object is in (`parent`): the object's map to the world.
+glm::dmat4 read_transform(TableReader& object, const glm::dmat4& parent = glm::dmat4(1.0));
 
 glm::dmat4 rotation_degrees(const dvec3& angles);  // about x, then y, then z
 

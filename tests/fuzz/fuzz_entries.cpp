@@ -157,7 +157,17 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                 }
             },
             o.shape);
-        if (auto box = object_bounds(o)) boxes.push_back(*box);
+        if (o.placement) {  // both maps finite: the renderers use both
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r)
+                    require(std::isfinite(o.placement->to_world[c][r]) && std::isfinite(o.placement->to_object[c][r]), when,
+                            ": placement");
+        }
+        if (auto box = object_bounds(o)) {
+            require_finite(box->lo, when, ": object box");
+            require_finite(box->hi, when, ": object box");
+            boxes.push_back(*box);
+        }
     }
     Bvh bvh = build_bvh(boxes);
     require(bvh.order.size() == boxes.size(), when, ": the BVH lost primitives");

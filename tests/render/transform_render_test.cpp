@@ -3,6 +3,7 @@
 // the other way (turned boxes, stretched discs, checkers and patterns riding on their objects);
 // a checker that travels with its object through an animation.
 #include <cmath>
+#include <regex>
 #include <string>
 
 #include <fmt/format.h>
@@ -55,7 +56,8 @@ std::string turned_objects(const std::string& turn) {
                   "{ matrix = [1, 0, 0, 0.4, 1, 0, 0, 0, 1, 0, 0, 0] }, { translate = [0.2, -0.99, -1.4] }");
 }
 
-std::string turned_scene(double degrees) {
+// grouped: the objects in one group that takes the turn, instead of each taking it.
+std::string turned_scene(double degrees, bool grouped = false) {
     const double a = degrees * M_PI / 180.0;
     // POV-Ray's rotate about y: (x, z) -> (x cos a + z sin a, -x sin a + z cos a).
     auto turned = [&](double x, double y, double z) {
@@ -85,7 +87,9 @@ std::string turned_scene(double degrees) {
         bump = {{ type = "noise", scale = 0.15, amount = 0.3 }}
         )",
                        turned(0.5, 2.2, -4.5), turned(0, -0.2, 0), turned(-4, 6, -5)) +
-           turned_objects(turn);
+           (grouped ? fmt::format("[[object]]\ntype = \"group\"\ntransform = {}\n", turn) +
+                          std::regex_replace(turned_objects(""), std::regex("\\[\\[object\\]\\]"), "[[object.objects]]")
+                    : turned_objects(turn));
 }
 
 // Turning every object and light by 40 degrees about y and the camera with them shows the same
@@ -102,6 +106,17 @@ TEST(Transforms, TurningTheWholeSceneIsTurningTheCamera) {
     // And the backends agree on it.
     expect_close("turned-scene-gpu-vs-cpu", to_srgb8(test::render_on(test::Backend::Gpu, turned)),
                  to_srgb8(test::render_on(test::Backend::Cpu, turned)));
+}
+
+// POV-Ray users tilt a whole union at once: the group's turn is each member's, after its own.
+TEST(Transforms, AGroupTurnsItsMembersAsOne) {
+    const Scene grouped = test::scene_from_text(turned_scene(40.0, true));
+    const Scene each = test::scene_from_text(turned_scene(40.0));
+    ASSERT_EQ(grouped.objects.size(), each.objects.size());
+    for (test::Backend backend : {test::Backend::Cpu, test::Backend::Gpu}) {
+        const ImageDiff d = compare_images(to_srgb8(test::render_on(backend, grouped)), to_srgb8(test::render_on(backend, each)), 0);
+        EXPECT_EQ(d.fraction_over, 0.0) << test::backend_name(backend);  // the same maps, the same picture
+    }
 }
 
 // Before transforms were attached to their objects, a checker stayed in the world while its
