@@ -20,7 +20,8 @@ float cone_base_z(Primitive c) { return -uintBitsToFloat(c.data & ~1u); }
 bool cone_is_open(Primitive c) { return (c.data & 1u) != 0u; }
 float cone_slope(Primitive c) { return (c.p2.w - c.p0.w) / (c.p1.w - cone_base_z(c)); }
 
-// Keeps a root t in (t_min, best) where z = fz + t dz lies in [z0, z1]: the side's part 0.
+// Keeps a root t in (t_min, best) where z = fz + t dz lies in [z0, z1]: the side's part 0 (t, t_min
+// and best measured from the ray's point at tc: cone_intersect).
 void cone_keep_side(float t, float fz, float dz, float z0, float z1, float t_min, inout float best, inout float part) {
     float z = fz + t * dz;
     if (t > t_min && t < best && z >= z0 && z <= z1) {
@@ -33,11 +34,15 @@ bool cone_intersect(Primitive c, Ray ray, float t_min, float t_max, out float t_
     vec3 a = c.p1.xyz;
     float z0 = cone_base_z(c), z1 = c.p1.w, r0 = c.p0.w, r1 = c.p2.w;
     float k = (r1 - r0) / (z1 - z0);
+    // From the ray's point nearest the packed point (at t = tc), so that every term is of the
+    // shape's size for a ray that can hit it, however far its origin: roots t' from there.
     vec3 f = ray.origin - c.p0.xyz;
+    float tc = -dot(f, ray.dir);
+    f += tc * ray.dir;
     float fz = dot(f, a), dz = dot(ray.dir, a);
     vec3 fp = f - fz * a, dp = ray.dir - dz * a;
     float R = r0 + k * (fz - z0), K = k * dz;
-    float best = t_max, part = -1.0;
+    float best = t_max - tc, part = -1.0, t_low = t_min - tc;
     vec3 e = R * dp - K * fp;
     float cr = dot(cross(fp, dp), a);
     float disc = dot(e, e) - cr * cr;
@@ -48,8 +53,8 @@ bool cone_intersect(Primitive c, Ray ray, float t_min, float t_max, out float t_
         float C = (lf - aR) * (lf + aR);
         float s = sqrt(disc);
         float q = b < 0.0 ? s - b : -b - s;
-        if (A != 0.0) cone_keep_side(q / A, fz, dz, z0, z1, t_min, best, part);
-        if (q != 0.0) cone_keep_side(C / q, fz, dz, z0, z1, t_min, best, part);
+        if (A != 0.0) cone_keep_side(q / A, fz, dz, z0, z1, t_low, best, part);
+        if (q != 0.0) cone_keep_side(C / q, fz, dz, z0, z1, t_low, best, part);
     }
     // The ends: the planes z = z0 and z = z1, within their radius.
     if (!cone_is_open(c) && dz != 0.0) {
@@ -58,14 +63,15 @@ bool cone_intersect(Primitive c, Ray ray, float t_min, float t_max, out float t_
             if (!(r > 0.0)) continue;
             float t = ((end == 0 ? z0 : z1) - fz) / dz;
             vec3 w = fp + t * dp;
-            if (t > t_min && t < best && dot(w, w) <= r * r) {
+            if (t > t_low && t < best && dot(w, w) <= r * r) {
                 best = t;
                 part = float(end + 1);
             }
         }
     }
     if (part < 0.0) return false;
-    t_hit = best;
+    t_hit = tc + best;
+    if (!(t_hit > t_min && t_hit < t_max)) return false;  // rounding of the sum
     uv = vec2(part, 0.0);  // which part: 0 the side, 1 the base's disc, 2 the cap's
     return true;
 }

@@ -2,7 +2,7 @@
 // (x along u_axis, y along v_axis, z along the axis from the base), the side is
 // x^2 + y^2 = r(z)^2 with r(z) = base_radius + k z, k = (cap_radius - base_radius) / h, for z in
 // [0, h]; each end of non-zero radius is closed by a disc across the axis unless the cone is open.
-// The quadratic in t is solved without cancellation: its discriminant is a difference of two
+// The quadratic along the ray is solved without cancellation: its discriminant is a difference of two
 // squares formed from the ray's parts across the axis, and the roots are q / A and C / q with
 // q = -(b + sign(b) sqrt(disc)). Independent of shaders/shapes/cone.glsl, which works with world
 // vectors instead of frame coordinates.
@@ -31,22 +31,27 @@ Frame frame_of(const Cone& c) {
 
 std::optional<SurfaceHit> intersect(const Cone& c, const Ray& ray, double t_min, double t_max) {
     const Frame fr = frame_of(c);
-    const dvec3 w = ray.origin - c.base;
+    // Measured from the ray's point nearest the base, s along the ray from there: the terms below
+    // are then of the cone's size for any ray that can hit it, however far its origin (from far
+    // off, a pointed cone's other nappe, which the quadratic includes, passes near the origin).
+    const double shift = glm::dot(c.base - ray.origin, ray.dir);
+    const dvec3 w = ray.origin + shift * ray.dir - c.base;
     // The origin and direction in the frame (u_axis, v_axis, axis).
     const double ox = glm::dot(w, c.u_axis), oy = glm::dot(w, c.v_axis), oz = glm::dot(w, fr.axis);
     const double dx = glm::dot(ray.dir, c.u_axis), dy = glm::dot(ray.dir, c.v_axis), dz = glm::dot(ray.dir, fr.axis);
 
-    double best = t_max;
+    double best = t_max - shift;
+    const double s_min = t_min - shift;
     int part = -1;  // 0 the side, 1 the base's disc, 2 the cap's
-    auto consider = [&](double t, int which) {
-        if (t > t_min && t < best) {
-            best = t;
+    auto consider = [&](double s, int which) {
+        if (s > s_min && s < best) {
+            best = s;
             part = which;
         }
     };
 
-    // The side: (ox + t dx)^2 + (oy + t dy)^2 = (R + t K)^2, R the radius at the origin's z.
-    // A t^2 + 2 b t + C = 0 with A = dx^2 + dy^2 - K^2, b = ox dx + oy dy - R K,
+    // The side: (ox + s dx)^2 + (oy + s dy)^2 = (R + s K)^2, R the radius at o's z (o the ray's
+    // point at the shift). A s^2 + 2 b s + C = 0 with A = dx^2 + dy^2 - K^2, b = ox dx + oy dy - R K,
     // C = ox^2 + oy^2 - R^2, and b^2 - A C = (R dx - K ox)^2 + (R dy - K oy)^2 - (ox dy - oy dx)^2.
     const double R = c.base_radius + fr.k * oz, K = fr.k * dz;
     const double ex = R * dx - K * ox, ey = R * dy - K * oy, cross = ox * dy - oy * dx;
@@ -57,9 +62,9 @@ std::optional<SurfaceHit> intersect(const Cone& c, const Ray& ray, double t_min,
         const double b = ox * dx + oy * dy - R * K;
         const double C = (o_across - std::abs(R)) * (o_across + std::abs(R));
         const double q = -(b + std::copysign(std::sqrt(disc), b));
-        auto on_side = [&](double t) {
-            const double z = oz + t * dz;
-            if (z >= 0.0 && z <= fr.h) consider(t, 0);
+        auto on_side = [&](double s) {
+            const double z = oz + s * dz;
+            if (z >= 0.0 && z <= fr.h) consider(s, 0);
         };
         if (A != 0.0) on_side(q / A);
         if (q != 0.0) on_side(C / q);
@@ -71,14 +76,16 @@ std::optional<SurfaceHit> intersect(const Cone& c, const Ray& ray, double t_min,
         const double radii[2] = {c.base_radius, c.cap_radius};
         for (int e = 0; e < 2; ++e) {
             if (!(radii[e] > 0.0)) continue;  // a point: no disc
-            const double t = (ends[e] - oz) / dz;
-            const double x = ox + t * dx, y = oy + t * dy;
-            if (x * x + y * y <= radii[e] * radii[e]) consider(t, 1 + e);
+            const double s = (ends[e] - oz) / dz;
+            const double x = ox + s * dx, y = oy + s * dy;
+            if (x * x + y * y <= radii[e] * radii[e]) consider(s, 1 + e);
         }
     }
     if (part < 0) return std::nullopt;
+    const double t = shift + best;
+    if (!(t > t_min && t < t_max)) return std::nullopt;  // the sum's rounding
 
-    SurfaceHit hit{best, dvec3(0.0), {double(part), 0.0}};
+    SurfaceHit hit{t, dvec3(0.0), {double(part), 0.0}};
     if (part == 1) {
         hit.normal = -fr.axis;
     } else if (part == 2) {
