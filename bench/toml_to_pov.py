@@ -13,6 +13,7 @@ Where lancer and POV-Ray differ (docs/scene-format.md, "Porting from POV-Ray"):
 - lancer's max_depth counts bounces, POV's max_trace_level counts the camera ray too;
 - lancer stops following reflections below a weight of 1/1024: adc_bailout 1/1024.
 Both are left-handed with y up, so coordinates and rotations carry over unchanged.
+Cylinders and cones become POV's own (the same parameters, `open` included).
 Bezier patches become bicubic_patch (POV tessellates them: type 1, its usual settings);
 parametric surfaces become POV's `parametric` (Lipschitz subdivision with max_gradient, accuracy
 0.001 and precompute), or with --torus-as analytic, a torus becomes POV's exact `torus`.
@@ -46,6 +47,8 @@ TRANSLATED = {
     "plane": {"point", "normal"},
     "rectangle": {"corner", "edge_u", "edge_v"},
     "box": {"min", "max"},
+    "cylinder": {"base_point", "cap_point", "radius", "open"},
+    "cone": {"base_point", "base_radius", "cap_point", "cap_radius", "open"},
     "bezier": {"file", "control_points", "patches", "transform", "subdivision"},
     "parametric": {"x", "y", "z", "u", "v", "params", "transform"},
     "implicit": {"function", "box", "params", "transform"},
@@ -391,6 +394,13 @@ def objects(scene, base, torus_as, implicit_as="poly", accuracy=0.001):
             body = "polygon { 5, " + ", ".join(vec(p) for p in pts) + "\n"
         elif t == "box":
             body = f"box {{ {vec(o['min'])}, {vec(o['max'])}\n"
+        elif t == "cylinder":
+            opened = " open" if o.get("open", False) else ""
+            body = f"cylinder {{ {vec(o['base_point'])}, {vec(o['cap_point'])}, {o['radius']:.9g}{opened}\n"
+        elif t == "cone":
+            opened = " open" if o.get("open", False) else ""
+            body = (f"cone {{ {vec(o['base_point'])}, {o['base_radius']:.9g}, "
+                    f"{vec(o['cap_point'])}, {o['cap_radius']:.9g}{opened}\n")
         elif t == "bezier":
             body = bezier(o, base)
         elif t == "parametric":

@@ -12,6 +12,7 @@
 #include "shapes/plane.glsl"
 #include "shapes/rectangle.glsl"
 #include "shapes/disc.glsl"
+#include "shapes/cone.glsl"
 #include "shapes/box.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 namespace lancer {
 namespace {
@@ -24,6 +25,19 @@ struct BoundsOf {
         dvec3 reach;
         for (int i = 0; i < 3; ++i) reach[i] = d.radius * (std::sqrt(std::max(0.0, 1.0 - d.normal[i] * d.normal[i])) + 1e-15);
         return Aabb{d.center - reach, d.center + reach};
+    }
+    // The hull of the two end circles: each reaches r sqrt(1 - a_i^2) along axis i about its
+    // centre (a the unit axis), widened as the disc's; the side between them is their convex hull.
+    std::optional<Aabb> operator()(const Cone& c) const {
+        const dvec3 a = glm::normalize(c.cap - c.base);
+        Aabb box;
+        for (int i = 0; i < 3; ++i) {
+            const double across = std::sqrt(std::max(0.0, 1.0 - a[i] * a[i])) + 1e-15;
+            const double rb = c.base_radius * across, rc = c.cap_radius * across;
+            box.lo[i] = std::min(c.base[i] - rb, c.cap[i] - rc);
+            box.hi[i] = std::max(c.base[i] + rb, c.cap[i] + rc);
+        }
+        return box;
     }
     std::optional<Aabb> operator()(const ParametricObject& p) const { return Aabb{p.bounds_lo, p.bounds_hi}; }
     std::optional<Aabb> operator()(const ImplicitObject& o) const {

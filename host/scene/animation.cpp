@@ -26,6 +26,10 @@ void translate(Shape& shape, const dvec3& offset) {
         void operator()(Plane& p) const { p.point += d; }
         void operator()(Rectangle& r) const { r.corner += d; }
         void operator()(Disc& c) const { c.center += d; }
+        void operator()(Cone& c) const {
+            c.base += d;
+            c.cap += d;
+        }
         void operator()(Box& b) const {
             b.min += d;
             b.max += d;

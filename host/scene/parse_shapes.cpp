@@ -4,6 +4,9 @@
 #include "scene/parse_surfaces.hpp"
 #include "scene/transform.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -80,6 +83,50 @@ Shape read_disc(TableReader& t, const glm::dmat4&) {
     return d;
 }
 
+// The ends of a cone or cylinder (POV-Ray's base and cap points) and the texture's axes about
+// them. The axis must be long enough for its direction to be known from the coordinates: more
+// than 1e-9 of their magnitude (a shorter one is refused as zero).
+void read_cone_axis(TableReader& t, const std::string& what, Cone& c) {
+    c.base = t.required_vec3("base_point");
+    c.cap = t.required_vec3("cap_point");
+    const dvec3 axis = c.cap - c.base;
+    const double scale = std::max({std::abs(c.base.x), std::abs(c.base.y), std::abs(c.base.z), std::abs(c.cap.x),
+                                   std::abs(c.cap.y), std::abs(c.cap.z)});
+    if (!(glm::length(axis) > 1e-9 * scale))
+        t.fail("cap_point", what + " cap_point must differ from base_point: the " + what + " has no axis");
+    c.open = t.boolean("open", false);
+    Plane axes;  // the texture's angle starts at the plane's u axis for the axis as a normal
+    axes.normal = glm::normalize(axis);
+    set_plane_texture_axes(axes);
+    c.u_axis = axes.u_axis;
+    c.v_axis = axes.v_axis;
+}
+
+// POV-Ray's cylinder { base, cap, radius [open] }, with its names.
+Shape read_cylinder(TableReader& t) {
+    Cone c;
+    read_cone_axis(t, "cylinder", c);
+    const double r = t.required_number("radius");
+    if (!(r > 0.0)) t.fail("radius", fmt::format("cylinder radius must be positive, not {:g}", r));
+    c.base_radius = c.cap_radius = r;
+    return c;
+}
+
+// POV-Ray's cone { base, base_radius, cap, cap_radius [open] }: one radius may be 0 (a point).
+Shape read_cone(TableReader& t) {
+    Cone c;
+    read_cone_axis(t, "cone", c);
+    c.base_radius = t.required_number("base_radius");
+    if (!(c.base_radius >= 0.0))
+        t.fail("base_radius", fmt::format("cone base_radius must not be negative, not {:g}", c.base_radius));
+    c.cap_radius = t.required_number("cap_radius");
+    if (!(c.cap_radius >= 0.0))
+        t.fail("cap_radius", fmt::format("cone cap_radius must not be negative, not {:g}", c.cap_radius));
+    if (!(c.base_radius > 0.0 || c.cap_radius > 0.0))
+        t.fail("cap_radius", "cone base_radius and cap_radius must not both be 0: the cone would be a line");
+    return c;
+}
+
 }  // namespace
 
 const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
@@ -92,6 +139,8 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"parametric", read_parametric},
         {"implicit", read_implicit},
         {"disc", read_disc},
+        {"cylinder", read_cylinder},
+        {"cone", read_cone},
     };
     return readers;
 }

@@ -77,6 +77,16 @@ struct Absorber {
         d.hole_radius *= s;
         return true;
     }
+    bool operator()(Cone& c) const {
+        if (s == 0.0) return false;  // elliptic
+        c.base = apply(m, c.base);
+        c.cap = apply(m, c.cap);
+        c.base_radius *= s;
+        c.cap_radius *= s;
+        c.u_axis = glm::normalize(rotation * c.u_axis);
+        c.v_axis = glm::normalize(rotation * c.v_axis);
+        return true;
+    }
     // Their readers applied the transform (exactly: control points, the surfaces' own maps).
     bool operator()(BezierSurface&) const { return true; }
     bool operator()(ParametricObject&) const { return true; }

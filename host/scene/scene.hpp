@@ -251,7 +251,24 @@ struct Disc {
     dvec3 v_axis{0.0, 0.0, 1.0};
 };
 
-using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc>;
+// POV-Ray's cone and cylinder (one shape): the surface of revolution about the segment from
+// `base` to `cap` whose radius runs linearly from base_radius at the base to cap_radius at the
+// cap (equal for a cylinder; one of them may be 0, a pointed cone), closed by a disc across the
+// axis at each end of non-zero radius unless `open` (a tube: POV-Ray's `open`). Texture (u, v):
+// u the angle about the axis from u_axis toward v_axis (the plane's texture axes for the unit
+// axis as its normal, set_plane_texture_axes) over 2 pi; on the side v runs from 0 at the base
+// to 1 at the cap, on each end disc from 0 at its centre to 1 at its rim (docs/scene-format.md).
+struct Cone {
+    dvec3 base{0.0};
+    dvec3 cap{0.0, 1.0, 0.0};  // |cap - base| > 0
+    double base_radius = 1.0;  // >= 0, not both 0
+    double cap_radius = 1.0;
+    bool open = false;
+    dvec3 u_axis{1.0, 0.0, 0.0};
+    dvec3 v_axis{0.0, 0.0, 1.0};
+};
+
+using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \

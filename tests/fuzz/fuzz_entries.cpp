@@ -127,6 +127,14 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require_finite(s.normal, when, ": disc normal");
                     require(std::isfinite(s.radius) && s.radius > 0.0, when, ": disc radius");
                     require(s.hole_radius >= 0.0 && s.hole_radius < s.radius, when, ": disc hole radius");
+                } else if constexpr (std::is_same_v<T, Cone>) {
+                    require_finite(s.base, when, ": cone base");
+                    require_finite(s.cap, when, ": cone cap");
+                    require(glm::length(s.cap - s.base) > 0.0, when, ": cone axis");
+                    require(std::isfinite(s.base_radius) && s.base_radius >= 0.0, when, ": cone base radius");
+                    require(std::isfinite(s.cap_radius) && s.cap_radius >= 0.0, when, ": cone cap radius");
+                    require(s.base_radius > 0.0 || s.cap_radius > 0.0, when, ": cone radii");
+                    require_finite(s.u_axis, when, ": cone texture axis");
                 } else if constexpr (std::is_same_v<T, Box>) {
                     require_finite(s.min, when, ": box");
                     require_finite(s.max, when, ": box");

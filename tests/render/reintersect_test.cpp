@@ -182,6 +182,13 @@ const char* const kTurnedBox = "type = \"box\"\nmin = [-1, -0.7, -0.8]\nmax = [1
                                "transform = { rotate = [30, 40, 15], translate = [0.1, 1.0, 0.2] }\n";
 const char* const kEllipsoid = "type = \"sphere\"\ncenter = [0.1, 0, 0]\nradius = 1\n"
                                "transform = { scale = [1.6, 0.5, 1.1], rotate = [10, 30, 20], translate = [0.2, 1.0, 0.3] }\n";
+// A tilted capped cylinder, a tilted truncated cone, and a pointed open cone (its apex and its
+// open rim are silhouettes); a long thin cylinder seen along its length.
+const char* const kCylinder = "type = \"cylinder\"\nbase_point = [-0.4, 0.2, 0.1]\ncap_point = [0.9, 1.7, 0.6]\nradius = 0.7\n";
+const char* const kCone =
+    "type = \"cone\"\nbase_point = [0.5, 0.1, -0.3]\nbase_radius = 1.2\ncap_point = [-0.2, 1.8, 0.4]\ncap_radius = 0.35\n";
+const char* const kPointedCone = "type = \"cone\"\nbase_point = [0.1, 1.9, 0.2]\nbase_radius = 1.1\ncap_point = [0.3, 0.2, -0.1]\n"
+                                 "cap_radius = 0\nopen = true\n";
 
 struct Case {
     std::string name;
@@ -200,6 +207,13 @@ const Case kCases[] = {
     {"disc", [] { return analytic(kDisc); }},
     {"disc_far_from_origin", [] { return moved_far(analytic(kDisc)); }},
     {"large_disc_off_centre", [] { return analytic("type = \"disc\"\ncenter = [120, -0.3, 150]\nnormal = [0.02, 1, -0.01]\nradius = 300\nhole_radius = 2\n"); }},
+    {"cylinder", [] { return analytic(kCylinder); }},
+    {"cylinder_far_from_origin", [] { return moved_far(analytic(kCylinder)); }},
+    {"long_cylinder_along_the_view", [] { return analytic("type = \"cylinder\"\nbase_point = [0.3, 0.6, -4]\ncap_point = [-0.2, 1.1, 60]\nradius = 0.4\n"); }},
+    {"cone", [] { return analytic(kCone); }},
+    {"cone_far_from_origin", [] { return moved_far(analytic(kCone)); }},
+    {"pointed_open_cone", [] { return analytic(kPointedCone); }},
+    {"pointed_open_cone_far_from_origin", [] { return moved_far(analytic(kPointedCone)); }},
     {"box", [] { return analytic("type = \"box\"\nmin = [-1, 0.1, -0.7]\nmax = [1.2, 1.6, 0.9]\n"); }},
     {"box_turned", [] { return analytic(kTurnedBox); }},
     {"box_turned_far_from_origin", [] { return moved_far(analytic(kTurnedBox)); }},

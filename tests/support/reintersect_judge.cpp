@@ -61,15 +61,17 @@ std::optional<cpu::SurfaceHit> ReintersectJudge::reference_hit(const dvec3& o, c
 }
 
 // Along the line through p in direction n: from `reach` off on either side toward p, the nearest
-// hit's distance from p.
-// Where that line misses (a point just beyond an edge, along the face's normal), the nearest hit
-// along the axes instead: any hit along any line bounds the distance from above.
+// hit's distance from p. Where that line meets no surface (a hit within its error of an edge of a
+// closed shape, reported with the normal of the face beside it: a cylinder's side just beyond
+// its rim, whose normal line passes the end disc), along the coordinate axes too. A distance
+// along any line is at least the distance from the surface, so the check stays as strict.
 double ReintersectJudge::distance_to_surface(const dvec3& p, const dvec3& n, double reach) const {
-    auto along = [&](const dvec3& u) {
+    auto along = [&](const dvec3& line) {
         double best = kInfinity;
         for (double side : {1.0, -1.0}) {
-            dvec3 from = p + side * reach * u;
-            if (auto h = reference_hit(from, -side * u, 0.0); h && h->t < 2.0 * reach) best = std::min(best, std::abs(h->t - reach));
+            dvec3 from = p + side * reach * line;
+            if (auto h = reference_hit(from, -side * line, 0.0); h && h->t < 2.0 * reach)
+                best = std::min(best, std::abs(h->t - reach));
         }
         return best;
     };

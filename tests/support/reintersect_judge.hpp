@@ -7,7 +7,8 @@
 // Verdicts, for every ray the device traced (the ray, and the two restarted from its hit):
 //   bound      a hit point lies within its reported error bound of the reference's surface,
 //              measured along the normal line through it (from both sides, so that a point
-//              exactly on the surface is found too);
+//              exactly on the surface is found too; where that line meets nothing, a point
+//              within rounding of an edge, along the coordinate axes too);
 //   nearest    the reference's nearest hit is not nearer than the device's, beyond the device's
 //              error along the ray (error / |n.d|);
 //   spurious   the device's hit is not nearer than the reference's, beyond the same: a restarted

@@ -80,6 +80,21 @@ struct PrimitivePacker {
              v4(d.normal, d.hole_radius), v4(d.u_axis, glm::dot(to_center, d.u_axis))},
             shape_bounds(d));
     }
+    // A cone or cylinder is packed by the point of its axis segment nearest the origin, with the
+    // ends' positions along the axis from there (z0 <= 0 <= z1), so that its error bound stays at
+    // the picture's scale along a long one, as the disc's: p0 = (point, base radius), p1 = (unit
+    // axis, z1), p2 = (texture u axis, cap radius), data = -z0's float bits with the lowest bit
+    // replaced by the open flag (an ulp of z0 at most: within its rounding).
+    void operator()(const Cone& c) {
+        const dvec3 along = c.cap - c.base;
+        const double h = glm::length(along);
+        const dvec3 axis = along / h;
+        const double z = std::clamp(glm::dot(-c.base, axis), 0.0, h);  // the point, from the base
+        const uint base_z = (std::bit_cast<uint>(float(z)) & ~1u) | (c.open ? 1u : 0u);
+        add({SHAPE_CONE, material, base_z, object, v4(c.base + z * axis, c.base_radius), v4(axis, h - z),
+             v4(c.u_axis, c.cap_radius)},
+            shape_bounds(c));
+    }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
     // Each cell of the surface's domain is a primitive with the cell's proved box; the surface
