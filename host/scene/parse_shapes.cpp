@@ -103,7 +103,7 @@ void read_cone_axis(TableReader& t, const std::string& what, Cone& c) {
 }
 
 // POV-Ray's cylinder { base, cap, radius [open] }, with its names.
-Shape read_cylinder(TableReader& t) {
+Shape read_cylinder(TableReader& t, const glm::dmat4&) {
     Cone c;
     read_cone_axis(t, "cylinder", c);
     const double r = t.required_number("radius");
@@ -113,7 +113,7 @@ Shape read_cylinder(TableReader& t) {
 }
 
 // POV-Ray's cone { base, base_radius, cap, cap_radius [open] }: one radius may be 0 (a point).
-Shape read_cone(TableReader& t) {
+Shape read_cone(TableReader& t, const glm::dmat4&) {
     Cone c;
     read_cone_axis(t, "cone", c);
     c.base_radius = t.required_number("base_radius");
