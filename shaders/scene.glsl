@@ -11,6 +11,7 @@
 #include "shapes/plane.glsl"
 #include "shapes/rectangle.glsl"
 #include "shapes/disc.glsl"
+#include "shapes/torus.glsl"
 #include "shapes/box.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)

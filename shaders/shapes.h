@@ -24,7 +24,8 @@
     X(BEZIER, bezier, BezierSurface, 4, SHAPE_BOUNDED | SHAPE_KEEPS_LOCALS)                              \
     X(PARAMETRIC, parametric, ParametricObject, 5, SHAPE_BOUNDED | SHAPE_GENERATED | SHAPE_KEEPS_LOCALS) \
     X(IMPLICIT, implicit, ImplicitObject, 6, SHAPE_BOUNDED | SHAPE_GENERATED)                            \
-    X(DISC, disc, Disc, 7, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SHEET)
+    X(DISC, disc, Disc, 7, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SHEET)                                    \
+    X(TORUS, torus, Torus, 8, SHAPE_BOUNDED)
 
 #ifdef __cplusplus
 #include <cstdint>

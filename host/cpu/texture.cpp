@@ -16,6 +16,7 @@ glm::dvec2 texture_uv(const Hit& hit, const dvec3& p) {
         glm::dvec2 operator()(const Box& b) const { return cpu::texture_uv(b, p, hit.normal); }
         glm::dvec2 operator()(const Rectangle&) const { return hit.uv; }         // (a, b) along the edges
         glm::dvec2 operator()(const Disc& d) const { return cpu::texture_uv(d, p); }
+        glm::dvec2 operator()(const Torus& o) const { return cpu::texture_uv(o, p); }
         glm::dvec2 operator()(const BezierSurface&) const { return hit.uv; }     // each patch's (u, v)
         glm::dvec2 operator()(const ParametricObject& o) const {                  // the domain, as [0, 1]^2
             const auto& s = o.surface;

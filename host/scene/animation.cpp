@@ -24,6 +24,7 @@ void translate(Shape& shape, const dvec3& offset) {
         void operator()(Plane& p) const { p.point += d; }
         void operator()(Rectangle& r) const { r.corner += d; }
         void operator()(Disc& c) const { c.center += d; }
+        void operator()(Torus& o) const { o.center += d; }
         void operator()(Box& b) const {
             b.min += d;
             b.max += d;

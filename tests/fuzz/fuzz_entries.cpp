@@ -127,6 +127,12 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require_finite(s.normal, when, ": disc normal");
                     require(std::isfinite(s.radius) && s.radius > 0.0, when, ": disc radius");
                     require(s.hole_radius >= 0.0 && s.hole_radius < s.radius, when, ": disc hole radius");
+                } else if constexpr (std::is_same_v<T, Torus>) {
+                    require_finite(s.center, when, ": torus");
+                    require_finite(s.axis, when, ": torus axis");
+                    require(std::abs(glm::length(s.axis) - 1.0) < 1e-9, when, ": torus axis not unit");
+                    require(std::isfinite(s.major_radius) && s.major_radius > 0.0, when, ": torus major radius");
+                    require(std::isfinite(s.minor_radius) && s.minor_radius > 0.0, when, ": torus minor radius");
                 } else if constexpr (std::is_same_v<T, Box>) {
                     require_finite(s.min, when, ": box");
                     require_finite(s.max, when, ": box");

@@ -176,6 +176,11 @@ std::vector<surface::BezierPatch> moved(std::vector<surface::BezierPatch> patche
 // A tilted annulus (its hole's edge is a silhouette too).
 const char* const kDisc = "type = \"disc\"\ncenter = [0.2, 0.9, 0.3]\nnormal = [0.3, 1, -0.6]\nradius = 1.6\nhole_radius = 0.5\n";
 
+// A tilted ring torus, a thin one and a spindle (its lemon inside, cusps on the axis).
+const char* const kTorus = "type = \"torus\"\ncenter = [0.2, 0.9, 0.3]\naxis = [0.3, 1, -0.6]\nmajor_radius = 1.1\nminor_radius = 0.35\n";
+const char* const kThinTorus = "type = \"torus\"\ncenter = [-0.1, 0.7, 0.2]\naxis = [1, 0.2, -0.3]\nmajor_radius = 1.4\nminor_radius = 0.03\n";
+const char* const kSpindleTorus = "type = \"torus\"\ncenter = [0.1, 0.8, 0.2]\naxis = [-0.2, 1, 0.4]\nmajor_radius = 0.45\nminor_radius = 0.9\n";
+
 struct Case {
     std::string name;
     Scene (*make)();
@@ -193,6 +198,11 @@ const Case kCases[] = {
     {"disc", [] { return analytic(kDisc); }},
     {"disc_far_from_origin", [] { return moved_far(analytic(kDisc)); }},
     {"large_disc_off_centre", [] { return analytic("type = \"disc\"\ncenter = [120, -0.3, 150]\nnormal = [0.02, 1, -0.01]\nradius = 300\nhole_radius = 2\n"); }},
+    {"torus", [] { return analytic(kTorus); }},
+    {"torus_far_from_origin", [] { return moved_far(analytic(kTorus)); }},
+    {"thin_torus", [] { return analytic(kThinTorus); }},
+    {"thin_torus_far_from_origin", [] { return moved_far(analytic(kThinTorus)); }},
+    {"spindle_torus", [] { return analytic(kSpindleTorus); }},
     {"box", [] { return analytic("type = \"box\"\nmin = [-1, 0.1, -0.7]\nmax = [1.2, 1.6, 0.9]\n"); }},
     {"box_far_from_origin", [] { return moved_far(analytic("type = \"box\"\nmin = [-1, 0.1, -0.7]\nmax = [1.2, 1.6, 0.9]\n")); }},
     {"bezier_teapot", [] { return only_object(test::shipped_scene("teapot", 64, 36), 1); }},
