@@ -74,12 +74,15 @@ bool torus_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
     vec3 o = vec3(dot(e, u), dot(e, ax), dot(e, v));
     vec3 d = vec3(dot(ray.dir, u), dot(ray.dir, ax), dot(ray.dir, v));
     // The ball (widened by far more than the roundings of a + b = 1) from the point nearest
-    // the centre, then the slab, then (t_min, t_max): s relative to tc.
+    // the centre, then the slab, then (t_min, t_max): s relative to tc. c is that point only to
+    // the rounding of o + tc d, which is of |o|: off along the ray by more than the ball's margin
+    // for a ray from afar, so the ball's entry and exit keep c.d (beta0): s^2 + 2 beta0 s + |c|^2 = 1.
     float tc = -dot(o, d);
     vec3 c = o + tc * d;
-    float reach2 = 1.00002 - dot(c, c);
+    float beta0 = dot(c, d);
+    float reach2 = beta0 * beta0 + 1.00002 - dot(c, c);
     if (!(reach2 >= 0.0)) return false;
-    float hi = sqrt(reach2), lo = -hi;
+    float hi = sqrt(reach2) - beta0, lo = -sqrt(reach2) - beta0;
     float slab = b * 1.00001 + 1e-6;
     if (d.y != 0.0) {
         float y0 = (-slab - c.y) / d.y, y1 = (slab - c.y) / d.y;

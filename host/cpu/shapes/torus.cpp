@@ -152,9 +152,11 @@ std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min
     const double tc = -glm::dot(fr.o, fr.d);
     const dvec3 c = fr.o + tc * fr.d;
     const double ball = 1.0 + kMargin;
-    const double reach2 = ball * ball - glm::dot(c, c);
+    // c is the nearest point to the rounding of fr.o + tc fr.d, which is of |fr.o|: its c.d kept.
+    const double beta0 = glm::dot(c, fr.d);
+    const double reach2 = beta0 * beta0 + ball * ball - glm::dot(c, c);
     if (!(reach2 >= 0.0)) return std::nullopt;
-    double lo = -std::sqrt(reach2), hi = -lo;
+    double lo = -std::sqrt(reach2) - beta0, hi = std::sqrt(reach2) - beta0;
     const double slab = fr.b + kMargin;
     if (fr.d.y != 0.0) {
         double y0 = (-slab - c.y) / fr.d.y, y1 = (slab - c.y) / fr.d.y;
