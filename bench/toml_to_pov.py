@@ -15,6 +15,7 @@ Where lancer and POV-Ray differ (docs/scene-format.md, "Porting from POV-Ray"):
 Both are left-handed with y up, so coordinates and rotations carry over unchanged.
 Cylinders and cones become POV's own (the same parameters, `open` included).
 Bezier patches become bicubic_patch (POV tessellates them: type 1, its usual settings);
+tori become POV's exact `torus` turned to their axis and moved to their centre by a `matrix`;
 parametric surfaces become POV's `parametric` (Lipschitz subdivision with max_gradient, accuracy
 0.001 and precompute), or with --torus-as analytic, a torus becomes POV's exact `torus`.
 Implicit surfaces become POV's exact `polynomial` (expanded here, solved with Sturm sequences,
@@ -49,6 +50,7 @@ TRANSLATED = {
     "box": {"min", "max"},
     "cylinder": {"base_point", "cap_point", "radius", "open"},
     "cone": {"base_point", "base_radius", "cap_point", "cap_radius", "open"},
+    "torus": {"center", "axis", "major_radius", "minor_radius"},
     "bezier": {"file", "control_points", "patches", "transform", "subdivision"},
     "parametric": {"x", "y", "z", "u", "v", "params", "transform"},
     "implicit": {"function", "box", "params", "transform"},
@@ -210,6 +212,27 @@ def analytic_torus(o):
     """POV's exact torus for the lancer torus (R + r cos v) cos u, r sin v, (R + r cos v) sin u."""
     p = o.get("params", {})
     return f"torus {{ {p['R']:.9g}, {p['r']:.9g}\n"
+
+
+def torus(o):
+    """POV's exact torus (about +y at the origin) carried to lancer's axis and centre by a matrix
+    whose rows are the images of x, y, z: lancer's texture axes for the axis (scene/
+    parse_material_maps.cpp's set_plane_texture_axes), the axis, and u x axis. A spindle torus
+    (minor > major) is the whole quartic in lancer, POV's `difference` spindle mode."""
+    a = o.get("axis", [0, 1, 0])
+    length = math.sqrt(sum(x * x for x in a))
+    n = [x / length for x in a]
+    up = [-n[1] * n[0], 1 - n[1] * n[1], -n[1] * n[2]]
+    if math.sqrt(sum(x * x for x in up)) <= 1e-6:
+        up = [-n[2] * n[0], -n[2] * n[1], 1 - n[2] * n[2]]
+    lv = math.sqrt(sum(x * x for x in up))
+    v = [x / lv for x in up]
+    u = [n[1] * v[2] - n[2] * v[1], n[2] * v[0] - n[0] * v[2], n[0] * v[1] - n[1] * v[0]]
+    w = [u[1] * n[2] - u[2] * n[1], u[2] * n[0] - u[0] * n[2], u[0] * n[1] - u[1] * n[0]]
+    c = o.get("center", [0, 0, 0])
+    spindle = " difference" if o["minor_radius"] > o["major_radius"] else ""
+    rows = ", ".join("%.9g" % x for x in u + n + w + c)
+    return f"torus {{ {o['major_radius']:.9g}, {o['minor_radius']:.9g}{spindle} matrix <{rows}>\n"
 
 
 # Implicit surfaces: lancer's expression language read with Python's own parser (x^y is x**y,
@@ -401,6 +424,8 @@ def objects(scene, base, torus_as, implicit_as="poly", accuracy=0.001):
             opened = " open" if o.get("open", False) else ""
             body = (f"cone {{ {vec(o['base_point'])}, {o['base_radius']:.9g}, "
                     f"{vec(o['cap_point'])}, {o['cap_radius']:.9g}{opened}\n")
+        elif t == "torus":
+            body = torus(o)
         elif t == "bezier":
             body = bezier(o, base)
         elif t == "parametric":

@@ -13,6 +13,7 @@
 #include "shapes/rectangle.glsl"
 #include "shapes/disc.glsl"
 #include "shapes/cone.glsl"
+#include "shapes/torus.glsl"
 #include "shapes/box.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)

@@ -25,7 +25,8 @@
     X(PARAMETRIC, parametric, ParametricObject, 5, SHAPE_BOUNDED | SHAPE_GENERATED | SHAPE_KEEPS_LOCALS) \
     X(IMPLICIT, implicit, ImplicitObject, 6, SHAPE_BOUNDED | SHAPE_GENERATED)                            \
     X(DISC, disc, Disc, 7, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SHEET)                                    \
-    X(CONE, cone, Cone, 8, SHAPE_BOUNDED | SHAPE_CHEAP)
+    X(CONE, cone, Cone, 8, SHAPE_BOUNDED | SHAPE_CHEAP)                                                  \
+    X(TORUS, torus, Torus, 9, SHAPE_BOUNDED)
 
 #ifdef __cplusplus
 #include <cstdint>

@@ -39,6 +39,14 @@ struct BoundsOf {
         }
         return box;
     }
+    // The tube's centre circle (radius R across unit a) reaches R sqrt(1 - a_i^2) along axis i and
+    // the tube r beyond it; widened by a few roundings, as the disc's.
+    std::optional<Aabb> operator()(const Torus& o) const {
+        dvec3 reach;
+        for (int i = 0; i < 3; ++i)
+            reach[i] = (o.major_radius * std::sqrt(std::max(0.0, 1.0 - o.axis[i] * o.axis[i])) + o.minor_radius) * (1.0 + 1e-15);
+        return Aabb{o.center - reach, o.center + reach};
+    }
     std::optional<Aabb> operator()(const ParametricObject& p) const { return Aabb{p.bounds_lo, p.bounds_hi}; }
     std::optional<Aabb> operator()(const ImplicitObject& o) const {
         Aabb b;

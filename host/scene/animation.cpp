@@ -30,6 +30,7 @@ void translate(Shape& shape, const dvec3& offset) {
             c.base += d;
             c.cap += d;
         }
+        void operator()(Torus& o) const { o.center += d; }
         void operator()(Box& b) const {
             b.min += d;
             b.max += d;

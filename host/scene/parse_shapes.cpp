@@ -127,6 +127,32 @@ Shape read_cone(TableReader& t, const glm::dmat4&) {
     return c;
 }
 
+// POV-Ray's torus { major, minor }, with a centre and an axis in place of its transforms.
+Shape read_torus(TableReader& t, const glm::dmat4&) {
+    Torus o;
+    o.center = t.vec3("center", dvec3(0.0));
+    dvec3 a = t.vec3("axis", dvec3(0.0, 1.0, 0.0));
+    if (!(glm::length(a) > 0.0)) t.fail("axis", "torus axis must not be the zero vector");
+    o.axis = glm::normalize(a);
+    o.major_radius = t.required_number("major_radius");
+    if (!(o.major_radius > 0.0))
+        t.fail("major_radius", fmt::format("torus major_radius must be positive, not {:g}", o.major_radius));
+    o.minor_radius = t.required_number("minor_radius");
+    if (!(o.minor_radius > 0.0))
+        t.fail("minor_radius", fmt::format("torus minor_radius must be positive, not {:g}", o.minor_radius));
+    // Float's shader scales the torus by R + r: radii 10^7 apart would leave the smaller one
+    // below float's resolution of the larger (a thread or a sphere, not a torus).
+    const double ratio = std::max(o.major_radius, o.minor_radius) / std::min(o.major_radius, o.minor_radius);
+    if (!(ratio <= 1e6))
+        t.fail("minor_radius", fmt::format("torus radii {:g} and {:g} are more than 10^6 apart", o.major_radius, o.minor_radius));
+    Plane axes;  // the texture's angle about the axis starts at the plane's u axis for it
+    axes.normal = o.axis;
+    set_plane_texture_axes(axes);
+    o.u_axis = axes.u_axis;
+    o.v_axis = axes.v_axis;
+    return o;
+}
+
 }  // namespace
 
 const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
@@ -141,6 +167,7 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"disc", read_disc},
         {"cylinder", read_cylinder},
         {"cone", read_cone},
+        {"torus", read_torus},
     };
     return readers;
 }

@@ -87,6 +87,16 @@ struct Absorber {
         c.v_axis = glm::normalize(rotation * c.v_axis);
         return true;
     }
+    bool operator()(Torus& o) const {
+        if (s == 0.0) return false;  // stretched: no longer a torus of revolution
+        o.center = apply(m, o.center);
+        o.axis = glm::normalize(rotation * o.axis);
+        o.major_radius *= s;
+        o.minor_radius *= s;
+        o.u_axis = glm::normalize(rotation * o.u_axis);
+        o.v_axis = glm::normalize(rotation * o.v_axis);
+        return true;
+    }
     // Their readers applied the transform (exactly: control points, the surfaces' own maps).
     bool operator()(BezierSurface&) const { return true; }
     bool operator()(ParametricObject&) const { return true; }

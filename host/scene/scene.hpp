@@ -268,7 +268,24 @@ struct Cone {
     dvec3 v_axis{0.0, 0.0, 1.0};
 };
 
-using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone>;
+// POV-Ray's torus: the points at distance minor_radius from the circle of radius major_radius
+// about `center` across the unit `axis` (POV-Ray's lies in the XZ plane around +y), the quartic
+// (|p|^2 + R^2 - r^2)^2 = 4 R^2 (x^2 + z^2) in its own frame (y along the axis). With r > R (a
+// spindle torus) the quartic is the whole self-intersecting surface, the outer "apple" and the
+// inner "lemon", and its inside (f < 0) the apple less the lemon: POV-Ray's `difference` spindle
+// mode. Texture (u, v): u the angle about the axis from u_axis toward v_axis (the plane's texture
+// axes for that normal) over 2 pi, v the angle around the tube from its outer equator toward
+// +axis over 2 pi, both in [0, 1) (docs/scene-format.md).
+struct Torus {
+    dvec3 center{0.0};
+    dvec3 axis{0.0, 1.0, 0.0};  // unit length
+    double major_radius = 1.0;
+    double minor_radius = 0.25;
+    dvec3 u_axis{1.0, 0.0, 0.0};
+    dvec3 v_axis{0.0, 0.0, 1.0};
+};
+
+using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \

@@ -135,6 +135,12 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require(std::isfinite(s.cap_radius) && s.cap_radius >= 0.0, when, ": cone cap radius");
                     require(s.base_radius > 0.0 || s.cap_radius > 0.0, when, ": cone radii");
                     require_finite(s.u_axis, when, ": cone texture axis");
+                } else if constexpr (std::is_same_v<T, Torus>) {
+                    require_finite(s.center, when, ": torus");
+                    require_finite(s.axis, when, ": torus axis");
+                    require(std::abs(glm::length(s.axis) - 1.0) < 1e-9, when, ": torus axis not unit");
+                    require(std::isfinite(s.major_radius) && s.major_radius > 0.0, when, ": torus major radius");
+                    require(std::isfinite(s.minor_radius) && s.minor_radius > 0.0, when, ": torus minor radius");
                 } else if constexpr (std::is_same_v<T, Box>) {
                     require_finite(s.min, when, ": box");
                     require_finite(s.max, when, ": box");

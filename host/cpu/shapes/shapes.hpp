@@ -29,6 +29,11 @@ std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, 
 std::optional<SurfaceHit> intersect(const Disc& d, const Ray& ray, double t_min, double t_max);
 // uv.x is which part was hit: 0 the side, 1 the base's disc, 2 the cap's (texture_uv reads it).
 std::optional<SurfaceHit> intersect(const Cone& c, const Ray& ray, double t_min, double t_max);
+// The nearest root of the torus's quartic in (t_min, t_max), isolated by Bernstein subdivision
+// (certified: a piece is dropped only when its Bernstein coefficients prove no root, a root is
+// reported where they prove exactly one, or where a piece of 1e-12 of the segment cannot be
+// told from a touching point). Any ray direction length works.
+std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min, double t_max);
 // Certified (interval Newton) search for the nearest root; `normal` is surface_normal() there
 // and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
 std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
@@ -62,6 +67,7 @@ glm::dvec2 texture_uv(const Plane& p, const dvec3& point);
 glm::dvec2 texture_uv(const Box& b, const dvec3& p, const dvec3& face_normal);
 glm::dvec2 texture_uv(const Disc& d, const dvec3& p);
 glm::dvec2 texture_uv(const Cone& c, const dvec3& p, int part);
+glm::dvec2 texture_uv(const Torus& o, const dvec3& p);
 
 // Bicubic (rational) Bezier patches, exactly, by resultant + generalized eigenvalues (bezier.cpp).
 // The ray's direction need not be unit length: t is in units of it. intersect_all returns every

@@ -95,6 +95,12 @@ struct PrimitivePacker {
              v4(c.u_axis, c.cap_radius)},
             shape_bounds(c));
     }
+    // A torus is compact (its box is R + r about the centre), so it is packed by its centre, as
+    // a sphere: p0 = (centre, major radius), p1 = (unit axis, minor radius), p2 = (texture u axis, 0).
+    void operator()(const Torus& o) {
+        add({SHAPE_TORUS, material, 0, object, v4(o.center, o.major_radius), v4(o.axis, o.minor_radius), v4(o.u_axis)},
+            shape_bounds(o));
+    }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
     // Each cell of the surface's domain is a primitive with the cell's proved box; the surface

@@ -1,0 +1,249 @@
+// Ray/torus (POV-Ray's torus) for the CPU reference, in double precision, written apart from
+// shaders/shapes/torus.glsl (which splits the ray at the quartic's critical points and runs
+// Newton in float).
+//
+// In the torus's frame (y along the axis), scaled by S = R + r so that the surface lies in the
+// unit ball (a = R / S, b = r / S, a + b = 1), the surface is
+//   f(p) = (|p|^2 + a^2 - b^2)^2 - 4 a^2 (x^2 + z^2) = h-(p) h+(p),
+//   h-(p) = (rho - a)^2 + y^2 - b^2,   h+(p) = (rho + a)^2 + y^2 - b^2,   rho^2 = x^2 + z^2:
+// h- = 0 is the tube about the circle (the whole ring torus, the spindle's outer "apple"), h+ = 0
+// its mirror through the axis (the spindle's inner "lemon", empty for b < a). Along the ray, cut
+// to the unit ball and the slab |y| <= b, f is a quartic g(tau), tau in [-1, 1] over the segment.
+// Its Bernstein coefficients over a piece enclose g there (convex hull), and their sign
+// variations bound its roots there (Descartes' rule, which is exact for one variation):
+//   * every coefficient beyond its rounding bound on one side: no root in the piece;
+//   * one variation, every coefficient beyond its rounding bound: exactly one root, found by
+//     bisection on f evaluated by its factored form (accurate near the surface);
+//   * else the piece is halved (de Casteljau), nearer half first, down to 1e-12 of the segment,
+//     where a piece whose coefficients still straddle 0 within their rounding is a touching point
+//     (a ray tangent to the tube, or through a spindle's cusp): a hit, as the implicit surfaces'
+//     reference counts it (cpu/shapes/implicit.cpp).
+// Nothing is missed: a piece is dropped only on a proof that g keeps one sign over it.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+
+#include <glm/geometric.hpp>
+
+#include "cpu/shapes/shapes.hpp"
+
+namespace lancer::cpu {
+namespace {
+
+constexpr double kEpsilon = 2.220446049250313e-16;
+constexpr double kTouchingWidth = 1e-12;  // of tau's [-1, 1]: a piece this narrow is a point
+constexpr double kMargin = 1e-9;          // the ball and slab widened (scaled units): the surface touches the ball
+
+using Bernstein = std::array<double, 5>;
+
+struct TorusFrame {
+    dvec3 o, d;      // the ray in the scaled frame: o + sigma d, |d| = 1
+    double a, b;     // the radii over S
+    double to_t;     // t = sigma * to_t
+};
+
+double f_factored(const TorusFrame& fr, const dvec3& p) {
+    const double rho = std::sqrt(p.x * p.x + p.z * p.z);
+    const double y2b2 = (p.y - fr.b) * (p.y + fr.b);
+    const double minus = (rho - fr.a) * (rho - fr.a) + y2b2;
+    const double plus = (rho + fr.a) * (rho + fr.a) + y2b2;
+    return minus * plus;
+}
+
+class Isolator {
+public:
+    Isolator(const TorusFrame& fr, const dvec3& base, double half, double sigma_mid, double t_min, double t_max)
+        : fr_(fr), base_(base), half_(half), sigma_mid_(sigma_mid), t_min_(t_min), t_max_(t_max) {}
+
+    // The nearest root in (lo, hi) whose t is in (t_min, t_max).
+    std::optional<double> nearest(const Bernstein& c, double lo, double hi, double error) const {
+        double min = c[0], max = c[0];
+        for (double x : c) {
+            min = std::min(min, x);
+            max = std::max(max, x);
+        }
+        if (min > error || max < -error) return std::nullopt;  // proved: no root here
+        bool certain = true;
+        int variations = 0;
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            certain = certain && std::abs(c[i]) > error;
+            if (i > 0 && (c[i] > 0.0) != (c[i - 1] > 0.0)) ++variations;
+        }
+        if (certain && variations == 1) return accept(bisect(lo, hi, c[0] > 0.0));
+        if (hi - lo <= kTouchingWidth) return accept(0.5 * (lo + hi));  // within rounding of a touching point
+        Bernstein left, right;
+        split(c, left, right);
+        const double mid = 0.5 * (lo + hi);
+        // Each de Casteljau level averages: one more rounding of the largest coefficient.
+        const double next = error + 2.0 * kEpsilon * std::max(std::abs(min), std::abs(max));
+        if (auto r = nearest(left, lo, mid, next)) return r;
+        return nearest(right, mid, hi, next);
+    }
+
+    double sigma(double tau) const { return sigma_mid_ + half_ * tau; }
+
+private:
+    std::optional<double> accept(double tau) const {
+        const double t = sigma(tau) * fr_.to_t;
+        if (t > t_min_ && t < t_max_) return tau;
+        return std::nullopt;
+    }
+
+    // The one root in (lo, hi) where g(lo) has sign `lo_positive`: bisection on f's factored form
+    // until the bracket stops shrinking.
+    double bisect(double lo, double hi, bool lo_positive) const {
+        for (int i = 0; i < 200; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            if (!(mid > lo && mid < hi)) break;
+            const double value = f_factored(fr_, base_ + (half_ * mid) * fr_.d);
+            if (value == 0.0) return mid;
+            if ((value > 0.0) == lo_positive) lo = mid; else hi = mid;
+        }
+        return 0.5 * (lo + hi);
+    }
+
+    static void split(const Bernstein& c, Bernstein& left, Bernstein& right) {
+        Bernstein w = c;
+        const std::size_t n = c.size() - 1;
+        left[0] = w[0];
+        right[n] = w[n];
+        for (std::size_t k = 1; k <= n; ++k) {
+            for (std::size_t i = 0; i + k <= n; ++i) w[i] = 0.5 * (w[i] + w[i + 1]);
+            left[k] = w[0];
+            right[n - k] = w[n - k];
+        }
+    }
+
+    const TorusFrame& fr_;
+    dvec3 base_;
+    double half_, sigma_mid_, t_min_, t_max_;
+};
+
+// The gradient of f = h- h+ in the scaled frame, from the factors (each accurate near its zero).
+dvec3 gradient(double a, double b, const dvec3& p) {
+    const double rho = std::sqrt(p.x * p.x + p.z * p.z);
+    const double y2b2 = (p.y - b) * (p.y + b);
+    const double minus = (rho - a) * (rho - a) + y2b2, plus = (rho + a) * (rho + a) + y2b2;
+    // grad h-+ = 2 ((rho -+ a) x / rho, y, (rho -+ a) z / rho); at rho = 0 the radial part's
+    // direction is undefined (a spindle's cusp) and left out.
+    const double cx = rho > 0.0 ? p.x / rho : 0.0, cz = rho > 0.0 ? p.z / rho : 0.0;
+    const dvec3 gm((rho - a) * cx, p.y, (rho - a) * cz), gp((rho + a) * cx, p.y, (rho + a) * cz);
+    return plus * gm + minus * gp;
+}
+
+}  // namespace
+
+std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min, double t_max) {
+    const double S = o.major_radius + o.minor_radius;
+    const double length = glm::length(ray.dir);
+    if (!(length > 0.0) || !(S > 0.0)) return std::nullopt;
+    const dvec3 u = o.u_axis, ax = o.axis, v = glm::cross(o.u_axis, o.axis);
+    const dvec3 e = ray.origin - o.center;
+    TorusFrame fr;
+    fr.o = dvec3(glm::dot(e, u), glm::dot(e, ax), glm::dot(e, v)) / S;
+    fr.d = dvec3(glm::dot(ray.dir, u), glm::dot(ray.dir, ax), glm::dot(ray.dir, v)) / length;
+    fr.a = o.major_radius / S;
+    fr.b = o.minor_radius / S;
+    fr.to_t = S / length;
+
+    // The segment: the unit ball and the slab |y| <= b, within (t_min, t_max), relative to the
+    // ray's point nearest the centre.
+    const double tc = -glm::dot(fr.o, fr.d);
+    const dvec3 c = fr.o + tc * fr.d;
+    const double ball = 1.0 + kMargin;
+    // c is the nearest point to the rounding of fr.o + tc fr.d, which is of |fr.o|: its c.d kept.
+    const double beta0 = glm::dot(c, fr.d);
+    const double reach2 = beta0 * beta0 + ball * ball - glm::dot(c, c);
+    if (!(reach2 >= 0.0)) return std::nullopt;
+    double lo = -std::sqrt(reach2) - beta0, hi = std::sqrt(reach2) - beta0;
+    const double slab = fr.b + kMargin;
+    if (fr.d.y != 0.0) {
+        double y0 = (-slab - c.y) / fr.d.y, y1 = (slab - c.y) / fr.d.y;
+        if (y0 > y1) std::swap(y0, y1);
+        lo = std::max(lo, y0);
+        hi = std::min(hi, y1);
+    } else if (std::abs(c.y) > slab) {
+        return std::nullopt;
+    }
+    lo = std::max(lo, t_min / fr.to_t - tc);
+    hi = std::min(hi, t_max / fr.to_t - tc);
+    if (!(lo < hi)) return std::nullopt;
+
+    // g(tau) = f(P + half tau D), P the segment's middle.
+    const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    const dvec3 P = c + mid * fr.d, D = fr.d;
+    const double a2 = fr.a * fr.a, k = (fr.a - fr.b) * (fr.a + fr.b);
+    // q(tau) = |p|^2 + a^2 - b^2 and rho^2(tau), as quadratics in tau.
+    const double q0 = glm::dot(P, P) + k, q1 = 2.0 * half * glm::dot(P, D), q2 = half * half;
+    const double r0 = P.x * P.x + P.z * P.z, r1 = 2.0 * half * (P.x * D.x + P.z * D.z),
+                 r2 = half * half * (D.x * D.x + D.z * D.z);
+    // f = q^2 - 4 a^2 rho^2: power coefficients, and the sums of their terms' magnitudes.
+    std::array<double, 5> p{}, m{};
+    p[0] = f_factored(fr, P);
+    m[0] = q0 * q0 + 4.0 * a2 * r0;
+    p[1] = 2.0 * q0 * q1 - 4.0 * a2 * r1;
+    m[1] = std::abs(2.0 * q0 * q1) + std::abs(4.0 * a2 * r1);
+    p[2] = q1 * q1 + 2.0 * q0 * q2 - 4.0 * a2 * r2;
+    m[2] = q1 * q1 + std::abs(2.0 * q0 * q2) + 4.0 * a2 * r2;
+    p[3] = 2.0 * q1 * q2;
+    m[3] = std::abs(p[3]);
+    p[4] = q2 * q2;
+    m[4] = p[4];
+    // tau = 2x - 1 on x in [0, 1], then Bernstein coefficients over [0, 1] (implicit.cpp's
+    // descartes_agrees does the same for any degree); magnitudes carried alongside.
+    std::array<double, 5> px{}, mx{};
+    for (int i = 0; i < 5; ++i) {
+        double binomial = 1.0;  // C(i, j)
+        for (int j = 0; j <= i; ++j) {
+            const double term = p[i] * binomial * std::ldexp(((i - j) & 1) ? -1.0 : 1.0, j);
+            px[j] += term;
+            mx[j] += std::abs(m[i] * binomial * std::ldexp(1.0, j));
+            binomial = binomial * double(i - j) / double(j + 1);
+        }
+    }
+    Bernstein bern{};
+    double magnitude = 0.0;
+    static constexpr double kBinomial4[5] = {1, 4, 6, 4, 1};
+    for (int j = 0; j < 5; ++j) {
+        double sum = 0.0, sum_mag = 0.0, c_jk = 1.0;  // C(j, k)
+        for (int kk = 0; kk <= j; ++kk) {
+            sum += c_jk / kBinomial4[kk] * px[kk];
+            sum_mag += c_jk / kBinomial4[kk] * mx[kk];
+            c_jk = c_jk * double(j - kk) / double(kk + 1);
+        }
+        bern[j] = sum;
+        magnitude = std::max(magnitude, sum_mag);
+    }
+    // Each coefficient carries a few dozen roundings of the magnitudes it was formed from (the
+    // ray's frame, q and rho^2, their products, two changes of basis): 256 is generous.
+    const double error = 256.0 * kEpsilon * magnitude;
+
+    // tau from -1 to 1 is sigma from mid - half to mid + half about tc.
+    Isolator isolator(fr, P, half, tc + mid, t_min, t_max);
+    const std::optional<double> tau = isolator.nearest(bern, -1.0, 1.0, error);
+    if (!tau) return std::nullopt;
+    const dvec3 hit = P + (half * *tau) * D;
+    const dvec3 g = gradient(fr.a, fr.b, hit);
+    dvec3 normal = g.x * u + g.y * ax + g.z * v;
+    const double gl = glm::length(normal);
+    normal = gl > 0.0 ? normal / gl : ax;  // a cusp of a spindle: no tangent plane
+    return SurfaceHit{isolator.sigma(*tau) * fr.to_t, normal};
+}
+
+// u the angle about the axis from u_axis toward v_axis, v the angle around the tube from its
+// outer equator toward +axis, both over 2 pi in [0, 1).
+glm::dvec2 texture_uv(const Torus& o, const dvec3& p) {
+    const dvec3 w = p - o.center;
+    const double x = glm::dot(w, o.u_axis), z = glm::dot(w, o.v_axis), y = glm::dot(w, o.axis);
+    auto turn = [](double sine, double cosine) {
+        double angle = (sine == 0.0 && cosine == 0.0) ? 0.0 : std::atan2(sine, cosine);
+        if (angle < 0.0) angle += 2.0 * M_PI;
+        double f = angle / (2.0 * M_PI);
+        return f >= 1.0 ? 0.0 : f;
+    };
+    const double rho = std::sqrt(x * x + z * z);
+    return {turn(z, x), turn(y, rho - o.major_radius)};
+}
+
+}  // namespace lancer::cpu
