@@ -171,6 +171,12 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
             uint, in_object_space, /* 1: the object's primitives are in its own coordinates */       \
             uint, reserved)
 
+// A CSG object (shaders/shapes/csg.glsl): its leaves are the primitives [first_leaf, first_leaf +
+// leaf_count), stored after every primitive the tracer traverses; its program the CSG_* ops
+// csg_ops[first_op, first_op + op_count) (shapes.h).
+#define LANCER_ROWS_CsgNode(VEC4, VEC4S, SCALARS, UVEC4S) \
+    SCALARS(uint, first_leaf, uint, leaf_count, uint, first_op, uint, op_count)
+
 // One cell of a parametric surface's domain, where the GPU searches for roots
 // (shapes/parametric.glsl). S at the cell's centre and the bounds of S's partials over the whole
 // (slightly widened) cell, in the surface's own coordinates, let the search decide most cells
@@ -360,6 +366,7 @@ LANCER_STRUCT(SurfaceInfo)
 LANCER_STRUCT(ParametricCell)
 LANCER_STRUCT(ImplicitInfo)
 LANCER_STRUCT(ObjectFrame)
+LANCER_STRUCT(CsgNode)
 LANCER_STRUCT(BvhNode)
 LANCER_STRUCT(Material)
 LANCER_STRUCT(TextureInfo)
@@ -414,6 +421,8 @@ LANCER_CONST RESOURCE_INT = 4;
     X(ENERGY, 13, RESOURCE_UINT, uint, energy_tables, energy_table_at, "microfacet energy tables") /* float bits */ \
     X(EMITTERS, 14, RESOURCE_ROWS, Emitter, emitters, emitter_at, "photon emitters")                   \
     X(OBJECT_FRAMES, 34, RESOURCE_ROWS, ObjectFrame, object_frames, object_frame_at, "object transforms") \
+    X(CSG_NODES, 35, RESOURCE_ROWS, CsgNode, csg_nodes, csg_node_at, "CSG objects")                   \
+    X(CSG_OPS, 36, RESOURCE_UINT, uint, csg_ops, csg_op_at, "CSG programs")                           \
     X(GRIDS, 31, RESOURCE_ROWS, DirectionGrid, grids, grid_at, "direction grids")                        \
     X(GRID_CELLS, 32, RESOURCE_UINT, uint, grid_cells, grid_cell_at, "direction grid cells")             \
     X(GRID_ENTRIES, 33, RESOURCE_UINT, uint, grid_entries, grid_entry_at, "direction grid entries") /* pairs: primitive, float bits of its nearest distance */
@@ -494,6 +503,7 @@ LANCER_ASSERT_SIZE(SurfaceInfo)
 LANCER_ASSERT_SIZE(ParametricCell)
 LANCER_ASSERT_SIZE(ImplicitInfo)
 LANCER_ASSERT_SIZE(ObjectFrame)
+LANCER_ASSERT_SIZE(CsgNode)
 LANCER_ASSERT_SIZE(BvhNode)
 LANCER_ASSERT_SIZE(Material)
 LANCER_ASSERT_SIZE(TextureInfo)

@@ -31,6 +31,34 @@
 // Whether it can be outside the BVH, tested by every ray in its family's loop.
 #define LANCER_MAY_BE_OUTSIDE_BVH(traits) (!SCENE_HAS_BVH || !LANCER_BOUNDED(traits) || (LANCER_BOXABLE(traits) && !BVH_HAS_ANALYTIC))
 
+// A CSG leaf's hit in (t_min, t_max): its intersection through its placement (the solids' only:
+// csg.glsl, which follows, never calls itself).
+#define LANCER_LEAF_CASE(NAME, name, Type, type, traits)                                     \
+    case SHAPE_##NAME:                                                                        \
+        hit = SCENE_HAS_##NAME && ((traits) & SHAPE_SOLID) != 0u &&                            \
+              name##_intersect(p, ray, t_min * k, t_max * k, t_hit, uv, error);                \
+        break;
+// CSG is no solid: its row of the switch calls this instead of itself (GLSL has no recursion).
+bool csg_is_no_leaf(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
+    return false;
+}
+#define csg_intersect csg_is_no_leaf
+bool leaf_hit(Primitive p, Ray world_ray, float t_min, float t_max, out float t_hit, out vec2 uv) {
+    uv = vec2(0.0);
+    float error = 0.0, k;
+    Ray ray = primitive_ray(p, world_ray, k);
+    bool hit = false;
+    switch (p.type) {
+        LANCER_SHAPES(LANCER_LEAF_CASE)
+    }
+    if (OBJECT_SPACE_SHAPES) t_hit = t_hit / k;
+    return hit;
+}
+#undef LANCER_LEAF_CASE
+#undef csg_intersect
+
+#include "shapes/csg.glsl"
+
 // uv: the surface's own parameters at the hit, for shapes that have them; error: the error bound
 // of a Bezier or implicit hit, which only their search knows (primitive_normal completes the
 // others'). Only families the scene has are compiled in (lavapipe runs every case of a switch,
@@ -382,7 +410,9 @@ bool closest_hit(Ray ray, float t_min, uint grid, out Hit hit) {
     hit.primitive = best.prim;
     hit.uv = best.uv;
     hit.error = best.error;
-    hit.normal = primitive_normal(best.prim, ray, best.t, ray.origin + best.t * ray.dir, best.uv, hit.error);
+    // A CSG hit is its leaf's: shaded with the leaf's normal, material and texture.
+    if (SCENE_HAS_CSG && primitive_at(best.prim).type == SHAPE_CSG) hit.primitive = csg_leaf_hit(ray, best.uv, hit.uv);
+    hit.normal = primitive_normal(hit.primitive, ray, best.t, ray.origin + best.t * ray.dir, hit.uv, hit.error);
     return true;
 }
 

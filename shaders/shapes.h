@@ -10,6 +10,10 @@
 //                    BVH, in loops of their own, with a box around each family;
 //   SHAPE_SHEET      no inside: refraction passes it as a thin pane instead of entering a medium;
 //   SHAPE_GENERATED  its GLSL comes from the scene's expressions (surface_functions.glsl);
+//   SHAPE_SOLID      convex and closed (a plane: the half-space behind its normal), so that its
+//                    inside along any line is one interval, from its first hit from -infinity to
+//                    the reversed ray's: it may be an operand of CSG
+//                    (shaders/shapes/csg.glsl; a cone only when capped, as its reader checks);
 //   SHAPE_KEEPS_LOCALS  lavapipe's code for it is faster where the host leaves the SPIR-V's
 //                    local variables alone (gpu/shaders/spirv_specialize.hpp: the Bezier clipper 7-9%,
 //                    the parametric search 2-5%).
@@ -17,16 +21,17 @@
 #define LANCER_SHAPES_H
 
 #define LANCER_SHAPES(X)                                                              \
-    X(SPHERE, sphere, Sphere, 0, SHAPE_BOUNDED | SHAPE_CHEAP)                         \
-    X(PLANE, plane, Plane, 1, SHAPE_CHEAP)                                            \
+    X(SPHERE, sphere, Sphere, 0, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SOLID)           \
+    X(PLANE, plane, Plane, 1, SHAPE_CHEAP | SHAPE_SOLID)                              \
     X(RECTANGLE, rectangle, Rectangle, 2, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SHEET)  \
-    X(BOX, box, Box, 3, SHAPE_BOUNDED | SHAPE_CHEAP)                                  \
+    X(BOX, box, Box, 3, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SOLID)                    \
     X(BEZIER, bezier, BezierSurface, 4, SHAPE_BOUNDED | SHAPE_KEEPS_LOCALS)                              \
     X(PARAMETRIC, parametric, ParametricObject, 5, SHAPE_BOUNDED | SHAPE_GENERATED | SHAPE_KEEPS_LOCALS) \
     X(IMPLICIT, implicit, ImplicitObject, 6, SHAPE_BOUNDED | SHAPE_GENERATED)                            \
     X(DISC, disc, Disc, 7, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SHEET)                                    \
-    X(CONE, cone, Cone, 8, SHAPE_BOUNDED | SHAPE_CHEAP)                                                  \
-    X(TORUS, torus, Torus, 9, SHAPE_BOUNDED)
+    X(CONE, cone, Cone, 8, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SOLID)                                    \
+    X(TORUS, torus, Torus, 9, SHAPE_BOUNDED)                                                             \
+    X(CSG, csg, Csg, 10, SHAPE_BOUNDED)
 
 #ifdef __cplusplus
 #include <cstdint>
@@ -41,6 +46,17 @@ LANCER_SHAPE_CONST SHAPE_CHEAP = 2u;
 LANCER_SHAPE_CONST SHAPE_SHEET = 4u;
 LANCER_SHAPE_CONST SHAPE_GENERATED = 8u;
 LANCER_SHAPE_CONST SHAPE_KEEPS_LOCALS = 16u;
+LANCER_SHAPE_CONST SHAPE_SOLID = 32u;
+
+// A CSG program (Csg::program, shaders/shapes/csg.glsl): postfix over whether a point is inside
+// each of the node's leaves. An op is CSG_LEAF | k << 4 (push leaf k's inside) or one of the
+// others (pop b, pop a, push a AND b, a OR b, a AND NOT b; or flip the top).
+LANCER_SHAPE_CONST CSG_LEAF = 0u;
+LANCER_SHAPE_CONST CSG_AND = 1u;
+LANCER_SHAPE_CONST CSG_OR = 2u;
+LANCER_SHAPE_CONST CSG_AND_NOT = 3u;
+LANCER_SHAPE_CONST CSG_NOT = 4u;
+LANCER_SHAPE_CONST CSG_MAX_LEAVES = 32u;  // the insides are the bits of a uint
 
 #define LANCER_SHAPE_TYPE(NAME, name, Type, type, traits) LANCER_SHAPE_CONST SHAPE_##NAME = type;
 LANCER_SHAPES(LANCER_SHAPE_TYPE)

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "accel/aabb.hpp"
+#include "scene/aabb.hpp"
 
 namespace lancer {
 

@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "accel/shape_bounds.hpp"
+#include "scene/shape_bounds.hpp"
 #include "core/constants.hpp"
 #include "cpu/appearance.hpp"
 #include "cpu/lights.hpp"
@@ -125,7 +125,9 @@ bool Tracer::closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) c
             hit.normal = h->normal;
             hit.uv = h->uv;
             hit.part = h->part;
-            hit.object = &object;
+            // A CSG hit is its leaf's: shaded with the leaf's material, placement and texture.
+            const auto* csg = std::get_if<Csg>(&object.shape);
+            hit.object = csg ? &csg->leaves[static_cast<std::size_t>(h->part)] : &object;
         }
         return true;
     });

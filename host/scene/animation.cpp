@@ -31,6 +31,11 @@ void translate(Shape& shape, const dvec3& offset) {
             c.cap += d;
         }
         void operator()(Torus& o) const { o.center += d; }
+        void operator()(Csg& c) const {
+            for (Object& leaf : c.leaves) translate(leaf, d);
+            c.lo += d;
+            c.hi += d;
+        }
         void operator()(Box& b) const {
             b.min += d;
             b.max += d;

@@ -20,6 +20,7 @@
 #include "scene/parse_optics.hpp"
 #include "scene/parse_shapes.hpp"
 #include "scene/placement.hpp"
+#include "scene/shape_bounds.hpp"
 #include "scene/string_position.hpp"
 #include "scene/toml_reader.hpp"
 #include "scene/transform.hpp"
@@ -205,6 +206,29 @@ struct ObjectReading {
 
     void entry(TableReader& t, std::uint32_t material, const glm::dmat4& parent, int depth, const std::string& group = "") {
         const std::string type = t.required_string("type");
+        if (csg_operators().count(type)) {
+            if (depth > 0 && t.has("name"))
+                t.fail("name", "a group's member cannot have its own name: an animation moves the whole group, by its name");
+            Object o;
+            o.where = t.location();
+            o.name = depth > 0 ? group : t.string("name", "");
+            Csg csg;
+            operand(t, csg, material, parent, depth);
+            const std::optional<Aabb> box = csg_bounds(csg.leaves, csg.program);
+            if (!box)
+                t.fail("type", fmt::format("this {} is unbounded (a half-space, or an inverse, reaches to infinity): "
+                                           "intersect it with a bounded solid", type));
+            if (box->empty())
+                t.fail("type", fmt::format("this {} is empty: the boxes of the solids it intersects do not overlap", type));
+            csg.lo = box->lo;
+            csg.hi = box->hi;
+            o.material = csg.leaves.front().material;  // what shadow rays through it see of it
+            o.shape = std::move(csg);
+            scene.objects.push_back(std::move(o));
+            if (scene.objects.size() > static_cast<std::size_t>(limits::kMaxObjects))
+                t.fail("type", fmt::format("too many objects with the groups' members (the limit is {})", limits::kMaxObjects));
+            return;
+        }
         if (type != "group") {
             totals.before(t, type);
             if (depth > 0 && t.has("name"))
@@ -236,6 +260,54 @@ struct ObjectReading {
             entry(m, group_material, to_world, depth + 1, name);
         }
         t.finish();
+    }
+
+    // POV-Ray's CSG words and the operator that joins each operand after the first to the ones
+    // before it (inside a CSG object a group is a union, as POV-Ray's is).
+    static const std::map<std::string, std::uint32_t, std::less<>>& csg_operators() {
+        static const std::map<std::string, std::uint32_t, std::less<>> ops = {
+            {"intersection", CSG_AND}, {"difference", CSG_AND_NOT}, {"merge", CSG_OR}};
+        return ops;
+    }
+
+    // One operand of a CSG object (a solid, or a CSG object or group of them) into `csg`: its
+    // leaves and the program that combines them; `inverse = true` takes its outside instead.
+    void operand(TableReader& t, Csg& csg, std::uint32_t material, const glm::dmat4& parent, int depth) {
+        const std::string type = t.required_string("type");
+        const bool inverse = t.boolean("inverse", false);
+        if (depth == kMaxGroupDepth) t.fail("type", fmt::format("groups nest at most {} deep", kMaxGroupDepth));
+        auto joined = csg_operators().find(type);
+        if (joined != csg_operators().end() || type == "group") {
+            const std::uint32_t join = type == "group" ? CSG_OR : joined->second;
+            const glm::dmat4 to_world = read_transform(t, parent);
+            const std::uint32_t own = read_material_reference(t, materials, material);
+            const toml::array* members = t.array("objects");
+            if (!members || members->empty())
+                t.fail(members ? "objects" : "type", fmt::format("{} needs `objects`: a non-empty list of solids (tables)", type));
+            std::size_t k = 0;
+            for (const toml::node& node : *members) {
+                const toml::table* member = node.as_table();
+                if (!member) throw SceneError(location_of(node, t.file()), "a " + type + "'s objects must be tables");
+                TableReader m(*member, t.file(), describe_object(fmt::format("{} operand {}", t.what(), k + 1), *member));
+                if (m.has("name")) m.fail("name", "a CSG operand cannot have its own name: an animation moves the whole object");
+                operand(m, csg, own, to_world, depth + 1);
+                if (k++ > 0) csg.program.push_back(join);
+            }
+            t.finish();
+        } else {
+            if (csg.leaves.size() == CSG_MAX_LEAVES)
+                t.fail("type", fmt::format("a CSG object combines at most {} solids", CSG_MAX_LEAVES));
+            Object leaf = read_object(t, type, materials, material, parent);
+            const auto* cone = std::get_if<Cone>(&leaf.shape);
+            if (!shape_has(shape_type(leaf.shape), SHAPE_SOLID) || (cone && cone->open))
+                t.fail(cone ? "open" : "type",
+                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, plane as "
+                                   "the half-space behind its normal) and CSG objects and groups of them",
+                                   cone ? "an open " : "a ", type));
+            csg.program.push_back(CSG_LEAF | std::uint32_t(csg.leaves.size()) << 4);
+            csg.leaves.push_back(std::move(leaf));
+        }
+        if (inverse) csg.program.push_back(CSG_NOT);
     }
 };
 

@@ -97,6 +97,7 @@ struct Absorber {
         o.v_axis = glm::normalize(rotation * o.v_axis);
         return true;
     }
+    bool operator()(Csg&) const { return true; }  // its reader placed each leaf
     // Their readers applied the transform (exactly: control points, the surfaces' own maps).
     bool operator()(BezierSurface&) const { return true; }
     bool operator()(ParametricObject&) const { return true; }

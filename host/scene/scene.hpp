@@ -285,7 +285,20 @@ struct Torus {
     dvec3 v_axis{0.0, 0.0, 1.0};
 };
 
-using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus>;
+struct Object;
+
+// Constructive solid geometry: POV-Ray's intersection, difference and merge (docs/scene-format.md,
+// "CSG"). `leaves` are solids (shapes with SHAPE_SOLID: convex and closed, or half-spaces), each
+// an object with its own placement and material; `program` combines whether a point is inside
+// each (postfix: the CSG_* ops of shapes.h). The surface is where the combination's value changes
+// along a ray; each of its points is a leaf's, shaded with that leaf's material and texture.
+struct Csg {
+    std::vector<Object> leaves;
+    std::vector<std::uint32_t> program;
+    dvec3 lo{0.0}, hi{0.0};  // the world box the combination lies in
+};
+
+using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus, Csg>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \

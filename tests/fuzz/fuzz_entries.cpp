@@ -16,7 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include "accel/bvh.hpp"
-#include "accel/shape_bounds.hpp"
+#include "scene/shape_bounds.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/shapes/shapes.hpp"
 #include "gpu/packing/scene_packing.hpp"
@@ -135,6 +135,13 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require(std::isfinite(s.cap_radius) && s.cap_radius >= 0.0, when, ": cone cap radius");
                     require(s.base_radius > 0.0 || s.cap_radius > 0.0, when, ": cone radii");
                     require_finite(s.u_axis, when, ": cone texture axis");
+                } else if constexpr (std::is_same_v<T, Csg>) {
+                    require(!s.leaves.empty() && s.leaves.size() <= CSG_MAX_LEAVES, when, ": CSG leaves");
+                    require_finite(s.lo, when, ": CSG box");
+                    require_finite(s.hi, when, ": CSG box");
+                    for (const Object& leaf : s.leaves)
+                        require(shape_has(shape_type(leaf.shape), SHAPE_SOLID) && leaf.material < scene.materials.size(), when,
+                                ": CSG leaf");
                 } else if constexpr (std::is_same_v<T, Torus>) {
                     require_finite(s.center, when, ": torus");
                     require_finite(s.axis, when, ": torus axis");

@@ -11,7 +11,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "accel/shape_bounds.hpp"
+#include "scene/shape_bounds.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "scene/camera.hpp"
 #include "support/rational_patches.hpp"

@@ -38,7 +38,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "accel/shape_bounds.hpp"
+#include "scene/shape_bounds.hpp"
 #include "gpu/packing/float_anchor.hpp"
 #include "gpu/packing/scene_packing.hpp"
 #include "gpu/shaders/surface_codegen.hpp"

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "accel/shape_bounds.hpp"
+#include "scene/shape_bounds.hpp"
 
 namespace lancer::test {
 namespace {

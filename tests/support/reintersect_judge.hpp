@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-#include "accel/aabb.hpp"
+#include "scene/aabb.hpp"
 #include "cpu/shapes/shapes.hpp"
 #include "scene/scene.hpp"
 

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "accel/shape_bounds.hpp"
+#include "scene/shape_bounds.hpp"
 #include "cpu/shapes/shapes.hpp"
 #include "scene/animation.hpp"
 #include "support/test_support.hpp"

@@ -55,6 +55,10 @@ struct ImplicitRoot {
 std::vector<ImplicitRoot> implicit_roots(const surface::ImplicitSurface& s, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const ImplicitObject& o, const Ray& ray, double t_min, double t_max);
 
+// CSG (csg.cpp): the nearest point of the combination's surface, a leaf's hit (part: which leaf;
+// the normal and (u, v) the leaf's there).
+std::optional<SurfaceHit> intersect(const Csg& c, const Ray& ray, double t_min, double t_max);
+
 // An object's nearest hit: its shape's, carried through its placement where the shape keeps its
 // own coordinates (placed.cpp); the normal is the world's.
 std::optional<SurfaceHit> intersect(const Object& o, const Ray& ray, double t_min, double t_max);

@@ -12,7 +12,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "accel/aabb.hpp"
+#include "scene/aabb.hpp"
 #include "gpu/layout.hpp"
 
 namespace lancer::gpu {

@@ -9,7 +9,7 @@
 #include <span>
 #include <utility>
 
-#include "accel/aabb.hpp"
+#include "scene/aabb.hpp"
 #include "gpu/layout.hpp"
 
 namespace lancer::gpu {

@@ -6,7 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "accel/shape_bounds.hpp"
+#include "scene/shape_bounds.hpp"
 #include "scene/animation.hpp"
 #include "scene/camera.hpp"
 #include "scene/placement.hpp"

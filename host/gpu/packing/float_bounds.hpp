@@ -1,7 +1,7 @@
 #pragma once
 // Doubles to the floats the shader reads: vectors, and bounds rounded outward so that a float
 // box still holds what its double box held.
-#include "accel/aabb.hpp"
+#include "scene/aabb.hpp"
 #include "core/float_rounding.hpp"
 #include "gpu/layout.hpp"
 

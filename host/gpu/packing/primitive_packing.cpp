@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
-#include "accel/shape_bounds.hpp"
+#include "scene/shape_bounds.hpp"
 #include "core/finite.hpp"
 #include "gpu/packing/float_bounds.hpp"
 #include "surface/parametric_cells.hpp"
@@ -97,6 +97,27 @@ struct PrimitivePacker {
     }
     // A torus is compact (its box is R + r about the centre), so it is packed by its centre, as
     // a sphere: p0 = (centre, major radius), p1 = (unit axis, minor radius), p2 = (texture u axis, 0).
+    // One primitive with the combination's box; its leaves are packed apart (out.csg_leaves),
+    // each with its own frame (out.csg_leaf_frames + its number among the scene's leaves).
+    void operator()(const Csg& c) {
+        CsgNode node{};
+        node.first_leaf = static_cast<uint>(out.csg_leaves.size());
+        node.leaf_count = static_cast<uint>(c.leaves.size());
+        node.first_op = static_cast<uint>(out.csg_ops.size());
+        node.op_count = static_cast<uint>(c.program.size());
+        out.csg_ops.insert(out.csg_ops.end(), c.program.begin(), c.program.end());
+        for (const Object& leaf : c.leaves) {
+            std::vector<PrimitiveWithBox> one;
+            const bool own_space = leaf.placement && leaf.placement->shape_in_object_space;
+            const SpherePacking leaf_spheres{spheres.by_near_points, own_space ? leaf.placement->object_point(spheres.eye) : spheres.eye};
+            const uint frame = out.csg_leaf_frames + static_cast<uint>(out.csg_leaves.size());
+            pack_object(leaf.shape, leaf.material, frame, leaf_spheres, out, one);
+            out.csg_leaves.push_back(one.at(0).first);
+        }
+        const auto index = static_cast<uint>(out.csg_nodes.size());
+        out.csg_nodes.push_back(node);
+        add({SHAPE_CSG, material, index, object, v4(c.lo), v4(c.hi), {}}, Aabb{c.lo, c.hi});
+    }
     void operator()(const Torus& o) {
         add({SHAPE_TORUS, material, 0, object, v4(o.center, o.major_radius), v4(o.axis, o.minor_radius), v4(o.u_axis)},
             shape_bounds(o));

@@ -4,7 +4,7 @@
 #include <bit>
 #include <optional>
 
-#include "accel/shape_bounds.hpp"
+#include "scene/shape_bounds.hpp"
 
 #include "gpu/packing/float_anchor.hpp"
 #include "gpu/packing/float_bounds.hpp"
@@ -27,6 +27,15 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     std::vector<PrimitiveWithBox> primitives;
     const SpherePacking spheres = sphere_packing(scene);
     bool placed = false, object_space = false;
+    packed.csg_leaf_frames = static_cast<uint>(scene.objects.size());
+    std::vector<const Object*> leaves;  // every CSG leaf, in the order their frames follow the objects'
+    for (const Object& o : scene.objects)
+        if (const auto* csg = std::get_if<Csg>(&o.shape))
+            for (const Object& leaf : csg->leaves) {
+                leaves.push_back(&leaf);
+                placed |= leaf.placement.has_value();
+                object_space |= leaf.placement && leaf.placement->shape_in_object_space;
+            }
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         placed |= o.placement.has_value();
@@ -43,8 +52,10 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         for (std::size_t k = first; k < primitives.size(); ++k)
             if (primitives[k].second) primitives[k].second = object_bounds(o);
     }
-    if (placed)
+    if (placed) {
         for (const Object& o : scene.objects) packed.object_frames.push_back(object_frame(o, packed.anchor));
+        for (const Object* leaf : leaves) packed.object_frames.push_back(object_frame(*leaf, packed.anchor));
+    }
     // With frames, checkers and patterns see the object's own coordinates, not the GPU's.
     pack_materials(placed ? world : scene, placed ? dvec3(0.0) : packed.anchor, packed);
     for (const lancer::Light& l : scene.lights) packed.lights.push_back(pack_light(l));
@@ -68,6 +79,10 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         packed.grid_entries = std::move(grids.entries);
     }
     packed.primitives = std::move(plan.primitives);
+    // The CSG leaves after every primitive the tracer traverses (pack_frame's primitive_count).
+    for (CsgNode& node : packed.csg_nodes) node.first_leaf += static_cast<uint>(packed.primitives.size());
+    packed.primitives.insert(packed.primitives.end(), packed.csg_leaves.begin(), packed.csg_leaves.end());
+    packed.csg_leaf_count = packed.csg_leaves.size();
     packed.unbounded_count = plan.unbounded_count;
     packed.nodes = std::move(plan.nodes);
     packed.families = plan.families;
@@ -75,6 +90,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
 
     ShaderFeatures& f = packed.features;
     f.scene_shapes = plan.flags.scene_shapes;
+    for (const Primitive& leaf : packed.csg_leaves) f.scene_shapes |= 1u << leaf.type;
     f.has_bvh = plan.flags.has_bvh;
     f.bvh_has_analytic = plan.flags.bvh_has_analytic;
     f.boxed_families = plan.flags.boxed_families;
@@ -142,16 +158,17 @@ FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {
     f.height = static_cast<uint>(r.height);
     f.samples = static_cast<uint>(r.samples);
     f.max_depth = static_cast<uint>(r.max_depth);
-    f.primitive_count = static_cast<uint>(packed.primitives.size());
+    const std::size_t traversed = packed.primitives.size() - packed.csg_leaf_count;  // the CSG leaves follow
+    f.primitive_count = static_cast<uint>(traversed);
     f.light_count = static_cast<uint>(packed.lights.size());
     f.node_count = static_cast<uint>(packed.nodes.size());
     f.unbounded_count = packed.unbounded_count;
     // Where each family of the unbounded primitives (sorted by type) ends, and the family boxes
     // (family_boxes.hpp): two per family, the second unused unless it is split.
-    std::size_t i = packed.primitives.size() - packed.unbounded_count;
+    std::size_t i = traversed - packed.unbounded_count;
     for (uint type = 0; type < SHAPE_COUNT; ++type) {
         const uint begin = static_cast<uint>(i);
-        while (i < packed.primitives.size() && packed.primitives[i].type <= type) ++i;
+        while (i < traversed && packed.primitives[i].type <= type) ++i;
         f.family_end[type / 4][type % 4] = static_cast<uint>(i);
         f.family_split[type / 4][type % 4] = begin + packed.families[type].split_at;
         for (int h = 0; h < 2; ++h) {

@@ -37,6 +37,12 @@ struct PackedScene {
     // and the mirror's grids): the rest of every array is the same for any camera.
     std::size_t view_grid_cells = 0, view_grid_entries = 0;
     uint photon_count = 0;  // photons per pass, with photon mapping
+    // CSG leaves: packed by pack_object into csg_leaves, then stored at the end of primitives,
+    // after every primitive the tracer traverses (csg_leaf_count of them). A leaf's `object` is
+    // its frame: scene objects' frames come first, then the leaves' from csg_leaf_frames.
+    std::vector<Primitive> csg_leaves;
+    uint csg_leaf_frames = 0;
+    std::size_t csg_leaf_count = 0;
     // The scene's shape families and shading features: scene_shapes, has_bvh, has_textures, ...
     // (output_hits and check_loop_limit are the renderer's to set).
     ShaderFeatures features;

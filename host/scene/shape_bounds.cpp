@@ -1,4 +1,4 @@
-#include "accel/shape_bounds.hpp"
+#include "scene/shape_bounds.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -47,6 +47,7 @@ struct BoundsOf {
             reach[i] = (o.major_radius * std::sqrt(std::max(0.0, 1.0 - o.axis[i] * o.axis[i])) + o.minor_radius) * (1.0 + 1e-15);
         return Aabb{o.center - reach, o.center + reach};
     }
+    std::optional<Aabb> operator()(const Csg& c) const { return Aabb{c.lo, c.hi}; }
     std::optional<Aabb> operator()(const ParametricObject& p) const { return Aabb{p.bounds_lo, p.bounds_hi}; }
     std::optional<Aabb> operator()(const ImplicitObject& o) const {
         Aabb b;
@@ -67,6 +68,31 @@ struct BoundsOf {
 }  // namespace
 
 std::optional<Aabb> shape_bounds(const Shape& shape) { return std::visit(BoundsOf{}, shape); }
+
+std::optional<Aabb> csg_bounds(const std::vector<Object>& leaves, const std::vector<std::uint32_t>& program) {
+    std::vector<std::optional<Aabb>> stack;  // nullopt: everywhere
+    for (std::uint32_t op : program) {
+        if ((op & 15u) == CSG_LEAF) {
+            stack.push_back(object_bounds(leaves.at(op >> 4)));
+            continue;
+        }
+        if (op == CSG_NOT) {
+            stack.back() = std::nullopt;  // the outside of a bounded solid is unbounded
+            continue;
+        }
+        const std::optional<Aabb> b = stack.back();
+        stack.pop_back();
+        std::optional<Aabb>& a = stack.back();
+        if (op == CSG_OR) {
+            if (a && b) a->extend(*b);
+            else a = std::nullopt;
+        } else if (op == CSG_AND) {
+            if (!a) a = b;
+            else if (b) a = Aabb{glm::max(a->lo, b->lo), glm::min(a->hi, b->hi)};
+        }  // CSG_AND_NOT: within a
+    }
+    return stack.at(0);
+}
 
 std::optional<Aabb> object_bounds(const Object& o) {
     std::optional<Aabb> box = shape_bounds(o.shape);

@@ -1,0 +1,174 @@
+// CSG in the CPU reference against brute force: whether points are inside the combination,
+// from each solid's own inside (point tests written here, apart from the intersections), marched
+// along random rays; and the loader's refusals.
+#include <cmath>
+#include <random>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "cpu/shapes/shapes.hpp"
+#include "support/test_support.hpp"
+
+namespace lancer {
+namespace {
+
+bool leaf_contains(const Object& leaf, dvec3 p) {
+    if (leaf.placement && leaf.placement->shape_in_object_space) p = leaf.placement->object_point(p);
+    if (const auto* s = std::get_if<Sphere>(&leaf.shape)) return glm::length(p - s->center) < s->radius;
+    if (const auto* b = std::get_if<Box>(&leaf.shape)) return glm::all(glm::lessThan(b->min, p)) && glm::all(glm::lessThan(p, b->max));
+    if (const auto* h = std::get_if<Plane>(&leaf.shape)) return glm::dot(p - h->point, h->normal) < 0.0;
+    if (const auto* c = std::get_if<Cone>(&leaf.shape)) {
+        const dvec3 axis = c->cap - c->base;
+        const double z = glm::dot(p - c->base, axis) / glm::dot(axis, axis);
+        const double radius = c->base_radius + z * (c->cap_radius - c->base_radius);
+        return z > 0.0 && z < 1.0 && glm::length(p - c->base - z * axis) < radius;
+    }
+    ADD_FAILURE() << "no point test for this solid";
+    return false;
+}
+
+bool csg_contains(const Csg& c, const dvec3& p) {
+    std::vector<bool> stack;
+    for (std::uint32_t op : c.program) {
+        if ((op & 15u) == CSG_LEAF) {
+            stack.push_back(leaf_contains(c.leaves[op >> 4], p));
+        } else if (op == CSG_NOT) {
+            stack.back() = !stack.back();
+        } else {
+            const bool b = stack.back();
+            stack.pop_back();
+            const bool a = stack.back();
+            stack.back() = op == CSG_AND ? (a && b) : op == CSG_OR ? (a || b) : (a && !b);
+        }
+    }
+    return stack.at(0);
+}
+
+const char* const kStage = R"(
+    [camera]
+    eye = [0, 0, -6]
+    look_at = [0, 0, 0]
+    [material.a]
+    color = [1, 0, 0]
+    [material.b]
+    color = [0, 0, 1]
+)";
+
+// Each ray's first boundary of the combination beyond t = 0.01, by the reference, must be where
+// points step from one side to the other (just before and after it), and no change of sides
+// may lie before it (marched in steps of 5e-4); where the reference finds none, none is seen.
+void expect_membership_agrees(const std::string& object) {
+    const Scene scene = test::scene_from_text(std::string(kStage) + object);
+    const Csg& csg = std::get<Csg>(scene.objects.at(0).shape);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    int hits = 0;
+    for (int i = 0; i < 300; ++i) {
+        const dvec3 target(1.3 * unit(rng), 1.3 * unit(rng), 1.3 * unit(rng));
+        dvec3 dir = glm::normalize(dvec3(unit(rng), unit(rng), unit(rng)));
+        const cpu::Ray ray{target - 3.0 * dir, dir};
+        const auto hit = cpu::intersect(csg, ray, 0.01, 6.0);
+        const double t_end = hit ? hit->t : 6.0;
+        const bool start = csg_contains(csg, ray.origin + 0.01 * ray.dir);
+        for (double t = 0.01; t + 5e-4 < t_end - 1e-9; t += 5e-4) {
+            ASSERT_EQ(csg_contains(csg, ray.origin + (t + 5e-4) * ray.dir), start)
+                << "ray " << i << ": the inside changes near t = " << t << " before the reference's hit at " << t_end;
+        }
+        if (!hit) continue;
+        ++hits;
+        const double eps = 1e-7 * (1.0 + hit->t);
+        EXPECT_NE(csg_contains(csg, ray.origin + (hit->t - eps) * ray.dir), csg_contains(csg, ray.origin + (hit->t + eps) * ray.dir))
+            << "ray " << i << ": no change of sides at the reference's hit t = " << hit->t;
+        EXPECT_NEAR(glm::length(hit->normal), 1.0, 1e-9);
+    }
+    EXPECT_GT(hits, 100);  // the rays do meet it
+}
+
+TEST(Csg, ADieIsABoxRoundedByASphereLessItsPips) {
+    expect_membership_agrees(R"(
+        [[object]]
+        type = "difference"
+        transform = { rotate = [10, 25, 5] }
+        objects = [
+          { type = "intersection", objects = [ { type = "box", min = [-1, -1, -1], max = [1, 1, 1] },
+                                               { type = "sphere", center = [0, 0, 0], radius = 1.38 } ] },
+          { type = "sphere", center = [0, 0, -1.06], radius = 0.25, material = "b" },
+          { type = "sphere", center = [1.06, 0.5, 0.5], radius = 0.25, material = "b" },
+          { type = "sphere", center = [1.06, -0.5, -0.5], radius = 0.25, material = "b" },
+        ]
+    )");
+}
+
+TEST(Csg, HalfSpacesStretchedSolidsMergesAndInverses) {
+    expect_membership_agrees(R"(
+        [[object]]
+        type = "intersection"
+        objects = [
+          { type = "merge", objects = [ { type = "sphere", center = [0, 0, 0], radius = 1, transform = { scale = [1.4, 0.7, 1] } },
+                                        { type = "cylinder", base_point = [0, -1.2, 0], cap_point = [0, 1.2, 0], radius = 0.5 } ] },
+          { type = "plane", normal = [1, 1, 0], point = [0.3, 0, 0] },
+          { type = "box", min = [-0.3, -0.3, -2], max = [0.3, 0.3, 2], inverse = true },
+          { type = "cone", base_point = [0, 0, -1.5], base_radius = 1.6, cap_point = [0, 0, 1.5], cap_radius = 0.4 },
+        ]
+    )");
+}
+
+TEST(Csg, AHitIsTheLeafsWithItsMaterial) {
+    const Scene scene = test::scene_from_text(std::string(kStage) + R"(
+        [[object]]
+        type = "difference"
+        material = "a"
+        objects = [ { type = "sphere", center = [0, 0, 0], radius = 1 },
+                    { type = "box", min = [-2, -2, -2], max = [2, 2, -0.5], material = "b" } ]
+    )");
+    const Csg& csg = std::get<Csg>(scene.objects.at(0).shape);
+    // Along z from in front: the box's cut at z = -0.5 (the blue leaf), facing the ray.
+    const auto hit = cpu::intersect(csg, cpu::Ray{dvec3(0, 0, -5), dvec3(0, 0, 1)}, 0.0, 100.0);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->t, 4.5, 1e-12);
+    EXPECT_EQ(hit->part, 1);
+    EXPECT_EQ(scene.materials[csg.leaves[1].material].name, "b");
+    EXPECT_EQ(scene.materials[csg.leaves[0].material].name, "a");  // inherited
+    // Off the cut, the sphere's far side from inside the cut: none nearer than the sphere's back.
+    const auto back = cpu::intersect(csg, cpu::Ray{dvec3(0, 0, 0), dvec3(0, 0, 1)}, 0.0, 100.0);
+    ASSERT_TRUE(back);
+    EXPECT_NEAR(back->t, 1.0, 1e-12);
+    EXPECT_EQ(back->part, 0);
+}
+
+void expect_refused(const std::string& objects, const std::string& words) {
+    try {
+        test::scene_from_text(std::string(kStage) + objects);
+        ADD_FAILURE() << "accepted:" << objects;
+    } catch (const SceneError& e) {
+        EXPECT_GT(e.where().line, 8) << e.what();
+        EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+}
+
+TEST(Csg, WhatCannotBeASolidIsRefusedWithWhy) {
+    const std::string sphere = R"({ type = "sphere", center = [0, 0, 0], radius = 1 })";
+    expect_refused("[[object]]\ntype = \"difference\"\nobjects = [" + sphere +
+                       ", { type = \"disc\", center = [0, 0, 0], normal = [0, 1, 0], radius = 1 }]\n",
+                   "a disc has no inside");
+    expect_refused("[[object]]\ntype = \"intersection\"\nobjects = [" + sphere +
+                       ", { type = \"cylinder\", base_point = [0, 0, 0], cap_point = [0, 1, 0], radius = 1, open = true }]\n",
+                   "an open cylinder has no inside");
+    expect_refused("[[object]]\ntype = \"merge\"\nobjects = [" + sphere + ", { type = \"plane\", normal = [0, 1, 0] }]\n",
+                   "unbounded");
+    expect_refused("[[object]]\ntype = \"intersection\"\ninverse = true\nobjects = [" + sphere + "]\n", "unbounded");
+    expect_refused("[[object]]\ntype = \"intersection\"\nobjects = [" + sphere +
+                       R"(, { type = "sphere", center = [5, 0, 0], radius = 1 }])" + "\n",
+                   "empty");
+    expect_refused("[[object]]\ntype = \"difference\"\nobjects = []\n", "needs `objects`");
+    expect_refused("[[object]]\ntype = \"difference\"\nobjects = [" + sphere.substr(0, sphere.size() - 2) + ", name = \"x\" }]\n",
+                   "cannot have its own name");
+    std::string many = "[[object]]\ntype = \"merge\"\nobjects = [";
+    for (int i = 0; i < 33; ++i) many += (i ? ", " : "") + sphere;
+    expect_refused(many + "]\n", "at most 32 solids");
+}
+
+}  // namespace
+}  // namespace lancer
