@@ -22,9 +22,11 @@ POV_SHAPES = {
 }
 
 # What lancer has, as POV-Ray words: its shapes, its exact surfaces (implicit polynomials and
-# equations, parametric surfaces, Bezier patches) and groups for union.
+# equations, parametric surfaces, Bezier patches), groups for union and its CSG. (A scene whose
+# CSG combines shapes lancer's CSG does not take yet, tori or isosurfaces, still counts: the
+# count is of words, as the figure.)
 LANCER = {
-    "sphere", "box", "plane", "disc", "cylinder", "cone", "torus", "union",
+    "sphere", "box", "plane", "disc", "cylinder", "cone", "torus", "union", "intersection", "difference", "merge",
     "bicubic_patch", "parametric", "isosurface", "poly", "polynomial", "quartic", "cubic", "quadric",
 }
 

@@ -51,11 +51,14 @@ TRANSLATED = {
     "cylinder": {"base_point", "cap_point", "radius", "open"},
     "cone": {"base_point", "base_radius", "cap_point", "cap_radius", "open"},
     "torus": {"center", "axis", "major_radius", "minor_radius"},
+    "disc": {"center", "normal", "radius", "hole_radius"},
     "bezier": {"file", "control_points", "patches", "transform", "subdivision"},
     "parametric": {"x", "y", "z", "u", "v", "params", "transform"},
     "implicit": {"function", "box", "params", "transform"},
 }
-OBJECT_KEYS = {"type", "material", "name"}
+OBJECT_KEYS = {"type", "material", "name", "transform"}
+# Groups and CSG: POV-Ray's union and its CSG words, with their operands in `objects`.
+COMPOUND = {"group": "union", "intersection": "intersection", "difference": "difference", "merge": "merge"}
 
 
 def check_keys(table, allowed, what):
@@ -112,6 +115,8 @@ def transform(t):
             out.append("rotate " + vec(s["rotate"]))
         if "translate" in s:
             out.append("translate " + vec(s["translate"]))
+        if "matrix" in s:
+            out.append("matrix <" + ", ".join("%.9g" % x for x in s["matrix"]) + ">")
     return " ".join(out)
 
 
@@ -397,46 +402,69 @@ def implicit(o, implicit_as, accuracy):
             f"  accuracy {accuracy:g} max_gradient {max_gradient(node, params, lo, hi):.6g} open\n")
 
 
-def objects(scene, base, torus_as, implicit_as="poly", accuracy=0.001):
-    out = []
-    for i, o in enumerate(scene.get("object", [])):
-        t = o["type"]
-        check_keys(o, TRANSLATED.get(t, set()) | OBJECT_KEYS, f"object {i + 1} ('{t}')")
-        if t == "sphere":
-            body = f"sphere {{ {vec(o['center'])}, {o['radius']:.9g}\n"
-        elif t == "plane":
-            n = o["normal"]
-            length = math.sqrt(sum(x * x for x in n))
-            n = [x / length for x in n]
-            d = sum(a * b for a, b in zip(n, o.get("point", [0, 0, 0])))
-            body = f"plane {{ {vec(n)}, {d:.9g}\n"
-        elif t == "rectangle":
-            c, eu, ev = o["corner"], o["edge_u"], o["edge_v"]
-            pts = [c, [a + b for a, b in zip(c, eu)], [a + b + d for a, b, d in zip(c, eu, ev)],
-                   [a + d for a, d in zip(c, ev)], c]
-            body = "polygon { 5, " + ", ".join(vec(p) for p in pts) + "\n"
-        elif t == "box":
-            body = f"box {{ {vec(o['min'])}, {vec(o['max'])}\n"
-        elif t == "cylinder":
-            opened = " open" if o.get("open", False) else ""
-            body = f"cylinder {{ {vec(o['base_point'])}, {vec(o['cap_point'])}, {o['radius']:.9g}{opened}\n"
-        elif t == "cone":
-            opened = " open" if o.get("open", False) else ""
-            body = (f"cone {{ {vec(o['base_point'])}, {o['base_radius']:.9g}, "
-                    f"{vec(o['cap_point'])}, {o['cap_radius']:.9g}{opened}\n")
-        elif t == "torus":
-            body = torus(o)
-        elif t == "bezier":
-            body = bezier(o, base)
-        elif t == "parametric":
-            body = analytic_torus(o) if torus_as == "analytic" else parametric(o)
-        elif t == "implicit":
-            body = implicit(o, implicit_as, accuracy)
-        else:
-            sys.exit(f"toml_to_pov: object type {t} is not supported")
+def shape_body(o, base, torus_as, implicit_as, accuracy):
+    t = o["type"]
+    if t == "sphere":
+        return f"sphere {{ {vec(o['center'])}, {o['radius']:.9g}\n"
+    if t == "plane":
+        n = o["normal"]
+        length = math.sqrt(sum(x * x for x in n))
+        n = [x / length for x in n]
+        d = sum(a * b for a, b in zip(n, o.get("point", [0, 0, 0])))
+        return f"plane {{ {vec(n)}, {d:.9g}\n"
+    if t == "rectangle":
+        c, eu, ev = o["corner"], o["edge_u"], o["edge_v"]
+        pts = [c, [a + b for a, b in zip(c, eu)], [a + b + d for a, b, d in zip(c, eu, ev)],
+               [a + d for a, d in zip(c, ev)], c]
+        return "polygon { 5, " + ", ".join(vec(p) for p in pts) + "\n"
+    if t == "disc":
+        return (f"disc {{ {vec(o['center'])}, {vec(o['normal'])}, {o['radius']:.9g}, "
+                f"{o.get('hole_radius', 0.0):.9g}\n")
+    if t == "box":
+        return f"box {{ {vec(o['min'])}, {vec(o['max'])}\n"
+    if t == "cylinder":
+        opened = " open" if o.get("open", False) else ""
+        return f"cylinder {{ {vec(o['base_point'])}, {vec(o['cap_point'])}, {o['radius']:.9g}{opened}\n"
+    if t == "cone":
+        opened = " open" if o.get("open", False) else ""
+        return (f"cone {{ {vec(o['base_point'])}, {o['base_radius']:.9g}, "
+                f"{vec(o['cap_point'])}, {o['cap_radius']:.9g}{opened}\n")
+    if t == "torus":
+        return torus(o)
+    if t == "bezier":
+        return bezier(o, base)
+    if t == "parametric":
+        return analytic_torus(o) if torus_as == "analytic" else parametric(o)
+    if t == "implicit":
+        return implicit(o, implicit_as, accuracy)
+    sys.exit(f"toml_to_pov: object type {t} is not supported")
+
+
+def object_text(o, scene, where, base, torus_as, implicit_as, accuracy, inherited=True):
+    """One object as POV-Ray text. A member of a group or CSG object without a material of its own
+    gets none here: POV-Ray gives it the enclosing object's texture, as lancer its material.
+    An operand's `inverse` is POV-Ray's."""
+    t = o["type"]
+    extra = {"inverse"} if not inherited else set()
+    if t in COMPOUND:
+        check_keys(o, {"type", "material", "name", "transform", "objects"} | extra, where)
+        members = [object_text(m, scene, f"{where} member {k + 1}", base, torus_as, implicit_as, accuracy, False)
+                   for k, m in enumerate(o["objects"])]
+        body = f"{COMPOUND[t]} {{\n" + "".join(members)
+    else:
+        check_keys(o, TRANSLATED.get(t, set()) | OBJECT_KEYS | extra, where)
+        body = shape_body(o, base, torus_as, implicit_as, accuracy)
+    texture = ""
+    if "material" in o or inherited:
         mat = scene.get("material", {}).get(o.get("material", ""), {})
-        out.append(body + f"  {pigment(mat)}\n  {finish(mat)}\n  {transform(o.get('transform'))}\n}}\n")
-    return out
+        texture = f"  {pigment(mat)}\n  {finish(mat)}\n"
+    flip = "  inverse\n" if o.get("inverse", False) else ""
+    return body + texture + flip + f"  {transform(o.get('transform'))}\n}}\n"
+
+
+def objects(scene, base, torus_as, implicit_as="poly", accuracy=0.001):
+    return [object_text(o, scene, f"object {i + 1} ('{o['type']}')", base, torus_as, implicit_as, accuracy)
+            for i, o in enumerate(scene.get("object", []))]
 
 
 def main():

@@ -16,11 +16,14 @@ Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
     // Checkers and patterns are fixed to their object: evaluated at its own coordinates.
     vec3 q = p;
     ObjectFrame frame;
+    bool world = true;  // the object's coordinates are the world's
     if (PLACED_OBJECTS) {
         frame = object_frame_at(primitive_at(hit.primitive).object);
         q = object_point(frame, p);
+        world = frame.world != 0u;
     }
-    Appearance a = Appearance(material_pigment(m, q), n);
+    // A checker without a transform keeps float's precision far from the origin through its phase.
+    Appearance a = Appearance(world ? material_pigment(m, p, m.checker_phase.xyz) : material_pigment(m, q, vec3(0.0)), n);
     if (SCENE_HAS_TEXTURES && m.texture_map != NO_MAP) a.pigment *= texture_color(m.texture_map, texture_uv(hit, p));
     if (!SCENE_HAS_PATTERNS) return a;
     // The colour pattern, then the bump, through one evaluation site: inlined twice, the noise

@@ -169,7 +169,8 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     SCALARS(float, stretch,    /* the most object -> world multiplies a length by (its inf-norm) */  \
             float, mean_scale, /* the cube root of its determinant: a bump's depth scales with it */ \
             uint, in_object_space, /* 1: the object's primitives are in its own coordinates */       \
-            uint, reserved)
+            uint, world) /* 1: no transform: the world's coordinates (the GPU's plus the anchor); its */ \
+                         /* checker is then the GPU point's, with the material's phase (precise far off) */
 
 // A CSG object (shaders/shapes/csg.glsl): its leaves are the primitives [first_leaf, first_leaf +
 // leaf_count), stored after every primitive the tracer traverses; its program the CSG_* ops

@@ -7,7 +7,8 @@
 #include "lights.glsl"
 #include "microfacet_material.glsl"
 
-vec3 material_pigment(Material m, vec3 p) {
+// p: the point in the GPU's coordinates (phase: the material's checker_phase) or in its object's (phase 0).
+vec3 material_pigment(Material m, vec3 p, vec3 phase) {
     if (m.pattern == PATTERN_CHECKER) {
         // Solid 3-D checker, first colour where floor(x)+floor(y)+floor(z) is even (as POV-Ray).
         // The 1e-4 bias keeps surfaces lying on integer planes (the floor at y = 0) on one side.
@@ -15,7 +16,7 @@ vec3 material_pigment(Material m, vec3 p) {
         // (a checker far finer than the scene) to int is undefined.
         // p is relative to the GPU's anchor near the camera: checker_phase puts it back in the
         // checker's period.
-        vec3 cell = floor((p + m.checker_phase.xyz) / m.checker_size + 1e-4);
+        vec3 cell = floor((p + phase) / m.checker_size + 1e-4);
         bool odd = mod(abs(cell.x + cell.y + cell.z), 2.0) == 1.0;
         return odd ? m.color2.rgb : m.color.rgb;
     }

@@ -12,6 +12,7 @@
 #include "cpu/cpu_renderer.hpp"
 #include "scene/animation.hpp"
 #include "scene/load_scene.hpp"
+#include "scene/placement.hpp"
 
 namespace lancer::test {
 
@@ -84,7 +85,7 @@ std::string save_comparison(const std::string& name, const Rgb8Image& a, const R
 }
 
 Scene moved_scene(Scene scene, const glm::dvec3& offset) {
-    for (Object& o : scene.objects) translate(o.shape, offset);
+    for (Object& o : scene.objects) translate(o, offset);
     for (Light& l : scene.lights) l.position += offset;
     scene.camera.eye += offset;
     scene.camera.look_at += offset;

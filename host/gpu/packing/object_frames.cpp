@@ -30,6 +30,7 @@ ObjectFrame object_frame(const Object& o, const dvec3& anchor) {
     f.stretch = std::nextafter(float(stretch), INFINITY);
     f.mean_scale = float(std::cbrt(std::abs(glm::determinant(glm::dmat3(to_world)))));
     f.in_object_space = o.placement && o.placement->shape_in_object_space ? 1u : 0u;
+    f.world = o.placement ? 0u : 1u;
     return f;
 }
 

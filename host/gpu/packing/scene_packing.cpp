@@ -56,8 +56,9 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         for (const Object& o : scene.objects) packed.object_frames.push_back(object_frame(o, packed.anchor));
         for (const Object* leaf : leaves) packed.object_frames.push_back(object_frame(*leaf, packed.anchor));
     }
-    // With frames, checkers and patterns see the object's own coordinates, not the GPU's.
-    pack_materials(placed ? world : scene, placed ? dvec3(0.0) : packed.anchor, packed);
+    // With frames, patterns see the object's own coordinates, not the GPU's (the checker of an
+    // object without a transform keeps its phase: placement.glsl).
+    pack_materials(placed ? world : scene, packed.anchor, packed);
     for (const lancer::Light& l : scene.lights) packed.lights.push_back(pack_light(l));
     if (scene.photons) {
         pack_emitters(scene, packed);
