@@ -37,7 +37,7 @@ import tomllib
 # rather than dropped: a benchmark must compare the same picture. ("subdivision" only changes how
 # lancer's GPU path organises the work; "name" only labels.)
 TRANSLATED = {
-    "top": {"render", "camera", "ambient", "light", "material", "object"},
+    "top": {"render", "camera", "ambient", "light", "material", "object", "declare"},
     "render": {"width", "height", "samples", "max_depth", "background"},
     "camera": {"eye", "look_at", "up", "fov"},
     "ambient": {"color"},
@@ -446,7 +446,10 @@ def object_text(o, scene, where, base, torus_as, implicit_as, accuracy, inherite
     An operand's `inverse` is POV-Ray's."""
     t = o["type"]
     extra = {"inverse"} if not inherited else set()
-    if t in COMPOUND:
+    if t == "object":  # a placement of a declared object
+        check_keys(o, {"type", "of", "material", "name", "transform"} | extra, where)
+        body = f"object {{ {declared_name(o['of'])}\n"
+    elif t in COMPOUND:
         check_keys(o, {"type", "material", "name", "transform", "objects"} | extra, where)
         members = [object_text(m, scene, f"{where} member {k + 1}", base, torus_as, implicit_as, accuracy, False)
                    for k, m in enumerate(o["objects"])]
@@ -460,6 +463,17 @@ def object_text(o, scene, where, base, torus_as, implicit_as, accuracy, inherite
         texture = f"  {pigment(mat)}\n  {finish(mat)}\n"
     flip = "  inverse\n" if o.get("inverse", False) else ""
     return body + texture + flip + f"  {transform(o.get('transform'))}\n}}\n"
+
+
+def declared_name(name):
+    return "Declared_" + re.sub(r"[^A-Za-z0-9_]", "_", name)
+
+
+def declarations(scene, base, torus_as, implicit_as="poly", accuracy=0.001):
+    """[declare.NAME] tables as POV-Ray's #declare (textures only where the declared parts name theirs)."""
+    return [f"#declare {declared_name(name)} =\n" +
+            object_text(o, scene, f"declared object '{name}'", base, torus_as, implicit_as, accuracy, False)
+            for name, o in scene.get("declare", {}).items()]
 
 
 def objects(scene, base, torus_as, implicit_as="poly", accuracy=0.001):
@@ -497,7 +511,9 @@ def main():
     for light in scene.get("light", []):
         print(f"light_source {{ {vec(light['position'])} color {rgb(light.get('color', [1, 1, 1]))} }}")
     print()
-    print("\n".join(objects(scene, os.path.dirname(args.scene), args.torus_as, args.implicit_as, args.accuracy)))
+    base = os.path.dirname(args.scene)
+    print("\n".join(declarations(scene, base, args.torus_as, args.implicit_as, args.accuracy) +
+                    objects(scene, base, args.torus_as, args.implicit_as, args.accuracy)))
 
 
 if __name__ == "__main__":

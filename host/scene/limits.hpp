@@ -15,6 +15,10 @@ constexpr int kMaxLights = 256;
 constexpr int kMaxAreaLightSamples = 16;                   // 16 x 16 = 256 shadow rays per area light
 constexpr int kMaxMaterials = 65536;
 constexpr int kMaxObjects = 1 << 20;
+// Placements of declared objects ([declare.NAME], type = "object"): each copies its declaration,
+// and declarations placing others several times multiply, so a kilobyte of scene could otherwise
+// ask for a million objects (850 MB) before kMaxObjects stopped it.
+constexpr int kMaxPlacements = 1 << 16;
 // Whole-scene totals of what single objects are already limited in (a patch file holds at most
 // surface::kMaxPatchesPerFile patches; a parametric surface at most 65,536 cells): many objects
 // together must not exhaust memory either. Each parametric surface also becomes a function in

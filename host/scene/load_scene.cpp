@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <set>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -203,9 +204,45 @@ struct ObjectReading {
     const MaterialIndex& materials;
     SurfaceTotals totals;
     Scene& scene;
+    const toml::table* declared = nullptr;  // [declare.NAME]: objects declared once, placed by `type = "object"`
+
+    // POV-Ray's object { Name ... }: the object declared as [declare.NAME] that `of` names, read
+    // again for this placement (its `transform` after the declared one's; its `material` for the
+    // parts without their own).
+    int placements = 0;
+
+    TableReader declared_object(TableReader& t) {
+        const std::string name = t.required_string("of");
+        if (++placements > limits::kMaxPlacements)
+            t.fail("of", fmt::format("too many placements of declared objects (the limit is {})", limits::kMaxPlacements));
+        const toml::node* node = declared ? declared->get(name) : nullptr;
+        if (!node) {
+            std::set<std::string, std::less<>> names;
+            if (declared)
+                for (auto&& [key, value] : *declared) names.emplace(key.str());
+            t.fail("of", "no object is declared as '" + name + "'" +
+                             did_you_mean(name, names, names.empty() ? " (declare it in a [declare." + name + "] table)" : ""));
+        }
+        const toml::table* table = node->as_table();
+        if (!table) throw SceneError(location_of(*node, t.file()), "declare." + name + " must be a table: an object");
+        return TableReader(*table, t.file(), describe_object("declared object '" + name + "'", *table));
+    }
 
     void entry(TableReader& t, std::uint32_t material, const glm::dmat4& parent, int depth, const std::string& group = "") {
         const std::string type = t.required_string("type");
+        if (type == "object") {
+            if (depth == kMaxGroupDepth) t.fail("of", fmt::format("objects nest at most {} deep (does a declared object place itself?)", kMaxGroupDepth));
+            if (depth > 0 && t.has("name"))
+                t.fail("name", "a group's member cannot have its own name: an animation moves the whole group, by its name");
+            const std::string name = depth > 0 ? group : t.string("name", "");
+            const glm::dmat4 to_world = read_transform(t, parent);
+            const std::uint32_t own = read_material_reference(t, materials, material);
+            TableReader d = declared_object(t);
+            t.finish();
+            if (d.has("name")) d.fail("name", "a declared object cannot have a name: name each placement (type = \"object\")");
+            entry(d, own, to_world, depth + 1, name);
+            return;
+        }
         if (csg_operators().count(type)) {
             if (depth > 0 && t.has("name"))
                 t.fail("name", "a group's member cannot have its own name: an animation moves the whole group, by its name");
@@ -276,6 +313,16 @@ struct ObjectReading {
         const std::string type = t.required_string("type");
         const bool inverse = t.boolean("inverse", false);
         if (depth == kMaxGroupDepth) t.fail("type", fmt::format("groups nest at most {} deep", kMaxGroupDepth));
+        if (type == "object") {  // a declared object as an operand
+            const glm::dmat4 to_world = read_transform(t, parent);
+            const std::uint32_t own = read_material_reference(t, materials, material);
+            TableReader d = declared_object(t);
+            t.finish();
+            if (d.has("name")) d.fail("name", "a declared object cannot have a name: name each placement (type = \"object\")");
+            operand(d, csg, own, to_world, depth + 1);
+            if (inverse) csg.program.push_back(CSG_NOT);
+            return;
+        }
         auto joined = csg_operators().find(type);
         if (joined != csg_operators().end() || type == "group") {
             const std::uint32_t join = type == "group" ? CSG_OR : joined->second;
@@ -419,10 +466,11 @@ Scene parse_scene(std::string_view text, const std::string& path) {
 
     // Entry i of [[object]] made scene objects [entry_starts[i], entry_starts[i + 1]) (a group, many).
     std::vector<std::size_t> entry_starts{0};
+    const toml::table* declared = top.table("declare");
     if (const toml::array* objects = top.array("object")) {
         if (objects->size() > static_cast<std::size_t>(limits::kMaxObjects))
             top.fail("object", "too many objects (the limit is " + std::to_string(limits::kMaxObjects) + ")");
-        ObjectReading reading{material_index, {}, scene};
+        ObjectReading reading{material_index, {}, scene, declared};
         for_each_table(*objects, path, "[[object]]", [&](const toml::table& t, std::size_t index) {
             TableReader o(t, path, describe_object("object " + std::to_string(index + 1), t));
             reading.entry(o, default_material, glm::dmat4(1.0), 0);

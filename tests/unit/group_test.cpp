@@ -2,6 +2,7 @@
 // material unless they name theirs, nested, moved as one by an animation; and the errors.
 #include <string>
 
+#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
@@ -91,6 +92,47 @@ TEST(Group, AnAnimationMovesTheWholeGroupByItsName) {
     expect_same_point(group_member_centre(end.objects[2]), {0, 3, 0});  // the next entry is not part of it
 }
 
+// POV-Ray's #declare and object { }: declared once, placed many times, each placement with its
+// own transform (after the declared one's) and material (for the parts without their own).
+TEST(Group, ADeclaredObjectIsPlacedManyTimes) {
+    const Scene s = group_scene(R"(
+        [declare.pair]
+        type = "group"
+        transform = { translate = [0, 1, 0] }
+        objects = [ { type = "sphere", center = [1, 0, 0], radius = 0.5 },
+                    { type = "sphere", center = [-1, 0, 0], radius = 0.5, material = "blue" } ]
+        [[object]]
+        type = "object"
+        of = "pair"
+        material = "red"
+        [[object]]
+        type = "object"
+        of = "pair"
+        name = "second"
+        transform = { translate = [0, 0, 5] }
+        [[object]]
+        type = "difference"
+        objects = [ { type = "box", min = [-2, -2, -2], max = [2, 2, 2] },
+                    { type = "object", of = "pair", inverse = false } ]
+        [animation]
+        frames = 2
+        [[animation.object]]
+        object = "second"
+        keys = [{ time = 0.0, translate = [0, 0, 0] }, { time = 1.0, translate = [3, 0, 0] }]
+    )");
+    ASSERT_EQ(s.objects.size(), 5u);
+    expect_same_point(group_member_centre(s.objects[0]), {1, 1, 0});
+    expect_same_point(group_member_centre(s.objects[3]), {-1, 1, 5});
+    EXPECT_EQ(s.materials[s.objects[0].material].name, "red");
+    EXPECT_EQ(s.materials[s.objects[1].material].name, "blue");
+    EXPECT_NE(s.objects[2].material, s.objects[0].material);  // the second placement gives none: the default
+    const Csg& csg = std::get<Csg>(s.objects[4].shape);
+    EXPECT_EQ(csg.leaves.size(), 3u);  // the box and the pair's two spheres
+    const Scene end = scene_at(s, 1.0);
+    expect_same_point(group_member_centre(end.objects[2]), {4, 1, 5});  // the named placement moves
+    expect_same_point(group_member_centre(end.objects[0]), {1, 1, 0});  // the other does not
+}
+
 void expect_error_at(const std::string& objects, int line, const std::string& words) {
     try {
         group_scene(objects);
@@ -117,6 +159,22 @@ TEST(Group, ErrorsSayWhereAndWhy) {
     expect_error_at("[[object]]\ntype = \"group\"\ntransform = { scale = 1e7 }\n"
                     "objects = [{ type = \"sphere\", center = [0, 0, 0], radius = 1, transform = { scale = 1e7 } }]\n",
                     4, "outside lancer's range");
+    expect_error_at("[[object]]\ntype = \"object\"\nof = \"chair\"\n", 3, "no object is declared as 'chair'");
+    expect_error_at("[declare.loop]\ntype = \"object\"\nof = \"loop\"\n[[object]]\ntype = \"object\"\nof = \"loop\"\n", 3,
+                    "objects nest at most 64 deep");
+    // Declarations that place each other twice, 20 deep: a million objects from a few lines.
+    std::string doubling;
+    for (int i = 0; i < 20; ++i)
+        doubling += fmt::format("[declare.d{}]\ntype = \"group\"\nobjects = [{{ type = \"object\", of = \"d{}\" }}, "
+                                "{{ type = \"object\", of = \"d{}\", transform = {{ translate = [1, 0, 0] }} }}]\n",
+                                i, i + 1, i + 1);
+    doubling += "[declare.d20]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\n[[object]]\ntype = \"object\"\nof = \"d0\"\n";
+    try {
+        group_scene(doubling);
+        ADD_FAILURE() << "a million placements accepted";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("too many placements of declared objects"), std::string::npos) << e.what();
+    }
     // Nesting deeper than the limit.
     std::string deep = "[[object]]\ntype = \"group\"\nobjects = [";
     for (int i = 0; i < 70; ++i) deep += "{ type = \"group\", objects = [";
