@@ -77,4 +77,16 @@ dvec3 node_vec3(const toml::node& node, const std::string& file, const std::stri
 // A string without NUL characters (an error at the NUL's position otherwise).
 std::string node_string(const toml::node& node, const std::string& file, const std::string& what);
 
+// Calls fn(table, index) for each element of an array of tables ([[light]], [[object]]), and
+// fails at an element that is not a table.
+template <typename Fn>
+void for_each_table(const toml::array& array, const std::string& file, const std::string& what, Fn fn) {
+    std::size_t index = 0;
+    for (const toml::node& node : array) {
+        const toml::table* table = node.as_table();
+        if (!table) throw SceneError(location_of(node, file), what + " entries must be tables");
+        fn(*table, index++);
+    }
+}
+
 }  // namespace lancer

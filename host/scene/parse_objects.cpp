@@ -1,0 +1,277 @@
+#include "scene/parse_objects.hpp"
+
+#include <set>
+
+#include <fmt/format.h>
+#include <glm/mat4x4.hpp>
+
+#include "scene/limits.hpp"
+#include "scene/parse_shapes.hpp"
+#include "scene/placement.hpp"
+#include "scene/shape_bounds.hpp"
+#include "scene/transform.hpp"
+#include "surface/expr/program.hpp"
+
+namespace lancer {
+namespace {
+
+// The material an object or group names, or `inherited` (its group's, or the scene's default).
+std::uint32_t read_material_reference(TableReader& t, const MaterialIndex& materials, std::uint32_t inherited) {
+    if (!t.has("material")) {
+        t.accept("material");
+        return inherited;
+    }
+    std::string name = t.string("material", "");
+    auto found = materials.find(name);
+    if (found == materials.end()) t.fail("material", "unknown material '" + name + "'" + did_you_mean(name, names_of(materials)));
+    return found->second;
+}
+
+// One shape of an [[object]] entry (or of a group's `objects`), placed by `parent` (its groups'
+// transforms) and then its own.
+Object read_object(TableReader& t, const std::string& type, const MaterialIndex& materials, std::uint32_t inherited_material,
+                   const glm::dmat4& parent) {
+    const auto& readers = shape_readers();
+    auto reader = readers.find(type);
+    if (reader == readers.end()) {
+        auto types = names_of(readers);
+        types.insert("group");
+        t.fail("type", "unknown object type '" + type + "'" + did_you_mean(type, types));
+    }
+    Object o;
+    o.where = t.location();
+    const glm::dmat4 to_world = read_transform(t, parent);
+    o.shape = reader->second(t, to_world);
+    place(o, to_world);
+    o.material = read_material_reference(t, materials, inherited_material);
+    o.name = t.string("name", "");
+    t.finish();
+    return o;
+}
+
+// The scene-wide limits on surfaces (limits.hpp): parametric and implicit surfaces are counted
+// before one is read (reading subdivides or expands it, the expensive part), patches once an
+// object's are known.
+struct SurfaceTotals {
+    int parametric = 0;
+    int implicit = 0;
+    int operations = 0;
+    long long patches = 0;
+
+    void before(TableReader& t, const std::optional<std::string>& type) {
+        if (type == "parametric" && ++parametric > limits::kMaxParametricSurfaces)
+            t.fail("type", fmt::format("too many parametric surfaces (the limit is {} per scene)",
+                                       limits::kMaxParametricSurfaces));
+        if (type == "implicit" && ++implicit > limits::kMaxImplicitSurfaces)
+            t.fail("type", fmt::format("too many implicit surfaces (the limit is {} per scene)",
+                                       limits::kMaxImplicitSurfaces));
+    }
+    void after(TableReader& t, const Object& o) {
+        int added = 0;
+        if (const auto* p = std::get_if<ParametricObject>(&o.shape)) {
+            const surface::Expr* xyz[] = {&p->surface.x, &p->surface.y, &p->surface.z};
+            added = surface::count_operations(surface::compile_program(xyz));
+        } else if (const auto* i = std::get_if<ImplicitObject>(&o.shape)) {
+            added = surface::count_operations(i->surface.program);
+        }
+        if (added > 0 && (operations += added) > limits::kMaxSceneSurfaceOperations)
+            t.fail("type", fmt::format("the parametric and implicit surfaces' equations take {} operations so far; the "
+                                       "limit is {} per scene (all of them are compiled into the GPU's tracer)",
+                                       operations, limits::kMaxSceneSurfaceOperations));
+        const auto* b = std::get_if<BezierSurface>(&o.shape);
+        if (b && (patches += static_cast<long long>(b->patches.size())) > limits::kMaxPatches)
+            t.fail("type", fmt::format("too many Bezier patches: {} so far (the limit is {} per scene)", patches,
+                                       limits::kMaxPatches));
+    }
+};
+
+// "object 3 ('sphere')": an object or group in messages.
+std::string describe_object(std::string what, const toml::table& t) {
+    if (auto type = t["type"].value<std::string>()) what += " ('" + *type + "')";
+    return what;
+}
+
+// Groups nest at most this deep (each level is a recursion of the reader).
+constexpr int kMaxGroupDepth = 64;
+
+// Reads [[object]] entries into the scene's objects, groups flattened: a group (POV-Ray's union)
+// places its `objects` by its transform, gives them its material unless they name their own, and
+// its name (an animation moves the whole group).
+struct ObjectReading {
+    const MaterialIndex& materials;
+    SurfaceTotals totals;
+    Scene& scene;
+    const toml::table* declared = nullptr;  // [declare.NAME]: objects declared once, placed by `type = "object"`
+
+    // POV-Ray's object { Name ... }: the object declared as [declare.NAME] that `of` names, read
+    // again for this placement (its `transform` after the declared one's; its `material` for the
+    // parts without their own).
+    int placements = 0;
+
+    TableReader declared_object(TableReader& t) {
+        const std::string name = t.required_string("of");
+        if (++placements > limits::kMaxPlacements)
+            t.fail("of", fmt::format("too many placements of declared objects (the limit is {})", limits::kMaxPlacements));
+        const toml::node* node = declared ? declared->get(name) : nullptr;
+        if (!node) {
+            std::set<std::string, std::less<>> names;
+            if (declared)
+                for (auto&& [key, value] : *declared) names.emplace(key.str());
+            t.fail("of", "no object is declared as '" + name + "'" +
+                             did_you_mean(name, names, names.empty() ? " (declare it in a [declare." + name + "] table)" : ""));
+        }
+        const toml::table* table = node->as_table();
+        if (!table) throw SceneError(location_of(*node, t.file()), "declare." + name + " must be a table: an object");
+        return TableReader(*table, t.file(), describe_object("declared object '" + name + "'", *table));
+    }
+
+    void entry(TableReader& t, std::uint32_t material, const glm::dmat4& parent, int depth, const std::string& group = "") {
+        const std::string type = t.required_string("type");
+        if (type == "object") {
+            if (depth == kMaxGroupDepth) t.fail("of", fmt::format("objects nest at most {} deep (does a declared object place itself?)", kMaxGroupDepth));
+            if (depth > 0 && t.has("name"))
+                t.fail("name", "a group's member cannot have its own name: an animation moves the whole group, by its name");
+            const std::string name = depth > 0 ? group : t.string("name", "");
+            const glm::dmat4 to_world = read_transform(t, parent);
+            const std::uint32_t own = read_material_reference(t, materials, material);
+            TableReader d = declared_object(t);
+            t.finish();
+            if (d.has("name")) d.fail("name", "a declared object cannot have a name: name each placement (type = \"object\")");
+            entry(d, own, to_world, depth + 1, name);
+            return;
+        }
+        if (csg_operators().count(type)) {
+            if (depth > 0 && t.has("name"))
+                t.fail("name", "a group's member cannot have its own name: an animation moves the whole group, by its name");
+            Object o;
+            o.where = t.location();
+            o.name = depth > 0 ? group : t.string("name", "");
+            Csg csg;
+            operand(t, csg, material, parent, depth);
+            const std::optional<Aabb> box = csg_bounds(csg.leaves, csg.program);
+            if (!box)
+                t.fail("type", fmt::format("this {} is unbounded (a half-space, or an inverse, reaches to infinity): "
+                                           "intersect it with a bounded solid", type));
+            if (box->empty())
+                t.fail("type", fmt::format("this {} is empty: the boxes of the solids it intersects do not overlap", type));
+            csg.lo = box->lo;
+            csg.hi = box->hi;
+            o.material = csg.leaves.front().material;  // what shadow rays through it see of it
+            o.shape = std::move(csg);
+            scene.objects.push_back(std::move(o));
+            if (scene.objects.size() > static_cast<std::size_t>(limits::kMaxObjects))
+                t.fail("type", fmt::format("too many objects with the groups' members (the limit is {})", limits::kMaxObjects));
+            return;
+        }
+        if (type != "group") {
+            totals.before(t, type);
+            if (depth > 0 && t.has("name"))
+                t.fail("name", "a group's member cannot have its own name: an animation moves the whole group, by its name");
+            scene.objects.push_back(read_object(t, type, materials, material, parent));
+            Object& o = scene.objects.back();
+            if (depth > 0) o.name = group;
+            totals.after(t, o);
+            if (scene.objects.size() > static_cast<std::size_t>(limits::kMaxObjects))
+                t.fail("type", fmt::format("too many objects with the groups' members (the limit is {})", limits::kMaxObjects));
+            if (auto* b = std::get_if<BezierSurface>(&o.shape); b && !b->source_file.empty())
+                scene.dependencies.push_back(b->source_file);
+            return;
+        }
+        if (depth == kMaxGroupDepth) t.fail("type", fmt::format("groups nest at most {} deep", kMaxGroupDepth));
+        const glm::dmat4 to_world = read_transform(t, parent);
+        const std::uint32_t group_material = read_material_reference(t, materials, material);
+        if (depth > 0 && t.has("name"))
+            t.fail("name", "a group's member cannot have its own name: an animation moves the whole group, by its name");
+        const std::string name = depth > 0 ? group : t.string("name", "");
+        const toml::array* members = t.array("objects");
+        if (!members || members->empty())
+            t.fail(members ? "objects" : "type", "a group needs `objects`: a non-empty list of objects (tables)");
+        std::size_t k = 0;
+        for (const toml::node& node : *members) {
+            const toml::table* member = node.as_table();
+            if (!member) throw SceneError(location_of(node, t.file()), "a group's objects must be tables");
+            TableReader m(*member, t.file(), describe_object(fmt::format("{} member {}", t.what(), ++k), *member));
+            entry(m, group_material, to_world, depth + 1, name);
+        }
+        t.finish();
+    }
+
+    // POV-Ray's CSG words and the operator that joins each operand after the first to the ones
+    // before it (inside a CSG object a group is a union, as POV-Ray's is).
+    static const std::map<std::string, std::uint32_t, std::less<>>& csg_operators() {
+        static const std::map<std::string, std::uint32_t, std::less<>> ops = {
+            {"intersection", CSG_AND}, {"difference", CSG_AND_NOT}, {"merge", CSG_OR}};
+        return ops;
+    }
+
+    // One operand of a CSG object (a solid, or a CSG object or group of them) into `csg`: its
+    // leaves and the program that combines them; `inverse = true` takes its outside instead.
+    void operand(TableReader& t, Csg& csg, std::uint32_t material, const glm::dmat4& parent, int depth) {
+        const std::string type = t.required_string("type");
+        const bool inverse = t.boolean("inverse", false);
+        if (depth == kMaxGroupDepth) t.fail("type", fmt::format("groups nest at most {} deep", kMaxGroupDepth));
+        if (type == "object") {  // a declared object as an operand
+            const glm::dmat4 to_world = read_transform(t, parent);
+            const std::uint32_t own = read_material_reference(t, materials, material);
+            TableReader d = declared_object(t);
+            t.finish();
+            if (d.has("name")) d.fail("name", "a declared object cannot have a name: name each placement (type = \"object\")");
+            operand(d, csg, own, to_world, depth + 1);
+            if (inverse) csg.program.push_back(CSG_NOT);
+            return;
+        }
+        auto joined = csg_operators().find(type);
+        if (joined != csg_operators().end() || type == "group") {
+            const std::uint32_t join = type == "group" ? CSG_OR : joined->second;
+            const glm::dmat4 to_world = read_transform(t, parent);
+            const std::uint32_t own = read_material_reference(t, materials, material);
+            const toml::array* members = t.array("objects");
+            if (!members || members->empty())
+                t.fail(members ? "objects" : "type", fmt::format("{} needs `objects`: a non-empty list of solids (tables)", type));
+            std::size_t k = 0;
+            for (const toml::node& node : *members) {
+                const toml::table* member = node.as_table();
+                if (!member) throw SceneError(location_of(node, t.file()), "a " + type + "'s objects must be tables");
+                TableReader m(*member, t.file(), describe_object(fmt::format("{} operand {}", t.what(), k + 1), *member));
+                if (m.has("name")) m.fail("name", "a CSG operand cannot have its own name: an animation moves the whole object");
+                operand(m, csg, own, to_world, depth + 1);
+                if (k++ > 0) csg.program.push_back(join);
+            }
+            t.finish();
+        } else {
+            if (csg.leaves.size() == CSG_MAX_LEAVES)
+                t.fail("type", fmt::format("a CSG object combines at most {} solids", CSG_MAX_LEAVES));
+            Object leaf = read_object(t, type, materials, material, parent);
+            const auto* cone = std::get_if<Cone>(&leaf.shape);
+            if (!shape_has(shape_type(leaf.shape), SHAPE_SOLID) || (cone && cone->open))
+                t.fail(cone ? "open" : "type",
+                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, plane as "
+                                   "the half-space behind its normal) and CSG objects and groups of them",
+                                   cone ? "an open " : "a ", type));
+            csg.program.push_back(CSG_LEAF | std::uint32_t(csg.leaves.size()) << 4);
+            csg.leaves.push_back(std::move(leaf));
+        }
+        if (inverse) csg.program.push_back(CSG_NOT);
+    }
+};
+
+}  // namespace
+
+std::vector<std::size_t> read_objects(TableReader& top, const MaterialIndex& materials, std::uint32_t default_material,
+                                      Scene& scene) {
+    std::vector<std::size_t> entry_starts{0};
+    const toml::table* declared = top.table("declare");
+    const toml::array* objects = top.array("object");
+    if (!objects) return entry_starts;
+    if (objects->size() > static_cast<std::size_t>(limits::kMaxObjects))
+        top.fail("object", "too many objects (the limit is " + std::to_string(limits::kMaxObjects) + ")");
+    ObjectReading reading{materials, {}, scene, declared};
+    for_each_table(*objects, top.file(), "[[object]]", [&](const toml::table& t, std::size_t index) {
+        TableReader o(t, top.file(), describe_object("object " + std::to_string(index + 1), t));
+        reading.entry(o, default_material, glm::dmat4(1.0), 0);
+        entry_starts.push_back(scene.objects.size());
+    });
+    return entry_starts;
+}
+
+}  // namespace lancer
