@@ -142,6 +142,19 @@ CommandResult run_lancer(const std::string& args, const std::string& env) {
     return r;
 }
 
+void expect_scene_error(const std::string& toml, int line, int column, const std::string& message) {
+    try {
+        scene_from_text(toml);
+        ADD_FAILURE() << "loaded:\n" << toml;
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.where().line, line) << e.what() << "\n" << toml;
+        if (column >= 0) {
+            EXPECT_EQ(e.where().column, column) << e.what() << "\n" << toml;
+        }
+        EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+}
+
 void expect_refused(std::string args, const std::string& env, const std::string& message, const std::string& out) {
     if (auto at = args.find("OUT"); at != std::string::npos) args.replace(at, 3, out);
     const CommandResult r = run_lancer(args, env);

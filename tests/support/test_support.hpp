@@ -75,6 +75,9 @@ CommandResult run_lancer(const std::string& args, const std::string& env = "");
 // `lancer <args>` (with "OUT" in them replaced by `out`) must be refused as the CLI promises: exit
 // code 2, one line on stderr that begins with `message`, and no file at `out`.
 void expect_refused(std::string args, const std::string& env, const std::string& message, const std::string& out);
+// Loading the scene `toml` must fail with a SceneError at `line` (and `column`, unless it is -1)
+// whose message contains `message`.
+void expect_scene_error(const std::string& toml, int line, int column, const std::string& message);
 
 bool file_exists(const std::string& path);
 std::string read_file(const std::string& path);

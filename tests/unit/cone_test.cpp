@@ -301,14 +301,7 @@ TEST(ConeReader, ReadsPovRaysParameters) {
 // Each bad value fails at its key's line and column (line 6 is the first key after the head); a
 // missing key fails at the [[object]] line.
 void expect_cone_refused(const std::string& type, const std::string& keys, int line, int column, const std::string& message) {
-    try {
-        test::scene_from_text("[camera]\neye = [0, 0, -5]\nlook_at = [0, 0, 0]\n[[object]]\ntype = \"" + type + "\"\n" + keys);
-        ADD_FAILURE() << keys << " loaded";
-    } catch (const SceneError& e) {
-        EXPECT_EQ(e.where().line, line) << keys;
-        EXPECT_EQ(e.where().column, column) << keys;
-        EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
-    }
+    test::expect_scene_error("[camera]\neye = [0, 0, -5]\nlook_at = [0, 0, 0]\n[[object]]\ntype = \"" + type + "\"\n" + keys, line, column, message);
 }
 
 TEST(ConeReader, RefusesDegenerateCylinders) {
