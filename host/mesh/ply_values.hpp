@@ -1,0 +1,52 @@
+#pragma once
+// The values of a PLY file's data, one at a time, in the header's types: numbers separated by
+// blanks (ascii) or packed bytes in either byte order (binary). Errors say where: line and column
+// of the number for ascii, "byte N" for binary.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "mesh/ply_header.hpp"
+
+namespace lancer::mesh {
+
+class PlyValues {
+public:
+    PlyValues(std::string_view bytes, const PlyHeader& header, std::string file);
+
+    // What is being read, for the message when the data ends early: "vertex 17 of 1000".
+    void set_item(const std::string& element, std::uint64_t index, std::uint64_t count);
+
+    double number(PlyScalar t);
+    // A whole number (list lengths, indices); for ascii the text must be one.
+    std::int64_t integer(PlyScalar t);
+    void skip(PlyScalar t);
+
+    bool binary() const { return format_ != PlyFormat::ascii; }
+    std::size_t bytes_left() const { return bytes_.size() - pos_; }
+    // Throws unless only blanks are left.
+    void require_end();
+
+    // A SceneError at the value read last (the start of the value in binary).
+    [[noreturn]] void fail(const std::string& message) const;
+
+private:
+    std::string_view next_token();
+    std::int64_t ascii_integer(std::string_view s);
+    const unsigned char* take(std::size_t n);
+    [[noreturn]] void fail_early_end() const;
+
+    std::string_view bytes_;
+    PlyFormat format_;
+    std::string file_;
+    std::size_t pos_;
+    std::size_t value_start_;
+    int line_, column_ = 0;          // ascii: where the last token starts
+    std::size_t line_start_;         // ascii: the byte that starts line_
+    std::string_view token_;
+    std::string element_;
+    std::uint64_t index_ = 0, count_ = 0;
+};
+
+}  // namespace lancer::mesh
