@@ -50,6 +50,7 @@ public:
 
     TriangleMesh read() {
         while (lines_.next()) statement();
+        if (first_face_line_ != 0 && !faces_have_uv_ && !faces_have_normal_) take_positions_up_to(positions_.size());
         assign_default_material();
         require_triangles(mesh_, lines_.file());
         return std::move(mesh_);
@@ -141,6 +142,10 @@ private:
 
     // The mesh's vertex for a corner: the same (v, vt, vn) always gives the same vertex.
     std::uint32_t vertex_of(const Corner& c) {
+        if (!faces_have_uv_ && !faces_have_normal_) {  // positions only: the file's own numbering
+            take_positions_up_to(positions_.size());
+            return c.v;
+        }
         if (c.v >= first_vertex_of_position_.size()) first_vertex_of_position_.resize(positions_.size(), kNone);
         std::uint32_t& first = first_vertex_of_position_[c.v];
         if (first != kNone && corners_[first] == c) return first;
@@ -210,6 +215,11 @@ private:
         }
         read_mtl(text, path, companions_.texture_exists, mesh_.materials);
         ++mtl_files_;
+    }
+
+    void take_positions_up_to(std::size_t n) {
+        mesh_.positions.insert(mesh_.positions.end(), positions_.begin() + static_cast<std::ptrdiff_t>(mesh_.positions.size()),
+                               positions_.begin() + static_cast<std::ptrdiff_t>(n));
     }
 
     // Faces before the first usemtl of a file that uses materials get one with the MTL defaults.

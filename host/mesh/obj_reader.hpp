@@ -4,8 +4,10 @@
 // vertex defined; 0 is no index), mtllib, usemtl. Polygons are fanned into triangles.
 //
 // Corners name a position, a texture coordinate and a normal each; lancer's mesh shares one index
-// for all three, so every distinct (v, vt, vn) becomes one vertex. Two corners with the same v
-// copy the same parsed numbers: their positions are bit-identical, and edges stay closed.
+// for all three, so every distinct (v, vt, vn) becomes one vertex (in the order of first use;
+// positions no face uses are left out). Two corners with the same v copy the same parsed numbers:
+// their positions are bit-identical, and edges stay closed. When faces name positions only, the
+// mesh's positions are the file's v lines, all of them, in order (vertex k of the file is k - 1).
 //
 // Strict where a lenient reader would silently guess: an index must name an element defined above
 // it; all faces give texture coordinates (or normals) or none do; a normal of zero length, a

@@ -39,6 +39,9 @@ public:
 
     TriangleMesh read() {
         for (const PlyElement& e : header_.elements) {
+            if (e.name == "vertex" && e.count > kMaxMeshVertices)
+                fail_in_header(e.line, fmt::format("{} vertices are more than lancer's limit of {} (32-bit indices)", e.count,
+                                                   kMaxMeshVertices));
             refuse_what_cannot_fit(e);
             if (e.name == "vertex")
                 read_vertices(e);
@@ -107,8 +110,6 @@ private:
     void read_vertices(const PlyElement& e) {
         if (seen_vertices_) fail_in_header(e.line, "a second vertex element");
         seen_vertices_ = true;
-        if (e.count > kMaxMeshVertices)
-            fail_in_header(e.line, fmt::format("{} vertices are more than lancer's limit of {} (32-bit indices)", e.count, kMaxMeshVertices));
         const VertexLayout layout = vertex_layout(e);
         const std::size_t capacity = capacity_for(e);
         mesh_.positions.reserve(capacity);

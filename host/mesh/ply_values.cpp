@@ -28,7 +28,8 @@ T load(const unsigned char* p, bool big_endian) {
 
 PlyValues::PlyValues(std::string_view bytes, const PlyHeader& header, std::string file)
     : bytes_(bytes), format_(header.format), file_(std::move(file)), pos_(header.data_offset),
-      value_start_(header.data_offset), line_(header.data_line), line_start_(header.data_offset) {}
+      value_start_(header.data_offset), line_(header.data_line), line_start_(header.data_offset),
+      token_line_(header.data_line - 1) {}
 
 void PlyValues::set_item(const std::string& element, std::uint64_t index, std::uint64_t count) {
     if (element_ != element) element_ = element;
@@ -45,7 +46,7 @@ void PlyValues::fail_early_end() const {
     const std::string what = fmt::format("the file ends early, in {} {} of the {} the header declares", element_,
                                          index_ + 1, count_);
     if (binary()) throw SceneError({file_, 0, 0}, fmt::format("byte {}: {}", bytes_.size(), what));
-    throw SceneError({file_, line_, 0}, what);
+    throw SceneError({file_, token_line_, 0}, what);
 }
 
 std::string_view PlyValues::next_token() {
@@ -60,6 +61,7 @@ std::string_view PlyValues::next_token() {
     const std::size_t start = pos_;
     while (pos_ < bytes_.size() && !is_data_blank(bytes_[pos_])) ++pos_;
     value_start_ = start;
+    token_line_ = line_;
     column_ = static_cast<int>(start - line_start_) + 1;
     token_ = bytes_.substr(start, pos_ - start);
     return token_;

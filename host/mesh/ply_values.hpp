@@ -44,6 +44,7 @@ private:
     std::size_t value_start_;
     int line_, column_ = 0;          // ascii: where the last token starts
     std::size_t line_start_;         // ascii: the byte that starts line_
+    int token_line_;                 // ascii: the line of the last token (of end_header before any)
     std::string_view token_;
     std::string element_;
     std::uint64_t index_ = 0, count_ = 0;
