@@ -233,6 +233,7 @@ private:
     }
 
     void skip_element(const PlyElement& e) {
+        if (e.properties.empty()) return;  // its items hold nothing: any count of them takes no bytes, and no time
         for (std::uint64_t k = 0; k < e.count; ++k) {
             values_.set_item(e.name, k, e.count);
             for (const PlyProperty& p : e.properties) p.is_list ? skip_list(p) : values_.skip(p.type);

@@ -34,6 +34,9 @@
 #include "surface/float_check.hpp"
 #include "surface/patch_file.hpp"
 #include "surface/polynomial.hpp"
+#include "mesh/obj_reader.hpp"
+#include "mesh/ply_reader.hpp"
+#include "core/magnitude.hpp"
 
 namespace lancer::fuzz {
 namespace {
@@ -544,6 +547,62 @@ void exr_part_entry(const std::uint8_t* data, std::size_t size) {
     require(double(pixels) * 6.0 <= double(size) * 1032.0, "an accepted part has more pixels than its bytes can hold");
     require(std::isfinite(info.tone.exposure) && std::abs(info.tone.exposure) <= kMaxExposureStops,
             "an accepted part's exposure is not finite or out of range");
+}
+
+void check_mesh_invariants(const TriangleMesh& mesh) {
+    const std::size_t n = mesh.positions.size();
+    require(!mesh.triangles.empty(), "an accepted mesh has no triangles");
+    require(mesh.normals.empty() || mesh.normals.size() == n, "normals: neither none nor one per position");
+    require(mesh.uvs.empty() || mesh.uvs.size() == n, "uvs: neither none nor one per position");
+    for (const dvec3& p : mesh.positions)
+        for (int i = 0; i < 3; ++i) require(std::isfinite(p[i]) && std::abs(p[i]) <= kMaxMagnitude, "a position is not finite and within 1e12");
+    for (const dvec3& v : mesh.normals) {
+        require_finite(v, "a normal");
+        require(std::abs(glm::length(v) - 1.0) < 1e-9, "a normal is not a unit vector");
+    }
+    for (const glm::dvec2& uv : mesh.uvs)
+        for (int i = 0; i < 2; ++i) require(std::isfinite(uv[i]) && std::abs(uv[i]) <= kMaxMagnitude, "a texture coordinate is not finite and within 1e12");
+    for (const auto& t : mesh.triangles)
+        for (std::uint32_t i : t) require(i < n, "a triangle's index is out of range");
+    require(mesh.triangle_materials.empty() || mesh.triangle_materials.size() == mesh.triangles.size(),
+            "triangle_materials: neither none nor one per triangle");
+    for (std::uint32_t m : mesh.triangle_materials) require(m < mesh.materials.size(), "a triangle's material index is out of range");
+    for (const MeshMaterial& m : mesh.materials) {
+        require_finite(m.diffuse, "a material's Kd");
+        require_finite(m.specular, "a material's Ks");
+        require(std::isfinite(m.shininess) && m.opacity >= 0.0 && m.opacity <= 1.0, "a material's Ns or d");
+    }
+}
+
+void obj_entry(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text = as_text(data, size);
+    constexpr std::string_view kMtlMark = "\n#MTL\n";
+    const std::size_t mark = text.find(kMtlMark);
+    const std::string mtl(mark == std::string_view::npos ? std::string_view() : text.substr(mark + kMtlMark.size()));
+    mesh::ObjCompanions companions;
+    companions.folder = "fuzz";
+    companions.read_mtl = [&](const std::string& path) -> std::string {
+        if (mark == std::string_view::npos) throw UserError(fmt::format("{}: No such file or directory", path));
+        return mtl;
+    };
+    companions.texture_exists = [](const std::string& path) { return path.ends_with(".png"); };
+    TriangleMesh mesh;
+    try {
+        mesh = mesh::read_obj(text.substr(0, mark), "fuzz.obj", companions);
+    } catch (const UserError&) {
+        return;
+    }
+    check_mesh_invariants(mesh);
+}
+
+void ply_entry(const std::uint8_t* data, std::size_t size) {
+    TriangleMesh mesh;
+    try {
+        mesh = mesh::read_ply(as_text(data, size), "fuzz.ply");
+    } catch (const UserError&) {
+        return;
+    }
+    check_mesh_invariants(mesh);
 }
 
 }  // namespace lancer::fuzz

@@ -15,6 +15,7 @@
 
 namespace lancer {
 struct Scene;
+struct TriangleMesh;
 }
 
 namespace lancer::fuzz {
@@ -59,5 +60,17 @@ void cache_file_entry(const std::uint8_t* data, std::size_t size);
 // within kMaxReadSide and kMaxReadPixels, no larger than its bytes can hold, and its exposure is
 // finite and in range.
 void exr_part_entry(const std::uint8_t* data, std::size_t size);
+
+// Throws InvariantBroken unless `mesh` keeps what an accepted mesh promises the scene: triangles,
+// every index valid, normals and texture coordinates none or one per position, every number finite
+// and within 1e12, normals of unit length, material indices none or one per triangle and valid.
+void check_mesh_invariants(const TriangleMesh& mesh);
+
+// An OBJ file -> TriangleMesh (mesh::read_obj). Text after a line "#MTL" is the MTL file every
+// mtllib gets (without it, an mtllib is a missing file); a texture exists when its name ends in .png.
+void obj_entry(const std::uint8_t* data, std::size_t size);
+
+// A PLY file (any of its three formats) -> TriangleMesh (mesh::read_ply).
+void ply_entry(const std::uint8_t* data, std::size_t size);
 
 }  // namespace lancer::fuzz

@@ -75,7 +75,8 @@ INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay,
                          testing::Values(Target{"scene", fuzz::scene_entry}, Target{"expression", fuzz::expression_entry},
                                          Target{"patch", fuzz::patch_entry},
                                          Target{"cache_entry", fuzz::cache_file_entry},
-                                         Target{"exr_part", fuzz::exr_part_entry}),
+                                         Target{"exr_part", fuzz::exr_part_entry}, Target{"obj", fuzz::obj_entry},
+                                         Target{"ply", fuzz::ply_entry}),
                          [](const auto& info) { return info.param.name; });
 
 // The invariants the scene target checks can fail: a scene the loader would never accept.

@@ -4,7 +4,7 @@
 # sanitizer report, leak, timeout or memory blow-up; the input that caused it is written to
 # build-fuzz/fuzz-artifacts/TARGET/ (add it to tests/fuzz/regressions/TARGET/ once fixed).
 #
-#   tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     (default 60 s; scene expression patch cache_entry exr_part)
+#   tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     (default 60 s; scene expression patch cache_entry exr_part obj ply)
 #
 # LANCER_FUZZ_TIMEOUT (default 10) is the time one input may take before it counts as a hang.
 # LANCER_FUZZ_SEED fixes libFuzzer's random seed (CI uses 1, so that a red run can be replayed
@@ -18,7 +18,7 @@ cd "$(dirname "$0")/../.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-((${#targets[@]})) || targets=(scene expression patch cache_entry exr_part)
+((${#targets[@]})) || targets=(scene expression patch cache_entry exr_part obj ply)
 build="${LANCER_FUZZ_BUILD:-build-fuzz}"
 seed="${LANCER_FUZZ_SEED:-0}"  # 0: libFuzzer picks one
 timeout="${LANCER_FUZZ_TIMEOUT:-10}"  # seconds per input; more on a machine busy with other work
@@ -26,7 +26,7 @@ timeout="${LANCER_FUZZ_TIMEOUT:-10}"  # seconds per input; more on a machine bus
 # The sanitizers' options and leak suppressions are compiled into the fuzzers
 # (cmake/sanitizers.cmake); stack traces need llvm-symbolizer (package llvm).
 
-declare -A max_len=([scene]=16384 [expression]=5000 [patch]=16384 [cache_entry]=4096 [exr_part]=16384)
+declare -A max_len=([scene]=16384 [expression]=5000 [patch]=16384 [cache_entry]=4096 [exr_part]=16384 [obj]=16384 [ply]=16384)
 failed=()
 for target in "${targets[@]}"; do
   binary="$build/fuzz/fuzz_$target"

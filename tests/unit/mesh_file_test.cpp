@@ -368,6 +368,14 @@ TEST(MeshFilePly, BinaryErrorsGiveTheByteOffset) {
     expect_ply_error(bad, 0, 0, "byte " + std::to_string(good.size() - 10) + ": a list of 65535 entries, but only 8 bytes are left");
 }
 
+// Found by fuzz_ply: an element without properties may declare any count; reading it must not take time.
+TEST(MeshFilePly, AnElementWithoutPropertiesTakesNoTimeWhateverItsCount) {
+    const TriangleMesh m = ply("ply\nformat ascii 1.0\nelement nothing 18446744073709551615\nelement vertex 3\nproperty float x\n"
+                               "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                               "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    EXPECT_EQ(m.triangles.size(), 1u);
+}
+
 TEST(MeshFilePly, ZeroLengthNormalsAreErrors) {
     expect_ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
                      "property float nx\nproperty float ny\nproperty float nz\nend_header\n0 0 0 0 0 0\n",

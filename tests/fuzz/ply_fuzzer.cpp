@@ -1,0 +1,7 @@
+// libFuzzer target: see fuzz_entries.hpp for what ply_entry feeds to the product and what it checks.
+#include "fuzz/fuzz_entries.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    lancer::fuzz::ply_entry(data, size);
+    return 0;
+}
