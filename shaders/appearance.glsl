@@ -24,6 +24,11 @@ Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
     }
     // A checker without a transform keeps float's precision far from the origin through its phase.
     Appearance a = Appearance(world ? material_pigment(m, p, m.checker_phase.xyz) : material_pigment(m, q, vec3(0.0)), n);
+    // A smooth mesh shades with its interpolated vertex normals; a bump tilts that.
+    if (SCENE_HAS_MESH) {
+        Primitive prim = primitive_at(hit.primitive);
+        if (prim.type == SHAPE_MESH) a.normal = mesh_shading_normal(prim, hit.uv, n);
+    }
     if (SCENE_HAS_TEXTURES && m.texture_map != NO_MAP) a.pigment *= texture_color(m.texture_map, texture_uv(hit, p));
     if (!SCENE_HAS_PATTERNS) return a;
     // The colour pattern, then the bump, through one evaluation site: inlined twice, the noise
@@ -39,7 +44,7 @@ Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
             // The gradient in the object's coordinates, then the world's (its depth scaled alike).
             vec3 g = pattern_gradient(pat, f.xyz);
             if (PLACED_OBJECTS) g = world_gradient(frame, g) * frame.mean_scale;
-            a.normal = bumped_normal(pat, g, n);
+            a.normal = bumped_normal(pat, g, a.normal);
         }
     }
     return a;

@@ -15,6 +15,7 @@
 #include "shapes/cone.glsl"
 #include "shapes/torus.glsl"
 #include "shapes/box.glsl"
+#include "shapes/mesh.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)
 #include "shapes/parametric.glsl"

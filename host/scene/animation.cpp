@@ -31,6 +31,10 @@ void translate(Shape& shape, const dvec3& offset) {
             c.cap += d;
         }
         void operator()(Torus& o) const { o.center += d; }
+        void operator()(Mesh& m) const {
+            m.to_world[3] += glm::dvec4(d, 0.0);
+            m.to_object[3] -= glm::dvec4(glm::dmat3(m.to_object) * d, 0.0);
+        }
         void operator()(Csg& c) const {
             for (Object& leaf : c.leaves) translate(leaf, d);
             c.lo += d;

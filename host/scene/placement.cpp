@@ -102,6 +102,7 @@ struct Absorber {
     bool operator()(BezierSurface&) const { return true; }
     bool operator()(ParametricObject&) const { return true; }
     bool operator()(ImplicitObject&) const { return true; }
+    bool operator()(Mesh&) const { return true; }  // its reader kept the map (Mesh::to_world)
 };
 
 }  // namespace

@@ -122,6 +122,42 @@ struct PrimitivePacker {
         add({SHAPE_TORUS, material, 0, object, v4(o.center, o.major_radius), v4(o.axis, o.minor_radius), v4(o.u_axis)},
             shape_bounds(o));
     }
+    // A primitive per triangle, its vertices carried to the GPU's coordinates once per vertex, so
+    // that triangles sharing a vertex share its floats (mesh.glsl's watertightness rests on it);
+    // each triangle's row of vertex normals (zero when flat) and texture coordinates (where the
+    // file has none, the barycentric corners) is its data, numbered along the mesh.
+    void operator()(const Mesh& m) {
+        const TriangleMesh& mesh = m.geometry->mesh();
+        std::vector<glm::vec3> vertices;
+        vertices.reserve(mesh.positions.size());
+        for (const dvec3& p : mesh.positions) vertices.push_back(glm::vec3(dvec3(m.to_world * glm::dvec4(p, 1.0))));
+        std::vector<glm::vec3> normals;
+        if (m.smooth) {
+            const glm::dmat3 normal_map = glm::transpose(glm::dmat3(m.to_object));
+            normals.reserve(mesh.normals.size());
+            for (const dvec3& n : mesh.normals) {
+                const dvec3 w = normal_map * n;
+                normals.push_back(glm::length(w) > 0.0 ? glm::vec3(glm::normalize(w)) : glm::vec3(0.0f));
+            }
+        }
+        constexpr glm::dvec2 kCorners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+        out.mesh_corners.reserve(out.mesh_corners.size() + mesh.triangles.size());
+        for (const auto& t : mesh.triangles) {
+            Primitive prim{SHAPE_MESH, material, static_cast<uint>(out.mesh_corners.size()), object, {}, {}, {}};
+            MeshCorners corners{};
+            vec4* points[3] = {&prim.p0, &prim.p1, &prim.p2};
+            vec4* rows[3] = {&corners.n0, &corners.n1, &corners.n2};
+            Aabb box;
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec2 uv = mesh.uvs.empty() ? kCorners[k] : mesh.uvs[t[k]];
+                *points[k] = vec4(vertices[t[k]], float(uv.y));
+                *rows[k] = vec4(normals.empty() ? glm::vec3(0.0f) : normals[t[k]], float(uv.x));
+                box.extend(dvec3(vertices[t[k]]));
+            }
+            out.mesh_corners.push_back(corners);
+            add(prim, box);
+        }
+    }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
     // Each cell of the surface's domain is a primitive with the cell's proved box; the surface
