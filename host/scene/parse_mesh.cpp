@@ -54,7 +54,7 @@ Shape read_mesh(TableReader& t, const glm::dmat4& to_world) {
     try {
         mesh.geometry = mesh_geometry(path);
     } catch (const SceneError& e) {
-        if (e.where().line > 0 || e.where().file == path.string()) throw;  // a problem inside the file: its own place
+        if (e.where().line > 0) throw;  // a problem on a line of the file: its own place
         throw SceneError(t.location("file"), fmt::format("cannot read mesh file '{}': {}", path.string(), e.what()));
     } catch (const UserError& e) {
         throw SceneError(t.location("file"), fmt::format("cannot read mesh file '{}': {}", path.string(), e.what()));

@@ -63,13 +63,18 @@ std::optional<TriangleHit> hit_triangle(const ShearedRay& r, const dvec3& v0, co
     return TriangleHit{t, v / det, w / det};
 }
 
-// Entry distance of the ray into [lo, hi] before t_max, or nothing.
+// Entry distance of the ray into [lo, hi] before t_max, or nothing. The boxes hold their
+// triangles exactly, so a ray through a vertex passes through a box's corner, where the slabs'
+// distances are equal but rounded apart: each exit is widened by its rounding (pbrt's
+// 1 + 2 gamma(3), Ize 2013), so that such a ray is not turned away.
 std::optional<double> box_entry(const dvec3& lo, const dvec3& hi, const Ray& r, const dvec3& inv, double t_max) {
+    constexpr double kWiden = 1.0 + 8.0 * 0x1p-53;
     double enter = 0.0, leave = t_max;
     for (int k = 0; k < 3; ++k) {
         double t0 = (lo[k] - r.origin[k]) * inv[k], t1 = (hi[k] - r.origin[k]) * inv[k];
         if (std::isnan(t0) || std::isnan(t1)) continue;  // on a slab plane, parallel to it
         if (t0 > t1) std::swap(t0, t1);
+        t1 *= kWiden;
         enter = std::max(enter, t0);
         leave = std::min(leave, t1);
     }
