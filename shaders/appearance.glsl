@@ -51,10 +51,10 @@ Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
 }
 
 // The mirror direction of d about the shading normal, turned back above the geometric surface
-// if a bump tilted it below (it would otherwise start inside the object).
+// if a bump or a smooth mesh's normals tilted it below (it would otherwise start inside the object).
 vec3 bounce_direction(vec3 d, vec3 shading_normal, vec3 n) {
     vec3 r = reflect(d, shading_normal);
-    if (!SCENE_HAS_PATTERNS) return r;
+    if (!SCENE_HAS_PATTERNS && !SCENE_HAS_MESH) return r;
     float below = dot(r, n);
     return below < 0.0 ? r - 2.0 * below * n : r;
 }
