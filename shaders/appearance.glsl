@@ -24,10 +24,11 @@ Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
     }
     // A checker without a transform keeps float's precision far from the origin through its phase.
     Appearance a = Appearance(world ? material_pigment(m, p, m.checker_phase.xyz) : material_pigment(m, q, vec3(0.0)), n);
-    // A smooth mesh shades with its interpolated vertex normals; a bump tilts that.
-    if (SCENE_HAS_MESH) {
+    // A smooth mesh shades with its interpolated vertex normals; a bump tilts that. (A mesh is
+    // always placed: PLACED_OBJECTS holds where there is one.)
+    if (SCENE_HAS_MESH && PLACED_OBJECTS) {
         Primitive prim = primitive_at(hit.primitive);
-        if (prim.type == SHAPE_MESH) a.normal = mesh_shading_normal(prim, hit.uv, n);
+        if (prim.type == SHAPE_MESH && prim.p0.x != 0.0) a.normal = mesh_shading_normal(prim, hit.uv, q, frame, n);
     }
     if (SCENE_HAS_TEXTURES && m.texture_map != NO_MAP) a.pigment *= texture_color(m.texture_map, texture_uv(hit, p));
     if (!SCENE_HAS_PATTERNS) return a;

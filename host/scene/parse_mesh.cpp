@@ -13,6 +13,7 @@
 #include "mesh/mesh_file.hpp"
 #include "scene/parse_shapes.hpp"
 #include "scene/parse_surfaces.hpp"
+#include "scene/shape_bounds.hpp"
 
 namespace lancer {
 namespace {
@@ -47,7 +48,7 @@ std::shared_ptr<const MeshGeometry> mesh_geometry(const std::filesystem::path& p
 
 }  // namespace
 
-Shape read_mesh(TableReader& t, const glm::dmat4& to_world) {
+Shape read_mesh(TableReader& t, const glm::dmat4& to_world) {  // placed by place(), as the other shapes
     Mesh mesh;
     const std::string name = t.required_string("file");
     const std::filesystem::path path = std::filesystem::path(t.file()).parent_path() / name;
@@ -61,9 +62,8 @@ Shape read_mesh(TableReader& t, const glm::dmat4& to_world) {
     }
     mesh.source_file = path.string();
     mesh.smooth = t.boolean("smooth", mesh.geometry->file_normals());
-    mesh.to_world = to_world;
-    mesh.to_object = glm::inverse(to_world);
-    const std::optional<Aabb> box = shape_bounds(Shape(mesh));
+    Object placed{mesh, Placement{to_world, glm::inverse(to_world), true}};
+    const std::optional<Aabb> box = object_bounds(placed);
     check_world_extent(t, t.has("transform") ? "transform" : "file", box->lo, box->hi);
     return mesh;
 }

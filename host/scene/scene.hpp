@@ -286,16 +286,15 @@ struct Torus {
     dvec3 v_axis{0.0, 0.0, 1.0};
 };
 
-// A triangle mesh read from a file (docs/scene-format.md, "Meshes"): the file's triangles, shared
-// by every object placed from the same file, and this object's map from the file's coordinates
-// to the world (its reader's `to_world`), so that placing a mesh copies none of it. Triangles are
-// exact and watertight on both backends; `smooth` interpolates the vertex normals for shading
-// (the file's, or computed where it has none). Texture (u, v): the file's, interpolated; where
-// it has none, the hit's barycentric coordinates.
+// A triangle mesh read from a file (docs/scene-format.md, "Meshes"): the file's triangles, in its
+// own coordinates, shared by every object placed from the same file. A mesh object is always
+// placed (its Placement, the identity where it has no transform), so that both renderers trace
+// every placement through one copy of the triangles. Triangles are exact and watertight on both
+// backends; `smooth` interpolates the vertex normals for shading (the file's, or computed where
+// it has none). Texture (u, v): the file's, interpolated; where it has none, the hit's
+// barycentric coordinates.
 struct Mesh {
     std::shared_ptr<const MeshGeometry> geometry;
-    glm::dmat4 to_world{1.0};
-    glm::dmat4 to_object{1.0};  // its inverse
     bool smooth = false;
     std::string source_file;
 };

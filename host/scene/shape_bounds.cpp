@@ -48,18 +48,7 @@ struct BoundsOf {
         return Aabb{o.center - reach, o.center + reach};
     }
     std::optional<Aabb> operator()(const Csg& c) const { return Aabb{c.lo, c.hi}; }
-    // The file's box, its corners carried to the world and widened by their rounding: it holds
-    // every vertex carried alike.
-    std::optional<Aabb> operator()(const Mesh& m) const {
-        Aabb box;
-        for (int corner = 0; corner < 8; ++corner) {
-            const dvec3 p((corner & 1 ? m.geometry->hi() : m.geometry->lo()).x, (corner & 2 ? m.geometry->hi() : m.geometry->lo()).y,
-                          (corner & 4 ? m.geometry->hi() : m.geometry->lo()).z);
-            box.extend(dvec3(m.to_world * glm::dvec4(p, 1.0)));
-        }
-        const dvec3 pad = 1e-12 * glm::max(glm::abs(box.lo), glm::abs(box.hi));
-        return Aabb{box.lo - pad, box.hi + pad};
-    }
+    std::optional<Aabb> operator()(const Mesh& m) const { return Aabb{m.geometry->lo(), m.geometry->hi()}; }  // the file's
     std::optional<Aabb> operator()(const ParametricObject& p) const { return Aabb{p.bounds_lo, p.bounds_hi}; }
     std::optional<Aabb> operator()(const ImplicitObject& o) const {
         Aabb b;

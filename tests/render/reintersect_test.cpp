@@ -173,10 +173,10 @@ Scene mesh(TriangleMesh triangles) {
     Scene scene = analytic("type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\n");
     Mesh m;
     m.geometry = std::make_shared<const MeshGeometry>(std::move(triangles));
-    m.to_world = glm::translate(glm::dmat4(1.0), dvec3(0.2, 1.0, 0.3)) * glm::rotate(glm::dmat4(1.0), 0.6, dvec3(1, 2, 3)) *
-                 glm::scale(glm::dmat4(1.0), dvec3(1.4, 0.8, 1.1));
-    m.to_object = glm::inverse(m.to_world);
+    const glm::dmat4 to_world = glm::translate(glm::dmat4(1.0), dvec3(0.2, 1.0, 0.3)) *
+                                glm::rotate(glm::dmat4(1.0), 0.6, dvec3(1, 2, 3)) * glm::scale(glm::dmat4(1.0), dvec3(1.4, 0.8, 1.1));
     scene.objects[0].shape = m;
+    scene.objects[0].placement = Placement{to_world, glm::inverse(to_world), true};
     return scene;
 }
 

@@ -23,13 +23,16 @@ namespace {
 
 using glm::dvec3;
 
-Mesh mesh_of(TriangleMesh m, const glm::dmat4& to_world = glm::dmat4(1.0), bool smooth = false) {
+Mesh mesh_of(TriangleMesh m, bool smooth = false) {
     Mesh mesh;
     mesh.geometry = std::make_shared<const MeshGeometry>(std::move(m));
-    mesh.to_world = to_world;
-    mesh.to_object = glm::inverse(to_world);
     mesh.smooth = smooth;
     return mesh;
+}
+
+// A mesh object as the loader places it (always, the identity included).
+Object placed(Mesh mesh, const glm::dmat4& to_world = glm::dmat4(1.0)) {
+    return Object{std::move(mesh), Placement{to_world, glm::inverse(to_world), true}};
 }
 
 TriangleMesh one_triangle() {
@@ -63,7 +66,7 @@ TEST(Mesh, AHitOnAVertexOrAnEdgeCounts) {
 }
 
 // Every crossing of the line by the mesh, from t_min on: each hit restarts just past itself.
-int crossings(const Mesh& mesh, const cpu::Ray& ray) {
+int crossings(const Object& mesh, const cpu::Ray& ray) {
     int count = 0;
     double t = 0.0;
     while (auto h = cpu::intersect(mesh, ray, t, 1e9)) {
@@ -76,9 +79,9 @@ int crossings(const Mesh& mesh, const cpu::Ray& ray) {
 
 // Rays through each vertex and each edge's midpoint of a closed convex mesh, from outside toward
 // a point inside, cross it exactly twice: a crack would let one through, a double hit count 3.
-void expect_watertight(const Mesh& mesh, const dvec3& inside, std::mt19937& rng) {
+void expect_watertight(const Object& mesh, const dvec3& inside, std::mt19937& rng) {
     std::uniform_real_distribution<double> jitter(-0.05, 0.05);
-    const TriangleMesh& m = mesh.geometry->mesh();
+    const TriangleMesh& m = std::get<Mesh>(mesh.shape).geometry->mesh();
     std::vector<dvec3> aims;
     for (const auto& t : m.triangles)
         for (int k = 0; k < 3; ++k) {
@@ -87,7 +90,7 @@ void expect_watertight(const Mesh& mesh, const dvec3& inside, std::mt19937& rng)
         }
     int failures = 0;
     for (const dvec3& local : aims) {
-        const dvec3 aim = dvec3(mesh.to_world * glm::dvec4(local, 1.0));
+        const dvec3 aim = dvec3(mesh.placement->to_world * glm::dvec4(local, 1.0));
         const dvec3 origin = inside + 3.0 * (aim - inside) + dvec3(jitter(rng), jitter(rng), jitter(rng));
         const int n = crossings(mesh, cpu::Ray{origin, glm::normalize(aim - origin)});
         if (n != 2 && ++failures <= 5) ADD_FAILURE() << "a ray through (" << aim.x << ", " << aim.y << ", " << aim.z << ") crosses " << n << " times";
@@ -97,26 +100,27 @@ void expect_watertight(const Mesh& mesh, const dvec3& inside, std::mt19937& rng)
 
 TEST(Mesh, ClosedMeshesAreWatertightAtTheirVerticesAndEdges) {
     std::mt19937 rng(7);
-    expect_watertight(mesh_of(test::icosphere(3)), dvec3(0.01, 0.02, -0.03), rng);
-    expect_watertight(mesh_of(test::uv_sphere(12)), dvec3(0.01, 0.02, -0.03), rng);
+    expect_watertight(placed(mesh_of(test::icosphere(3))), dvec3(0.01, 0.02, -0.03), rng);
+    expect_watertight(placed(mesh_of(test::uv_sphere(12))), dvec3(0.01, 0.02, -0.03), rng);
     // Placed: traced in the file's coordinates through the map.
     const glm::dmat4 m = glm::translate(glm::dmat4(1.0), dvec3(3, -2, 5)) * glm::rotate(glm::dmat4(1.0), 0.7, dvec3(1, 2, 3)) *
                          glm::scale(glm::dmat4(1.0), dvec3(2.0, 0.5, 1.5));
-    expect_watertight(mesh_of(test::icosphere(2), m), dvec3(3, -2, 5), rng);
+    expect_watertight(placed(mesh_of(test::icosphere(2)), m), dvec3(3, -2, 5), rng);
 }
 
 TEST(Mesh, SmoothShadingInterpolatesTheVertexNormalsInTheWorld) {
     TriangleMesh t = one_triangle();
     t.normals = {{0, 0, 1}, glm::normalize(dvec3(1, 0, 1)), glm::normalize(dvec3(0, 1, 1))};
     const glm::dmat4 m = glm::scale(glm::dmat4(1.0), dvec3(1.0, 1.0, 4.0));  // normals tilt toward the flat axis
-    const Mesh mesh = mesh_of(t, m, true);
-    const dvec3 at_vertex1 = cpu::mesh_shading_normal(mesh, 0, {1.0, 0.0}, dvec3(0, 0, 1));
+    const Mesh mesh = mesh_of(t, true);
+    const Placement p = *placed(mesh, m).placement;
+    const dvec3 at_vertex1 = cpu::mesh_shading_normal(mesh, p, 0, {1.0, 0.0}, dvec3(0, 0, 1));
     const dvec3 expected = glm::normalize(dvec3(1.0, 0.0, 0.25));  // the inverse transpose's
     EXPECT_NEAR(glm::length(at_vertex1 - expected), 0.0, 1e-12);
     // Faced to the side asked for.
-    EXPECT_NEAR(glm::length(cpu::mesh_shading_normal(mesh, 0, {1.0, 0.0}, dvec3(0, 0, -1)) + expected), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(cpu::mesh_shading_normal(mesh, p, 0, {1.0, 0.0}, dvec3(0, 0, -1)) + expected), 0.0, 1e-12);
     // The middle: the normalised mean.
-    const dvec3 mid = cpu::mesh_shading_normal(mesh, 0, {1.0 / 3.0, 1.0 / 3.0}, dvec3(0, 0, 1));
+    const dvec3 mid = cpu::mesh_shading_normal(mesh, p, 0, {1.0 / 3.0, 1.0 / 3.0}, dvec3(0, 0, 1));
     EXPECT_GT(mid.x, 0.0);
     EXPECT_NEAR(mid.x, mid.y, 1e-12);
 }
@@ -186,14 +190,16 @@ TEST(Mesh, TheReaderPlacesTheFileAndSharesItBetweenPlacements) {
     ASSERT_EQ(scene.objects.size(), 2u);
     const auto& a = std::get<Mesh>(scene.objects[0].shape);
     const auto& b = std::get<Mesh>(scene.objects[1].shape);
+    ASSERT_TRUE(scene.objects[0].placement && scene.objects[1].placement);  // always placed
+    EXPECT_TRUE(scene.objects[1].placement->shape_in_object_space);
     EXPECT_EQ(a.geometry, b.geometry);  // read once
     EXPECT_EQ(a.geometry->mesh().triangles.size(), 2u);  // the quad, fanned
     EXPECT_FALSE(a.smooth);  // the file has no normals
     EXPECT_TRUE(b.smooth);
-    auto h = cpu::intersect(a, cpu::Ray{{2.5, 1.5, 3.0}, {0, 0, -1}}, 0.0, 100.0);  // (0.75, 0.75) of the quad, placed
+    auto h = cpu::intersect(scene.objects[0], cpu::Ray{{2.5, 1.5, 3.0}, {0, 0, -1}}, 0.0, 100.0);  // (0.75, 0.75) of the quad, placed
     ASSERT_TRUE(h);
     EXPECT_DOUBLE_EQ(h->t, 3.0);
-    EXPECT_FALSE(cpu::intersect(a, cpu::Ray{{0.5, 0.5, 3.0}, {0, 0, -1}}, 0.0, 100.0));
+    EXPECT_FALSE(cpu::intersect(scene.objects[0], cpu::Ray{{0.5, 0.5, 3.0}, {0, 0, -1}}, 0.0, 100.0));
 }
 
 TEST(Mesh, TheReaderRefusesWhatItCannotUse) {
@@ -242,7 +248,8 @@ material = "shiny"
     double last = 0.0;
     for (int rings : {4, 8, 16, 32, 64}) {
         Scene tessellated = exact;
-        tessellated.objects[0].shape = mesh_of(test::uv_sphere(rings), glm::dmat4(1.0), true);
+        tessellated.objects[0] = placed(mesh_of(test::uv_sphere(rings), true));
+        tessellated.objects[0].material = exact.objects[0].material;
         const double psnr = compare_images(reference, to_srgb8(test::render_on(test::Backend::Cpu, tessellated)), 4).psnr_db;
         EXPECT_GT(psnr, last + 1.0) << rings << " rings";
         last = psnr;

@@ -87,16 +87,12 @@ dvec3 object_normal(const TriangleMesh& mesh, std::uint32_t triangle) {
     return glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
 }
 
-dvec3 world_normal(const Mesh& m, const dvec3& n) { return glm::normalize(glm::transpose(glm::dmat3(m.to_object)) * n); }
-
 }  // namespace
 
-std::optional<SurfaceHit> intersect(const Mesh& m, const Ray& world_ray, double t_min, double t_max) {
+std::optional<SurfaceHit> intersect(const Mesh& m, const Ray& ray, double t_min, double t_max) {
     const TriangleMesh& mesh = m.geometry->mesh();
     const MeshTree& tree = m.geometry->tree();
     if (tree.nodes.empty()) return std::nullopt;
-    // An affine map keeps t: the ray in the file's coordinates, its direction not unit.
-    const Ray ray{dvec3(m.to_object * glm::dvec4(world_ray.origin, 1.0)), glm::dmat3(m.to_object) * world_ray.dir};
     const ShearedRay sheared(ray);
     const dvec3 inv = 1.0 / ray.dir;
     std::optional<TriangleHit> best;
@@ -133,16 +129,16 @@ std::optional<SurfaceHit> intersect(const Mesh& m, const Ray& world_ray, double 
         if (near_t) stack[depth++] = {near_child, *near_t};
     }
     if (!best) return std::nullopt;
-    return SurfaceHit{best->t, world_normal(m, object_normal(mesh, best_triangle)), {best->b1, best->b2},
+    return SurfaceHit{best->t, glm::normalize(object_normal(mesh, best_triangle)), {best->b1, best->b2},
                       static_cast<int>(best_triangle)};
 }
 
-dvec3 mesh_shading_normal(const Mesh& m, int triangle, const glm::dvec2& b, const dvec3& facing) {
+dvec3 mesh_shading_normal(const Mesh& m, const Placement& placed, int triangle, const glm::dvec2& b, const dvec3& facing) {
     const TriangleMesh& mesh = m.geometry->mesh();
     const auto& t = mesh.triangles[static_cast<std::size_t>(triangle)];
     const dvec3 n = (1.0 - b.x - b.y) * mesh.normals[t[0]] + b.x * mesh.normals[t[1]] + b.y * mesh.normals[t[2]];
     if (!(glm::length(n) > 0.0)) return facing;
-    const dvec3 world = world_normal(m, n);
+    const dvec3 world = placed.world_normal(n);
     return glm::dot(world, facing) < 0.0 ? -world : world;
 }
 
