@@ -55,6 +55,7 @@ TRANSLATED = {
     "bezier": {"file", "control_points", "patches", "transform", "subdivision"},
     "parametric": {"x", "y", "z", "u", "v", "params", "transform"},
     "implicit": {"function", "box", "params", "transform"},
+    "mesh": {"file", "smooth", "transform"},
 }
 OBJECT_KEYS = {"type", "material", "name", "transform"}
 # Groups and CSG: POV-Ray's union and its CSG words, with their operands in `objects`.
@@ -402,6 +403,72 @@ def implicit(o, implicit_as, accuracy):
             f"  accuracy {accuracy:g} max_gradient {max_gradient(node, params, lo, hi):.6g} open\n")
 
 
+def read_obj(path):
+    """An OBJ's positions, vertex normals (one per position, or none) and triangles (polygons fanned
+    from their first corner, as lancer's reader does). Normals are taken per position: the test
+    models give each position one."""
+    positions, normals, faces, corner_normals = [], [], [], {}
+    with open(path) as f:
+        for line in f:
+            words = line.split()
+            if not words:
+                continue
+            if words[0] == "v":
+                positions.append([float(x) for x in words[1:4]])
+            elif words[0] == "vn":
+                normals.append([float(x) for x in words[1:4]])
+            elif words[0] == "f":
+                corners = []
+                for w in words[1:]:
+                    parts = w.split("/")
+                    i = int(parts[0])
+                    i = i - 1 if i > 0 else len(positions) + i
+                    if len(parts) > 2 and parts[2]:
+                        n = int(parts[2])
+                        corner_normals[i] = n - 1 if n > 0 else len(normals) + n
+                    corners.append(i)
+                faces += [[corners[0], corners[k - 1], corners[k]] for k in range(2, len(corners))]
+    vertex_normals = [normals[corner_normals[i]] for i in range(len(positions))] if corner_normals else []
+    return positions, vertex_normals, faces
+
+
+def angle_weighted_normals(positions, faces):
+    """lancer's vertex normals for a mesh without them (host/mesh/mesh_geometry.cpp)."""
+    def sub(a, b): return [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+    def cross(a, b): return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    def length(a): return math.sqrt(a[0] ** 2 + a[1] ** 2 + a[2] ** 2)
+    sums = [[0.0, 0.0, 0.0] for _ in positions]
+    for f in faces:
+        a, b, c = (positions[k] for k in f)
+        n = cross(sub(b, a), sub(c, a))
+        ln = length(n)
+        if ln == 0.0:
+            continue
+        for k, (p, q, r) in zip(f, ((a, b, c), (b, c, a), (c, a, b))):
+            u, v = sub(q, p), sub(r, p)
+            lu, lv = length(u), length(v)
+            if lu == 0.0 or lv == 0.0:
+                continue
+            angle = math.acos(max(-1.0, min(1.0, sum(x * y for x, y in zip(u, v)) / (lu * lv))))
+            sums[k] = [s + angle * x / ln for s, x in zip(sums[k], n)]
+    return [[x / length(s) for x in s] if length(s) > 0.0 else [0.0, 1.0, 0.0] for s in sums]
+
+
+def mesh(o, base):
+    """POV-Ray's mesh2 with the file's triangles (and, shaded smooth, lancer's vertex normals)."""
+    path = os.path.join(base, o["file"])
+    if not path.lower().endswith(".obj"):
+        sys.exit(f"toml_to_pov: mesh file {path}: only OBJ files are translated")
+    positions, normals, faces = read_obj(path)
+    smooth = o.get("smooth", bool(normals))
+    text = f"mesh2 {{\n  vertex_vectors {{ {len(positions)},\n" + ",\n".join(vec(p) for p in positions) + "\n  }\n"
+    if smooth:
+        normals = normals or angle_weighted_normals(positions, faces)
+        text += f"  normal_vectors {{ {len(normals)},\n" + ",\n".join(vec(n) for n in normals) + "\n  }\n"
+    text += f"  face_indices {{ {len(faces)},\n" + ",\n".join(f"<{a}, {b}, {c}>" for a, b, c in faces) + "\n  }\n"
+    return text
+
+
 def shape_body(o, base, torus_as, implicit_as, accuracy):
     t = o["type"]
     if t == "sphere":
@@ -437,6 +504,8 @@ def shape_body(o, base, torus_as, implicit_as, accuracy):
         return analytic_torus(o) if torus_as == "analytic" else parametric(o)
     if t == "implicit":
         return implicit(o, implicit_as, accuracy)
+    if t == "mesh":
+        return mesh(o, base)
     sys.exit(f"toml_to_pov: object type {t} is not supported")
 
 

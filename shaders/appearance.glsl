@@ -24,6 +24,12 @@ Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
     }
     // A checker without a transform keeps float's precision far from the origin through its phase.
     Appearance a = Appearance(world ? material_pigment(m, p, m.checker_phase.xyz) : material_pigment(m, q, vec3(0.0)), n);
+    // A smooth mesh shades with its interpolated vertex normals; a bump tilts that. (A mesh is
+    // always placed: PLACED_OBJECTS holds where there is one.)
+    if (SCENE_HAS_MESH && PLACED_OBJECTS) {
+        Primitive prim = primitive_at(hit.primitive);
+        if (prim.type == SHAPE_MESH && prim.p0.x != 0.0) a.normal = mesh_shading_normal(prim, hit.uv, q, frame, n);
+    }
     if (SCENE_HAS_TEXTURES && m.texture_map != NO_MAP) a.pigment *= texture_color(m.texture_map, texture_uv(hit, p));
     if (!SCENE_HAS_PATTERNS) return a;
     // The colour pattern, then the bump, through one evaluation site: inlined twice, the noise
@@ -39,17 +45,17 @@ Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
             // The gradient in the object's coordinates, then the world's (its depth scaled alike).
             vec3 g = pattern_gradient(pat, f.xyz);
             if (PLACED_OBJECTS) g = world_gradient(frame, g) * frame.mean_scale;
-            a.normal = bumped_normal(pat, g, n);
+            a.normal = bumped_normal(pat, g, a.normal);
         }
     }
     return a;
 }
 
 // The mirror direction of d about the shading normal, turned back above the geometric surface
-// if a bump tilted it below (it would otherwise start inside the object).
+// if a bump or a smooth mesh's normals tilted it below (it would otherwise start inside the object).
 vec3 bounce_direction(vec3 d, vec3 shading_normal, vec3 n) {
     vec3 r = reflect(d, shading_normal);
-    if (!SCENE_HAS_PATTERNS) return r;
+    if (!SCENE_HAS_PATTERNS && !SCENE_HAS_MESH) return r;
     float below = dot(r, n);
     return below < 0.0 ? r - 2.0 * below * n : r;
 }

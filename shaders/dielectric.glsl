@@ -129,7 +129,7 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media, uint light) {
         from = p;
         float error = best.error;
         vec3 n = primitive_normal(best.prim, ray, best.t, p, best.uv, error);
-        origin = past_surface(p, n, ray.dir, error);
+        origin = through_surface(best.prim, p, n, ray.dir, error);
     }
     return vec3(0.0);
 }

@@ -175,6 +175,22 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // A CSG object (shaders/shapes/csg.glsl): its leaves are the primitives [first_leaf, first_leaf +
 // leaf_count), stored after every primitive the tracer traverses; its program the CSG_* ops
 // csg_ops[first_op, first_op + op_count) (shapes.h).
+// A triangle mesh on the GPU (shapes/mesh.glsl), once however many objects place it (each
+// placement is a primitive whose data is the mesh's index): its tree (MESH_NODES, children and
+// triangle ranges as absolute indices) over its triangles (MESH_TRIANGLES, in leaf order), in
+// the file's coordinates.
+#define LANCER_ROWS_MeshInfo(VEC4, VEC4S, SCALARS, UVEC4S) \
+    SCALARS(uint, first_node, uint, first_triangle, uint, triangle_count, uint, reserved)
+// A node of a mesh's tree: as the scene's BvhNode (a type of its own: each array has one).
+#define LANCER_ROWS_MeshNode(VEC4, VEC4S, SCALARS, UVEC4S) \
+    VEC4(lo) /* xyz */                              \
+    VEC4(hi) /* xyz */                              \
+    SCALARS(uint, first, uint, count, uint, reserved0, uint, reserved1)
+// A triangle: its vertices (w: texture u) and vertex normals (unit; w: texture v). A mesh
+// without texture coordinates has each vertex's barycentric corner, (0, 0), (1, 0), (0, 1).
+#define LANCER_ROWS_MeshTriangle(VEC4, VEC4S, SCALARS, UVEC4S) \
+    VEC4(v0) VEC4(v1) VEC4(v2) VEC4(n0) VEC4(n1) VEC4(n2)
+
 #define LANCER_ROWS_CsgNode(VEC4, VEC4S, SCALARS, UVEC4S) \
     SCALARS(uint, first_leaf, uint, leaf_count, uint, first_op, uint, op_count)
 
@@ -368,6 +384,9 @@ LANCER_STRUCT(ParametricCell)
 LANCER_STRUCT(ImplicitInfo)
 LANCER_STRUCT(ObjectFrame)
 LANCER_STRUCT(CsgNode)
+LANCER_STRUCT(MeshInfo)
+LANCER_STRUCT(MeshNode)
+LANCER_STRUCT(MeshTriangle)
 LANCER_STRUCT(BvhNode)
 LANCER_STRUCT(Material)
 LANCER_STRUCT(TextureInfo)
@@ -424,6 +443,9 @@ LANCER_CONST RESOURCE_INT = 4;
     X(OBJECT_FRAMES, 34, RESOURCE_ROWS, ObjectFrame, object_frames, object_frame_at, "object transforms") \
     X(CSG_NODES, 35, RESOURCE_ROWS, CsgNode, csg_nodes, csg_node_at, "CSG objects")                   \
     X(CSG_OPS, 36, RESOURCE_UINT, uint, csg_ops, csg_op_at, "CSG programs")                           \
+    X(MESHES, 37, RESOURCE_ROWS, MeshInfo, meshes, mesh_at, "meshes")                                 \
+    X(MESH_NODES, 38, RESOURCE_ROWS, MeshNode, mesh_nodes, mesh_node_at, "mesh tree nodes")            \
+    X(MESH_TRIANGLES, 39, RESOURCE_ROWS, MeshTriangle, mesh_triangles, mesh_triangle_at, "mesh triangles") \
     X(GRIDS, 31, RESOURCE_ROWS, DirectionGrid, grids, grid_at, "direction grids")                        \
     X(GRID_CELLS, 32, RESOURCE_UINT, uint, grid_cells, grid_cell_at, "direction grid cells")             \
     X(GRID_ENTRIES, 33, RESOURCE_UINT, uint, grid_entries, grid_entry_at, "direction grid entries") /* pairs: primitive, float bits of its nearest distance */
@@ -505,6 +527,9 @@ LANCER_ASSERT_SIZE(ParametricCell)
 LANCER_ASSERT_SIZE(ImplicitInfo)
 LANCER_ASSERT_SIZE(ObjectFrame)
 LANCER_ASSERT_SIZE(CsgNode)
+LANCER_ASSERT_SIZE(MeshInfo)
+LANCER_ASSERT_SIZE(MeshNode)
+LANCER_ASSERT_SIZE(MeshTriangle)
 LANCER_ASSERT_SIZE(BvhNode)
 LANCER_ASSERT_SIZE(Material)
 LANCER_ASSERT_SIZE(TextureInfo)

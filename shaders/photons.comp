@@ -113,7 +113,7 @@ void main() {
         from = p;
         if (clear && !sheet && innermost(beyond) == innermost(media)) {
             media = beyond;  // a surface that does not show
-            ray = Ray(past_surface(p, n, ray.dir, hit.error), ray.dir);
+            ray = Ray(through_surface(hit.primitive, p, n, ray.dir, hit.error), ray.dir);
             if (++passes > MAX_PASS_THROUGH_PHOTON) return;
             continue;
         }
@@ -195,7 +195,7 @@ void main() {
         ++bounces;
         if (refracts) {
             media = beyond;
-            ray.origin = past_surface(p, n, ray.dir, hit.error);
+            ray.origin = through_surface(hit.primitive, p, n, ray.dir, hit.error);
         } else {
             ray.origin = offset_origin(p, n, hit.error);
         }

@@ -15,6 +15,7 @@
 #include "shapes/cone.glsl"
 #include "shapes/torus.glsl"
 #include "shapes/box.glsl"
+#include "shapes/mesh.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)
 #include "shapes/parametric.glsl"
@@ -119,6 +120,15 @@ vec3 primitive_normal(uint index, Ray ray, float t, vec3 p, vec2 uv, inout float
         }
     }
     return shape_normal(prim, ray, t, p, uv, error);
+}
+
+// The origin of a ray going on through primitive `prim` at p (past_surface): a mesh's facet meets
+// neighbours that turn at its edges, which a grazing ray carried along its line could pass to
+// their far side; there it starts straight across (its path through a medium longer by at most
+// the offset). Twin of host/cpu/dielectric.cpp's.
+vec3 through_surface(uint prim, vec3 p, vec3 n, vec3 d, float error) {
+    if (SCENE_HAS_MESH && primitive_at(prim).type == SHAPE_MESH) return offset_origin(p, dot(d, n) < 0.0 ? -n : n, error);
+    return past_surface(p, n, d, error);
 }
 
 const int BVH_STACK_SIZE = 64;  // the builder bounds the tree depth by 60 (host/accel/bvh.cpp)

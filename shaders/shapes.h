@@ -31,7 +31,8 @@
     X(DISC, disc, Disc, 7, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SHEET)                                    \
     X(CONE, cone, Cone, 8, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SOLID)                                    \
     X(TORUS, torus, Torus, 9, SHAPE_BOUNDED)                                                             \
-    X(CSG, csg, Csg, 10, SHAPE_BOUNDED)
+    X(CSG, csg, Csg, 10, SHAPE_BOUNDED)                                                                  \
+    X(MESH, mesh, Mesh, 11, SHAPE_BOUNDED)
 
 #ifdef __cplusplus
 #include <cstdint>

@@ -140,7 +140,7 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
             if (clear && !sheet && innermost(beyond) == innermost(b.media)) {
                 // The same medium on both sides (a liquid's wall inside its glass): invisible.
                 b.media = beyond;
-                b.ray = Ray(past_surface(p, n, b.ray.dir, hit.error), b.ray.dir);
+                b.ray = Ray(through_surface(hit.primitive, p, n, b.ray.dir, hit.error), b.ray.dir);
                 b.from = p;
                 goes_on = ++passes <= MAX_PASS_THROUGH;
             } else {
@@ -152,7 +152,7 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
                 bool refracts = b.depth < frame.max_depth && max3(s.refracted_weight) >= MIN_WEIGHT;
                 Branch reflected = Branch(Ray(offset_origin(p, n, hit.error), s.reflected_dir), p, s.reflected_weight, b.depth + 1u, b.media);
                 if (refracts) {
-                    Branch refracted = Branch(Ray(past_surface(p, n, s.refracted_dir, hit.error), s.refracted_dir), p,
+                    Branch refracted = Branch(Ray(through_surface(hit.primitive, p, n, s.refracted_dir, hit.error), s.refracted_dir), p,
                                               s.refracted_weight, b.depth + 1u, beyond);
                     // The heavier goes on now, the lighter waits (dropped when the stack is full).
                     bool reflected_first = reflects && max3(s.reflected_weight) > max3(s.refracted_weight);

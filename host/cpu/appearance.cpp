@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include "cpu/pattern.hpp"
+#include "cpu/shapes/shapes.hpp"
 #include "cpu/texture.hpp"
 
 namespace lancer::cpu {
@@ -11,10 +12,12 @@ Appearance appearance_at(const Material& m, const Hit& hit, const dvec3& p, cons
     // Checkers and patterns are fixed to the object: evaluated at its own coordinates.
     const std::optional<Placement>& placed = hit.object->placement;
     const dvec3 q = placed ? placed->object_point(p) : p;
-    Appearance a{pigment_at(m, q), n};
+    // A smooth mesh shades with its interpolated vertex normals; a bump tilts that.
+    const auto* mesh = std::get_if<Mesh>(&hit.object->shape);
+    Appearance a{pigment_at(m, q), mesh && mesh->smooth ? mesh_shading_normal(*mesh, *placed, hit.part, hit.uv, n) : n};
     if (m.texture) a.pigment *= texture_color(*m.texture, texture_uv(hit, p));
     if (m.pattern) a.pigment *= pattern_color(*m.pattern, q);
-    if (m.bump) a.normal = bumped_normal(*m.bump, q, n, placed ? glm::dmat3(placed->to_world) : glm::dmat3(1.0));
+    if (m.bump) a.normal = bumped_normal(*m.bump, q, a.normal, placed ? glm::dmat3(placed->to_world) : glm::dmat3(1.0));
     return a;
 }
 

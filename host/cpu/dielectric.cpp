@@ -58,6 +58,11 @@ dvec3 past_surface(const dvec3& p, const dvec3& n, const dvec3& d, double offset
     return p + (offset / std::max(std::abs(glm::dot(d, n)), 0.01)) * d;
 }
 
+dvec3 past_surface(const Shape& shape, const dvec3& p, const dvec3& n, const dvec3& d, double offset) {
+    if (!std::holds_alternative<Mesh>(shape)) return past_surface(p, n, d, offset);
+    return p + (glm::dot(d, n) < 0.0 ? -offset : offset) * n;
+}
+
 bool is_thin_sheet(const Shape& shape) { return shape_has(shape_type(shape), SHAPE_SHEET); }
 
 }  // namespace lancer::cpu

@@ -55,6 +55,10 @@ dvec3 beer_lambert(const dvec3& a, double distance);
 // 100 ray_offset along the ray for grazing rays. On the line, paths through media keep their
 // true length (Beer-Lambert).
 dvec3 past_surface(const dvec3& p, const dvec3& n, const dvec3& d, double offset);
+// The same for a hit on `shape`: a mesh's facet meets neighbours that turn at its edges, which a
+// grazing ray carried along its line could pass to their far side; there it starts straight
+// across, `offset` off the facet (its path through a medium is then longer by at most that).
+dvec3 past_surface(const Shape& shape, const dvec3& p, const dvec3& n, const dvec3& d, double offset);
 
 // Shapes without an inside (SHAPE_SHEET: rectangles) are, transparent, thin sheets, which reflect and
 // transmit without bending the ray or changing the medium.

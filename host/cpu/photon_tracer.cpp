@@ -142,7 +142,7 @@ private:
             from = p;
             if (clear && !sheet && beyond.innermost() == media.innermost()) {
                 media = beyond;  // a surface that does not show
-                ray = {past_surface(p, n, ray.dir, ray_offset(p, offset_origin_)), ray.dir};
+                ray = {past_surface(hit.object->shape, p, n, ray.dir, ray_offset(p, offset_origin_)), ray.dir};
                 if (++passes > kMaxPassThrough) return;
                 continue;
             }
@@ -205,7 +205,7 @@ private:
             ++bounces;
             if (refracts) {
                 media = beyond;
-                ray.origin = past_surface(p, n, ray.dir, ray_offset(p, offset_origin_));
+                ray.origin = past_surface(hit.object->shape, p, n, ray.dir, ray_offset(p, offset_origin_));
             } else {
                 ray.origin = p + ray_offset(p, offset_origin_) * n;
             }

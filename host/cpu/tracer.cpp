@@ -162,7 +162,7 @@ dvec3 Tracer::transmittance(dvec3 from, dvec3 origin, const dvec3& q, Media medi
         if (std::max({through.r, through.g, through.b}) < kMinWeight) return dvec3(0.0);
         media = beyond;
         from = p;
-        origin = past_surface(p, hit.normal, ray.dir, ray_offset(p, offset_origin_));
+        origin = past_surface(hit.object->shape, p, hit.normal, ray.dir, ray_offset(p, offset_origin_));
     }
 }
 
@@ -276,7 +276,7 @@ dvec3 Tracer::phong_hit(const Material& m, const Hit& hit, const dvec3& p, const
         reflected.weight += passing * f.reflectance;
         refracted.weight = passing * (1.0 - f.reflectance);
         if (!sheet) refracted.ray.dir = refract(b.ray.dir, n, n1 / n2, cos_i, f.cos_t);
-        refracted.ray.origin = past_surface(p, n, refracted.ray.dir, ray_offset(p, offset_origin_));
+        refracted.ray.origin = past_surface(hit.object->shape, p, n, refracted.ray.dir, ray_offset(p, offset_origin_));
     }
     return color;
 }
@@ -304,7 +304,7 @@ dvec3 Tracer::microfacet_hit(const Material& m, const Hit& hit, const dvec3& p, 
     reflected.weight = b.weight * split.reflected.weight;
     refracted.weight = b.weight * split.refracted.weight;
     if (!sheet) refracted.ray.dir = split.refracted.dir;
-    refracted.ray.origin = past_surface(p, n, refracted.ray.dir, ray_offset(p, offset_origin_));
+    refracted.ray.origin = past_surface(hit.object->shape, p, n, refracted.ray.dir, ray_offset(p, offset_origin_));
     return color;
 }
 
@@ -334,7 +334,7 @@ dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
             if (clear && !sheet && beyond.innermost() == b.media.innermost()) {
                 // The same medium on both sides (a liquid's wall inside its glass): invisible.
                 b.media = beyond;
-                b.ray = {past_surface(p, n, b.ray.dir, ray_offset(p, offset_origin_)), b.ray.dir};
+                b.ray = {past_surface(hit.object->shape, p, n, b.ray.dir, ray_offset(p, offset_origin_)), b.ray.dir};
                 b.from = p;
                 goes_on = ++passes <= kMaxPassThrough;
             } else {

@@ -1,6 +1,7 @@
 #include "scene/animation.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/common.hpp>
 
@@ -31,6 +32,9 @@ void translate(Shape& shape, const dvec3& offset) {
             c.cap += d;
         }
         void operator()(Torus& o) const { o.center += d; }
+        void operator()(Mesh&) const {  // moved by its placement (place() always gives it one)
+            throw std::logic_error("a mesh is moved by its placement, not by its shape");
+        }
         void operator()(Csg& c) const {
             for (Object& leaf : c.leaves) translate(leaf, d);
             c.lo += d;

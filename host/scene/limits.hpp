@@ -24,6 +24,9 @@ constexpr int kMaxPlacements = 1 << 16;
 // together must not exhaust memory either. Each parametric surface also becomes a function in
 // the GPU's shader, compiled when the scene is loaded.
 constexpr long long kMaxPatches = 1 << 16;
+// Triangles of a scene's mesh files together (each file's once, however often it is placed):
+// 96 bytes each on the GPU, with their tree; in float, a triangle's index is exact below 2^24.
+constexpr long long kMaxMeshTriangles = 1LL << 24;
 constexpr int kMaxParametricSurfaces = 32;
 constexpr int kMaxImplicitSurfaces = 32;  // each also a function in the shader
 // Operations of a parametric surface's equations after simplification, and of all surfaces of a

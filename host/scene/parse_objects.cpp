@@ -57,6 +57,8 @@ struct SurfaceTotals {
     int implicit = 0;
     int operations = 0;
     long long patches = 0;
+    long long triangles = 0;
+    std::set<const MeshGeometry*> meshes;  // counted once however often placed
 
     void before(TableReader& t, const std::optional<std::string>& type) {
         if (type == "parametric" && ++parametric > limits::kMaxParametricSurfaces)
@@ -78,6 +80,11 @@ struct SurfaceTotals {
             t.fail("type", fmt::format("the parametric and implicit surfaces' equations take {} operations so far; the "
                                        "limit is {} per scene (all of them are compiled into the GPU's tracer)",
                                        operations, limits::kMaxSceneSurfaceOperations));
+        const auto* mesh = std::get_if<Mesh>(&o.shape);
+        if (mesh && meshes.insert(mesh->geometry.get()).second &&
+            (triangles += static_cast<long long>(mesh->geometry->mesh().triangles.size())) > limits::kMaxMeshTriangles)
+            t.fail("file", fmt::format("too many mesh triangles: {} so far in the scene's mesh files (the limit is {})",
+                                       triangles, limits::kMaxMeshTriangles));
         const auto* b = std::get_if<BezierSurface>(&o.shape);
         if (b && (patches += static_cast<long long>(b->patches.size())) > limits::kMaxPatches)
             t.fail("type", fmt::format("too many Bezier patches: {} so far (the limit is {} per scene)", patches,

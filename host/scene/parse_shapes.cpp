@@ -168,6 +168,7 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"cylinder", read_cylinder},
         {"cone", read_cone},
         {"torus", read_torus},
+        {"mesh", read_mesh},
     };
     return readers;
 }

@@ -102,12 +102,13 @@ struct Absorber {
     bool operator()(BezierSurface&) const { return true; }
     bool operator()(ParametricObject&) const { return true; }
     bool operator()(ImplicitObject&) const { return true; }
+    bool operator()(Mesh&) const { return false; }  // shared by its placements: never copied
 };
 
 }  // namespace
 
 void place(Object& o, const glm::dmat4& m) {
-    if (m == glm::dmat4(1.0)) {
+    if (m == glm::dmat4(1.0) && !std::holds_alternative<Mesh>(o.shape)) {
         o.placement.reset();
         return;
     }

@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "image/tone.hpp"
 #include "optics/metals.hpp"
+#include "mesh/mesh_geometry.hpp"
 #include "scene/material_maps.hpp"
 #include "shapes.h"  // the shape registry
 #include "surface/bezier_patch.hpp"
@@ -285,6 +286,19 @@ struct Torus {
     dvec3 v_axis{0.0, 0.0, 1.0};
 };
 
+// A triangle mesh read from a file (docs/scene-format.md, "Meshes"): the file's triangles, in its
+// own coordinates, shared by every object placed from the same file. A mesh object is always
+// placed (its Placement, the identity where it has no transform), so that both renderers trace
+// every placement through one copy of the triangles. Triangles are exact and watertight on both
+// backends; `smooth` interpolates the vertex normals for shading (the file's, or computed where
+// it has none). Texture (u, v): the file's, interpolated; where it has none, the hit's
+// barycentric coordinates.
+struct Mesh {
+    std::shared_ptr<const MeshGeometry> geometry;
+    bool smooth = false;
+    std::string source_file;
+};
+
 struct Object;
 
 // Constructive solid geometry: POV-Ray's intersection, difference and merge (docs/scene-format.md,
@@ -298,7 +312,7 @@ struct Csg {
     dvec3 lo{0.0}, hi{0.0};  // the world box the combination lies in
 };
 
-using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus, Csg>;
+using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus, Csg, Mesh>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \

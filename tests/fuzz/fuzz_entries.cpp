@@ -151,6 +151,14 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require(std::abs(glm::length(s.axis) - 1.0) < 1e-9, when, ": torus axis not unit");
                     require(std::isfinite(s.major_radius) && s.major_radius > 0.0, when, ": torus major radius");
                     require(std::isfinite(s.minor_radius) && s.minor_radius > 0.0, when, ": torus minor radius");
+                } else if constexpr (std::is_same_v<T, Mesh>) {
+                    require(s.geometry && !s.geometry->mesh().triangles.empty(), when, ": mesh without triangles");
+                    const TriangleMesh& m = s.geometry->mesh();
+                    for (const auto& t : m.triangles)
+                        for (std::uint32_t v : t) require(v < m.positions.size(), when, ": mesh index");
+                    for (const dvec3& p : m.positions) require_finite(p, when, ": mesh vertex");
+                    require(m.normals.size() == m.positions.size(), when, ": mesh normals");
+                    require(o.placement && o.placement->shape_in_object_space, when, ": a mesh is always placed");
                 } else if constexpr (std::is_same_v<T, Box>) {
                     require_finite(s.min, when, ": box");
                     require_finite(s.max, when, ": box");

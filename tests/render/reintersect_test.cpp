@@ -36,6 +36,8 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 #include <gtest/gtest.h>
 
 #include "scene/shape_bounds.hpp"
@@ -46,6 +48,7 @@
 #include "scene/placement.hpp"
 #include "support/gpu_kernel.hpp"
 #include "support/rational_patches.hpp"
+#include "support/test_meshes.hpp"
 #include "support/reintersect_judge.hpp"
 #include "support/test_support.hpp"
 
@@ -89,6 +92,7 @@ void main() {
     Ray next = ray;
     vec3 p = vec3(0.0), n = vec3(0.0);
     float error = 0.0;
+    uint first = NO_PRIMITIVE;
     for (int k = 0; k < 3; ++k) {
         Hit hit;
         bool found = closest_hit(next, 0.0, NO_GRID, hit);
@@ -98,6 +102,7 @@ void main() {
             p = ray.origin + hit.t * ray.dir;
             n = dot(hit.normal, ray.dir) > 0.0 ? -hit.normal : hit.normal;
             error = hit.error;
+            first = hit.primitive;
             pixels[i + 3u] = vec4(hit.t, error, 0.0, 0.0);
             pixels[i + 4u] = vec4(p, 0.0);
             pixels[i + 5u] = vec4(n, 0.0);
@@ -110,7 +115,7 @@ void main() {
             pixels[i + 6u].w = t;
             pixels[i + 7u].w = e;
             pixels[i + 10u] = vec4(hit.normal, 0.0);
-            next = Ray(past_surface(p, n, ray.dir, error), ray.dir);
+            next = Ray(through_surface(first, p, n, ray.dir, error), ray.dir);
             pixels[i + 8u] = vec4(next.origin, 0.0);
         } else {
             pixels[i + 8u].w = t;
@@ -158,6 +163,20 @@ Scene analytic(const std::string& object) {
 Scene bezier(std::vector<surface::BezierPatch> patches) {
     Scene scene = analytic("type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\n");
     scene.objects[0].shape = BezierSurface{std::move(patches), 1, ""};
+    return scene;
+}
+
+// A closed mesh, flat-shaded, tilted and stretched by its own map (Mesh::to_world): its creases
+// turn by up to about 10 degrees, which a ray going on through the surface along its line would
+// pass (through_surface goes straight across on a mesh).
+Scene mesh(TriangleMesh triangles) {
+    Scene scene = analytic("type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\n");
+    Mesh m;
+    m.geometry = std::make_shared<const MeshGeometry>(std::move(triangles));
+    const glm::dmat4 to_world = glm::translate(glm::dmat4(1.0), dvec3(0.2, 1.0, 0.3)) *
+                                glm::rotate(glm::dmat4(1.0), 0.6, dvec3(1, 2, 3)) * glm::scale(glm::dmat4(1.0), dvec3(1.4, 0.8, 1.1));
+    scene.objects[0].shape = m;
+    scene.objects[0].placement = Placement{to_world, glm::inverse(to_world), true};
     return scene;
 }
 
@@ -232,6 +251,9 @@ const Case kCases[] = {
     {"ellipsoid_far_from_origin", [] { return moved_far(analytic(kEllipsoid)); }},
     {"disc_stretched", [] { return analytic(std::string(kDisc) + "transform = { scale = [2, 1, 0.5] }\n"); }},
     {"box_far_from_origin", [] { return moved_far(analytic("type = \"box\"\nmin = [-1, 0.1, -0.7]\nmax = [1.2, 1.6, 0.9]\n")); }},
+    {"mesh_icosphere", [] { return mesh(test::icosphere(3)); }},
+    {"mesh_icosphere_far_from_origin", [] { return moved_far(mesh(test::icosphere(3))); }},
+    {"mesh_icosahedron", [] { return mesh(test::icosphere(0)); }},
     {"bezier_teapot", [] { return only_object(test::shipped_scene("teapot", 64, 36), 1); }},
     {"bezier_teapot_far_from_origin", [] { return moved_far(only_object(test::shipped_scene("teapot", 64, 36), 1)); }},
     {"bezier_rational_sphere", [] { return bezier(rational_sphere(dvec3(0.2, 1.0, 0.3), 1.2)); }},

@@ -59,6 +59,18 @@ std::optional<SurfaceHit> intersect(const ImplicitObject& o, const Ray& ray, dou
 // the normal and (u, v) the leaf's there).
 std::optional<SurfaceHit> intersect(const Csg& c, const Ray& ray, double t_min, double t_max);
 
+// Triangle meshes (mesh.cpp), in the file's coordinates (an object's placement carries rays
+// there): the nearest triangle hit by Woop, Benthin and Wald's watertight test (2013), through
+// the mesh's own tree (MeshGeometry::tree); `part` the triangle, `uv` the hit's barycentric
+// weights of its second and third vertices. Where two triangles share an edge, a ray through it
+// hits at least one of them: no cracks. Any ray direction length works.
+std::optional<SurfaceHit> intersect(const Mesh& m, const Ray& ray, double t_min, double t_max);
+// Triangle `triangle`'s interpolated vertex normal at barycentric (b1, b2), in the world (through
+// `placed`), on the side of `facing`; where the vertex normals cancel, `facing` itself.
+dvec3 mesh_shading_normal(const Mesh& m, const Placement& placed, int triangle, const glm::dvec2& b, const dvec3& facing);
+// The file's (u, v) interpolated; without any, the barycentric weights themselves.
+glm::dvec2 mesh_texture_uv(const Mesh& m, int triangle, const glm::dvec2& b);
+
 // An object's nearest hit: its shape's, carried through its placement where the shape keeps its
 // own coordinates (placed.cpp); the normal is the world's.
 std::optional<SurfaceHit> intersect(const Object& o, const Ray& ray, double t_min, double t_max);

@@ -12,6 +12,7 @@
 #include "scene/shape_bounds.hpp"
 #include "core/finite.hpp"
 #include "gpu/packing/float_bounds.hpp"
+#include "accel/bvh.hpp"
 #include "surface/parametric_cells.hpp"
 
 namespace lancer::gpu {
@@ -121,6 +122,51 @@ struct PrimitivePacker {
     void operator()(const Torus& o) {
         add({SHAPE_TORUS, material, 0, object, v4(o.center, o.major_radius), v4(o.axis, o.minor_radius), v4(o.u_axis)},
             shape_bounds(o));
+    }
+    // One primitive per placement (in the file's coordinates: its object's frame carries rays
+    // there; its box, the world's, comes from the caller), p0.x = 1 where shaded smooth. The
+    // mesh itself, once: its triangles in the order of its own BVH's leaves (built here, over
+    // their float boxes), and that tree.
+    void operator()(const Mesh& m) {
+        const auto [found, added] = out.mesh_indices.try_emplace(m.geometry.get(), static_cast<uint>(out.meshes.size()));
+        if (added) pack_mesh(*m.geometry);
+        add({SHAPE_MESH, material, found->second, object, vec4(m.smooth ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f), {}, {}},
+            shape_bounds(m));
+    }
+    void pack_mesh(const MeshGeometry& geometry) {
+        const TriangleMesh& mesh = geometry.mesh();
+        std::vector<Aabb> boxes;
+        boxes.reserve(mesh.triangles.size());
+        for (const auto& t : mesh.triangles) {
+            Aabb box;
+            for (std::uint32_t v : t) box.extend(dvec3(glm::vec3(mesh.positions[v])));  // the float vertex
+            boxes.push_back(box);
+        }
+        const Bvh bvh = build_bvh(boxes);
+        const MeshInfo info{static_cast<uint>(out.mesh_nodes.size()), static_cast<uint>(out.mesh_triangles.size()),
+                            static_cast<uint>(mesh.triangles.size()), 0u};
+        for (const lancer::BvhNode& n : bvh.nodes) {
+            MeshNode g{};
+            pack_box(n.box, g.lo, g.hi);
+            g.first = n.count > 0 ? info.first_triangle + n.first : info.first_node + n.first;
+            g.count = n.count;
+            out.mesh_nodes.push_back(g);
+        }
+        constexpr glm::dvec2 kCorners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+        out.mesh_triangles.reserve(out.mesh_triangles.size() + mesh.triangles.size());
+        for (std::uint32_t index : bvh.order) {
+            const auto& t = mesh.triangles[index];
+            MeshTriangle tr{};
+            vec4* vertices[3] = {&tr.v0, &tr.v1, &tr.v2};
+            vec4* normals[3] = {&tr.n0, &tr.n1, &tr.n2};
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec2 uv = mesh.uvs.empty() ? kCorners[k] : mesh.uvs[t[k]];
+                *vertices[k] = v4(mesh.positions[t[k]], uv.x);
+                *normals[k] = v4(mesh.normals[t[k]], uv.y);
+            }
+            out.mesh_triangles.push_back(tr);
+        }
+        out.meshes.push_back(info);
     }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 

@@ -4,6 +4,7 @@
 // BVH and direction grids (acceleration_plan), the materials and lights (material_packing); and
 // which optional shader features the scene needs. Pure data conversion, no Vulkan.
 #include <array>
+#include <map>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -43,6 +44,8 @@ struct PackedScene {
     std::vector<Primitive> csg_leaves;
     uint csg_leaf_frames = 0;
     std::size_t csg_leaf_count = 0;
+    // Each mesh's index in `meshes`: packed once however many objects place it.
+    std::map<const MeshGeometry*, uint> mesh_indices;
     // The scene's shape families and shading features: scene_shapes, has_bvh, has_textures, ...
     // (output_hits and check_loop_limit are the renderer's to set).
     ShaderFeatures features;
