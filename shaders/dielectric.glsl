@@ -117,7 +117,7 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media, uint light) {
         }
         if (hinted) shadow_blockers[light] = best.prim;
         if (any_hit_blocks || k == MAX_SHADOW_CROSSINGS) break;
-        uint mat = primitive_at(best.prim).material;
+        uint mat = hit_material(best.prim, best.uv);
         Material m = material_at(mat);
         if (!is_transparent(m)) break;
         vec3 p = ray.origin + best.t * ray.dir;

@@ -178,9 +178,10 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // A triangle mesh on the GPU (shapes/mesh.glsl), once however many objects place it (each
 // placement is a primitive whose data is the mesh's index): its tree (MESH_NODES, children and
 // triangle ranges as absolute indices) over its triangles (MESH_TRIANGLES, in leaf order), in
-// the file's coordinates.
+// the file's coordinates; where placements take the file's own materials, each triangle's
+// (MESH_MATERIALS from first_material, in the same order; else NO_MAP).
 #define LANCER_ROWS_MeshInfo(VEC4, VEC4S, SCALARS, UVEC4S) \
-    SCALARS(uint, first_node, uint, first_triangle, uint, triangle_count, uint, reserved)
+    SCALARS(uint, first_node, uint, first_triangle, uint, triangle_count, uint, first_material)
 // A node of a mesh's tree: as the scene's BvhNode (a type of its own: each array has one).
 #define LANCER_ROWS_MeshNode(VEC4, VEC4S, SCALARS, UVEC4S) \
     VEC4(lo) /* xyz */                              \
@@ -446,6 +447,7 @@ LANCER_CONST RESOURCE_INT = 4;
     X(MESHES, 37, RESOURCE_ROWS, MeshInfo, meshes, mesh_at, "meshes")                                 \
     X(MESH_NODES, 38, RESOURCE_ROWS, MeshNode, mesh_nodes, mesh_node_at, "mesh tree nodes")            \
     X(MESH_TRIANGLES, 39, RESOURCE_ROWS, MeshTriangle, mesh_triangles, mesh_triangle_at, "mesh triangles") \
+    X(MESH_MATERIALS, 40, RESOURCE_UINT, uint, mesh_materials, mesh_material_at, "mesh triangles' materials") \
     X(GRIDS, 31, RESOURCE_ROWS, DirectionGrid, grids, grid_at, "direction grids")                        \
     X(GRID_CELLS, 32, RESOURCE_UINT, uint, grid_cells, grid_cell_at, "direction grid cells")             \
     X(GRID_ENTRIES, 33, RESOURCE_UINT, uint, grid_entries, grid_entry_at, "direction grid entries") /* pairs: primitive, float bits of its nearest distance */

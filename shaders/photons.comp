@@ -105,7 +105,7 @@ void main() {
         if (SCENE_HAS_TRANSPARENCY && media.count > 0u) power *= absorption_over(innermost(media), length(p - from));
         vec3 n = hit.normal;
         if (dot(n, ray.dir) > 0.0) n = -n;  // facing the photon
-        uint mat = primitive_at(hit.primitive).material;
+        uint mat = hit_material(hit.primitive, hit.uv);
         Material m = material_at(mat);
         bool clear = SCENE_HAS_TRANSPARENCY && is_transparent(m);
         bool sheet = clear && is_thin_sheet(hit.primitive);

@@ -426,6 +426,14 @@ bool closest_hit(Ray ray, float t_min, uint grid, out Hit hit) {
     return true;
 }
 
+// The material at a hit on primitive `prim` with parameters uv (Hit.uv): its primitive's, or a
+// mesh triangle's own.
+uint hit_material(uint prim, vec2 uv) {
+    Primitive p = primitive_at(prim);
+    if (SCENE_HAS_MESH && p.type == SHAPE_MESH) return mesh_hit_material(p, uv);
+    return p.material;
+}
+
 // The hit's parameters on its whole surface (a Bezier leaf's are mapped to its patch's).
 vec2 surface_uv(Hit hit) {
     Primitive prim = primitive_at(hit.primitive);

@@ -132,7 +132,7 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
             vec3 p = b.ray.origin + hit.t * b.ray.dir;
             vec3 n = hit.normal;
             if (dot(n, b.ray.dir) > 0.0) n = -n;  // two-sided surfaces
-            uint mat = primitive_at(hit.primitive).material;
+            uint mat = hit_material(hit.primitive, hit.uv);
             Material m = material_at(mat);
             bool clear = SCENE_HAS_TRANSPARENCY && is_transparent(m);
             bool sheet = clear && is_thin_sheet(hit.primitive);

@@ -135,10 +135,10 @@ private:
             dvec3 p = ray.origin + hit.t * ray.dir;
             if (media.size() > 0) power *= tracer_.absorption_along(media, glm::length(p - from));
             dvec3 n = glm::dot(hit.normal, ray.dir) > 0.0 ? -hit.normal : hit.normal;  // facing the photon
-            const Material& m = scene_.materials[hit.object->material];
+            const Material& m = scene_.materials[hit.material];
             const bool clear = m.transparent();
             const bool sheet = clear && is_thin_sheet(hit.object->shape);
-            Media beyond = clear && !sheet ? media.crossed(hit.object->material) : media;
+            Media beyond = clear && !sheet ? media.crossed(hit.material) : media;
             from = p;
             if (clear && !sheet && beyond.innermost() == media.innermost()) {
                 media = beyond;  // a surface that does not show
@@ -154,7 +154,7 @@ private:
             if (m.microfacet()) {
                 std::array<double, 3> u = {rng.next(), rng.next(), rng.next()};
                 if (m.conductor) {
-                    Scattered s = sample_metal(m, tracer_.terms()[hit.object->material], n, wo, u);
+                    Scattered s = sample_metal(m, tracer_.terms()[hit.material], n, wo, u);
                     double p_keep = std::min(1.0, max_of(s.weight));
                     if (!(rng.next() < p_keep)) return;
                     ray.dir = s.dir;

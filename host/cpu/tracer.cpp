@@ -128,6 +128,8 @@ bool Tracer::closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) c
             // A CSG hit is its leaf's: shaded with the leaf's material, placement and texture.
             const auto* csg = std::get_if<Csg>(&object.shape);
             hit.object = csg ? &csg->leaves[static_cast<std::size_t>(h->part)] : &object;
+            const auto* mesh = std::get_if<Mesh>(&object.shape);
+            hit.material = mesh ? mesh->material_of(static_cast<std::size_t>(h->part), object.material) : hit.object->material;
         }
         return true;
     });
@@ -152,12 +154,12 @@ dvec3 Tracer::transmittance(dvec3 from, dvec3 origin, const dvec3& q, Media medi
         Ray ray{origin, to_light / dist};
         Hit hit;
         if (!closest_hit(ray, 0.0, dist, hit)) return through * absorption_along(media, glm::length(q - from));
-        const Material& m = scene_.materials[hit.object->material];
+        const Material& m = scene_.materials[hit.material];
         if (crossings == kMaxShadowCrossings || !m.transparent()) return dvec3(0.0);
         dvec3 p = ray.origin + hit.t * ray.dir;
         through *= absorption_along(media, glm::length(p - from));  // between surface points
         bool sheet = is_thin_sheet(hit.object->shape);
-        Media beyond = sheet ? media : media.crossed(hit.object->material);
+        Media beyond = sheet ? media : media.crossed(hit.material);
         if (sheet || beyond.innermost() != media.innermost()) through *= (1.0 - m.reflection) * m.transmission;
         if (std::max({through.r, through.g, through.b}) < kMinWeight) return dvec3(0.0);
         media = beyond;
@@ -284,7 +286,7 @@ dvec3 Tracer::phong_hit(const Material& m, const Hit& hit, const dvec3& p, const
 dvec3 Tracer::microfacet_hit(const Material& m, const Hit& hit, const dvec3& p, const dvec3& n, const Branch& b,
                              const Media& beyond, bool sheet, std::uint32_t seed_d, Branch& reflected,
                              Branch& refracted, double& rays) const {
-    const MicrofacetTerms& terms = terms_[hit.object->material];
+    const MicrofacetTerms& terms = terms_[hit.material];
     const dvec3 wo = -b.ray.dir;
     const double n1 = ior_of(b.media);
     const double n2 = sheet ? m.ior : ior_of(beyond);
@@ -327,10 +329,10 @@ dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
         } else {
             dvec3 p = b.ray.origin + hit.t * b.ray.dir;
             dvec3 n = glm::dot(hit.normal, b.ray.dir) > 0.0 ? -hit.normal : hit.normal;  // two-sided
-            const Material& m = scene_.materials[hit.object->material];
+            const Material& m = scene_.materials[hit.material];
             const bool clear = m.transparent();
             const bool sheet = clear && is_thin_sheet(hit.object->shape);
-            Media beyond = clear && !sheet ? b.media.crossed(hit.object->material) : b.media;
+            Media beyond = clear && !sheet ? b.media.crossed(hit.material) : b.media;
             if (clear && !sheet && beyond.innermost() == b.media.innermost()) {
                 // The same medium on both sides (a liquid's wall inside its glass): invisible.
                 b.media = beyond;

@@ -21,8 +21,9 @@ struct Hit {
     double t;
     dvec3 normal;  // unit, not yet facing the ray
     glm::dvec2 uv;
-    int part;  // patch index within a Bezier surface, else -1
+    int part;  // patch index within a Bezier surface, triangle of a mesh, else -1
     const Object* object;
+    std::uint32_t material;  // the object's, or a mesh triangle's own (Mesh::material_of)
 };
 
 class Tracer {

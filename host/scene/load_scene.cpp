@@ -207,7 +207,7 @@ Scene parse_scene(std::string_view text, const std::string& path) {
         scene.materials.push_back(Material{"default"});
     }
 
-    const std::vector<std::size_t> entry_starts = read_objects(top, material_index, default_material, scene);
+    const std::vector<std::size_t> entry_starts = read_objects(top, material_index, default_material, scene, textures);
     read_animation(top, root, scene, entry_starts);
     top.finish();
     if (scene.photons) check_photon_lights(scene);

@@ -1,11 +1,13 @@
 #include "scene/parse_objects.hpp"
 
+#include <map>
 #include <set>
 
 #include <fmt/format.h>
 #include <glm/mat4x4.hpp>
 
 #include "scene/limits.hpp"
+#include "scene/mesh_materials.hpp"
 #include "scene/parse_shapes.hpp"
 #include "scene/placement.hpp"
 #include "scene/shape_bounds.hpp"
@@ -108,7 +110,10 @@ struct ObjectReading {
     const MaterialIndex& materials;
     SurfaceTotals totals;
     Scene& scene;
-    const toml::table* declared = nullptr;  // [declare.NAME]: objects declared once, placed by `type = "object"`
+    TextureLibrary& textures;
+    std::uint32_t default_material;
+    const toml::table* declared = nullptr;
+    std::map<const MeshGeometry*, std::vector<std::uint32_t>> mesh_materials;  // each file's, added once  // [declare.NAME]: objects declared once, placed by `type = "object"`
 
     // POV-Ray's object { Name ... }: the object declared as [declare.NAME] that `of` names, read
     // again for this placement (its `transform` after the declared one's; its `material` for the
@@ -176,6 +181,13 @@ struct ObjectReading {
                 t.fail("name", "a group's member cannot have its own name: an animation moves the whole group, by its name");
             scene.objects.push_back(read_object(t, type, materials, material, parent));
             Object& o = scene.objects.back();
+            // A mesh with materials of its own and none from the scene takes its file's.
+            if (auto* mesh = std::get_if<Mesh>(&o.shape);
+                mesh && o.material == default_material && !mesh->geometry->mesh().triangle_materials.empty()) {
+                auto [found, added] = mesh_materials.try_emplace(mesh->geometry.get());
+                if (added) found->second = add_mesh_materials(*mesh->geometry, t, scene, textures);
+                mesh->part_materials = found->second;
+            }
             if (depth > 0) o.name = group;
             totals.after(t, o);
             if (scene.objects.size() > static_cast<std::size_t>(limits::kMaxObjects))
@@ -265,14 +277,14 @@ struct ObjectReading {
 }  // namespace
 
 std::vector<std::size_t> read_objects(TableReader& top, const MaterialIndex& materials, std::uint32_t default_material,
-                                      Scene& scene) {
+                                      Scene& scene, TextureLibrary& textures) {
     std::vector<std::size_t> entry_starts{0};
     const toml::table* declared = top.table("declare");
     const toml::array* objects = top.array("object");
     if (!objects) return entry_starts;
     if (objects->size() > static_cast<std::size_t>(limits::kMaxObjects))
         top.fail("object", "too many objects (the limit is " + std::to_string(limits::kMaxObjects) + ")");
-    ObjectReading reading{materials, {}, scene, declared};
+    ObjectReading reading{materials, {}, scene, textures, default_material, declared};
     for_each_table(*objects, top.file(), "[[object]]", [&](const toml::table& t, std::size_t index) {
         TableReader o(t, top.file(), describe_object("object " + std::to_string(index + 1), t));
         reading.entry(o, default_material, glm::dmat4(1.0), 0);

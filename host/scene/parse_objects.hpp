@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/parse_material_maps.hpp"
 #include "scene/scene.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -19,6 +20,6 @@ using MaterialIndex = std::map<std::string, std::uint32_t, std::less<>>;  // mat
 // members of groups without one, take default_material). Entry i made the objects
 // [starts[i], starts[i + 1]) of the returned starts: what [animation] moves by its name.
 std::vector<std::size_t> read_objects(TableReader& top, const MaterialIndex& materials, std::uint32_t default_material,
-                                      Scene& scene);
+                                      Scene& scene, TextureLibrary& textures);
 
 }  // namespace lancer

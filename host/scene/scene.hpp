@@ -297,6 +297,16 @@ struct Mesh {
     std::shared_ptr<const MeshGeometry> geometry;
     bool smooth = false;
     std::string source_file;
+    // Where the object takes its file's materials (an OBJ's MTL; the object, its group and its
+    // placement name none): the scene material of each of the file's, else empty (the object's
+    // material everywhere).
+    std::vector<std::uint32_t> part_materials;
+
+    // The material of triangle `triangle`, `object_material` unless the file's apply.
+    std::uint32_t material_of(std::size_t triangle, std::uint32_t object_material) const {
+        if (part_materials.empty()) return object_material;
+        return part_materials[geometry->mesh().triangle_materials[triangle]];
+    }
 };
 
 struct Object;

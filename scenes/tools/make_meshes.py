@@ -2,6 +2,7 @@
 """Writes the meshes of scenes/meshes.toml into scenes/models/: a (3, 2) torus knot as a tube
 (smooth, with vertex normals), and a faceted gem (flat). Run from the repository root:
     python3 scenes/tools/make_meshes.py
+With --million, the same knot of 10^6 triangles for the benchmark, into bench/out/.
 """
 import math
 import os
@@ -63,13 +64,29 @@ def gem(path, facets=12):
         fs.append((c0 + k, c0 + k1, g0 + k))
         fs.append((c0 + k1, g0 + k1, g0 + k))
         fs.append((g0 + k, g0 + k1, bottom))
+    # Its own materials (an MTL beside it): the crown (table and upper facets) and the pavilion.
+    mtl = os.path.splitext(path)[0] + ".mtl"
+    with open(mtl, "w") as f:
+        f.write("# the gem's materials, written by scenes/tools/make_meshes.py\n")
+        f.write("newmtl crown\nKd 0.55 0.75 0.95\nKs 0.9 0.9 0.9\nNs 120\n")
+        f.write("newmtl pavilion\nKd 0.25 0.35 0.85\nKs 0.6 0.6 0.6\nNs 60\n")
     with open(path, "w") as f:
         f.write("# a faceted gem, written by scenes/tools/make_meshes.py\n")
+        f.write("mtllib %s\n" % os.path.basename(mtl))
         for v in vs: f.write("v %.6f %.6f %.6f\n" % v)
-        for t in fs: f.write("f %d %d %d\n" % tuple(k + 1 for k in t))
+        for k, t in enumerate(fs):
+            if k % 4 == 0: f.write("usemtl crown\n")
+            if k % 4 == 3: f.write("usemtl pavilion\n")
+            f.write("f %d %d %d\n" % tuple(j + 1 for j in t))
 
 
 if __name__ == "__main__":
-    os.makedirs("scenes/models", exist_ok=True)
-    torus_knot("scenes/models/torus_knot.obj")
-    gem("scenes/models/gem.obj")
+    import sys
+    if len(sys.argv) > 1 and sys.argv[1] == "--million":
+        # The benchmark's mesh of 10^6 triangles (bench/knot_million.toml), into bench/out/.
+        os.makedirs("bench/out", exist_ok=True)
+        torus_knot("bench/out/torus_knot_million.obj", segments=4096, sides=122)
+    else:
+        os.makedirs("scenes/models", exist_ok=True)
+        torus_knot("scenes/models/torus_knot.obj")
+        gem("scenes/models/gem.obj")

@@ -2,7 +2,8 @@
 // coordinates (its object's frame carries the ray there: placement.glsl), through the mesh's
 // own tree (MESH_NODES) over its triangles (MESH_TRIANGLES), each by the watertight test of
 // Woop, Benthin and Wald (JCGT 2013). Twin of host/cpu/shapes/mesh.cpp (which has its own tree).
-// p.data = the mesh (MeshInfo); p.p0.x = 1 where it is shaded smooth. Every triangle of a mesh
+// p.data = the mesh (MeshInfo); p.p0.x = 1 where it is shaded smooth, p.p0.y = 1 where the
+// triangles take the file's own materials (MeshInfo::first_material). Every triangle of a mesh
 // takes its vertices from the same floats, so the edge functions of a shared edge are the same
 // numbers negated: a ray through the edge is inside one triangle or both (zero counts as
 // inside), never neither. uv.x = which triangle of the mesh (a whole number: exact in float
@@ -103,6 +104,11 @@ bool mesh_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_
     t_hit = best;
     uv = vec2(float(best_triangle - info.first_triangle), 0.0);
     return true;
+}
+
+// The material of a hit on p: a triangle's own where the placement takes the file's.
+uint mesh_hit_material(Primitive p, vec2 uv) {
+    return p.p0.y != 0.0 ? mesh_material_at(mesh_at(p.data).first_material + uint(uv.x)) : p.material;
 }
 
 MeshTriangle mesh_hit_triangle(Primitive p, vec2 uv) { return mesh_triangle_at(mesh_at(p.data).first_triangle + uint(uv.x)); }

@@ -202,6 +202,31 @@ TEST(Mesh, TheReaderPlacesTheFileAndSharesItBetweenPlacements) {
     EXPECT_FALSE(cpu::intersect(scene.objects[0], cpu::Ray{{0.5, 0.5, 3.0}, {0, 0, -1}}, 0.0, 100.0));
 }
 
+// An OBJ's MTL materials dress the mesh where the scene gives it none (itself, its group, its
+// placement), once per file however often placed; a material of the scene's replaces them all.
+TEST(Mesh, TheFilesMaterialsApplyWhereTheSceneGivesNone) {
+    MeshScene s = with_obj("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl red\nf 1 2 3\nusemtl blue\nf 1 3 4\n");
+    std::ofstream(s.dir + "/m.mtl") << "newmtl red\nKd 0.9 0.1 0.1\nKs 0.5 0.5 0.5\nNs 30\nnewmtl blue\nKd 0.1 0.2 0.9\nd 0.25\n";
+    const Scene scene = s.load("[material.green]\ncolor = [0, 1, 0]\n"
+                               "[[object]]\ntype = \"mesh\"\nfile = \"m.obj\"\n"
+                               "[[object]]\ntype = \"mesh\"\nfile = \"m.obj\"\ntransform = { translate = [2, 0, 0] }\n"
+                               "[[object]]\ntype = \"mesh\"\nfile = \"m.obj\"\nmaterial = \"green\"\n");
+    const auto& first = std::get<Mesh>(scene.objects[0].shape);
+    const auto& second = std::get<Mesh>(scene.objects[1].shape);
+    const auto& third = std::get<Mesh>(scene.objects[2].shape);
+    ASSERT_EQ(first.part_materials.size(), 2u);
+    EXPECT_EQ(second.part_materials, first.part_materials);  // added once
+    EXPECT_EQ(scene.materials.size(), 4u);                     // green, default, red, blue
+    const Material& red = scene.materials[first.material_of(0, scene.objects[0].material)];
+    const Material& blue = scene.materials[first.material_of(1, scene.objects[0].material)];
+    EXPECT_EQ(red.color, dvec3(0.9, 0.1, 0.1));
+    EXPECT_DOUBLE_EQ(red.specular, 0.5);
+    EXPECT_DOUBLE_EQ(red.shininess, 30.0);
+    EXPECT_EQ(blue.transmission, dvec3(0.75));
+    EXPECT_TRUE(third.part_materials.empty());
+    EXPECT_EQ(scene.materials[third.material_of(1, scene.objects[2].material)].name, "green");
+}
+
 TEST(Mesh, TheReaderRefusesWhatItCannotUse) {
     const MeshScene s = with_obj(kQuadObj);
     auto refused = [&](const std::string& objects, int line, const std::string& message) {

@@ -124,13 +124,21 @@ struct PrimitivePacker {
             shape_bounds(o));
     }
     // One primitive per placement (in the file's coordinates: its object's frame carries rays
-    // there; its box, the world's, comes from the caller), p0.x = 1 where shaded smooth. The
-    // mesh itself, once: its triangles in the order of its own BVH's leaves (built here, over
-    // their float boxes), and that tree.
+    // there; its box, the world's, comes from the caller), p0.x = 1 where shaded smooth, p0.y = 1
+    // where it takes the file's materials. The mesh itself, once: its triangles in the order of
+    // its own BVH's leaves (built here, over their float boxes), that tree, and the triangles'
+    // materials where a placement takes them (the same for every such placement).
     void operator()(const Mesh& m) {
         const auto [found, added] = out.mesh_indices.try_emplace(m.geometry.get(), static_cast<uint>(out.meshes.size()));
         if (added) pack_mesh(*m.geometry);
-        add({SHAPE_MESH, material, found->second, object, vec4(m.smooth ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f), {}, {}},
+        MeshInfo& info = out.meshes[found->second];
+        if (!m.part_materials.empty() && info.first_material == NO_MAP) {
+            info.first_material = static_cast<uint>(out.mesh_materials.size());
+            for (std::uint32_t k = 0; k < info.triangle_count; ++k)
+                out.mesh_materials.push_back(m.material_of(out.mesh_order[info.first_triangle + k], material));
+        }
+        add({SHAPE_MESH, material, found->second, object,
+             vec4(m.smooth ? 1.0f : 0.0f, m.part_materials.empty() ? 0.0f : 1.0f, 0.0f, 0.0f), {}, {}},
             shape_bounds(m));
     }
     void pack_mesh(const MeshGeometry& geometry) {
@@ -144,7 +152,7 @@ struct PrimitivePacker {
         }
         const Bvh bvh = build_bvh(boxes);
         const MeshInfo info{static_cast<uint>(out.mesh_nodes.size()), static_cast<uint>(out.mesh_triangles.size()),
-                            static_cast<uint>(mesh.triangles.size()), 0u};
+                            static_cast<uint>(mesh.triangles.size()), NO_MAP};
         for (const lancer::BvhNode& n : bvh.nodes) {
             MeshNode g{};
             pack_box(n.box, g.lo, g.hi);
@@ -155,6 +163,7 @@ struct PrimitivePacker {
         constexpr glm::dvec2 kCorners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
         out.mesh_triangles.reserve(out.mesh_triangles.size() + mesh.triangles.size());
         for (std::uint32_t index : bvh.order) {
+            out.mesh_order.push_back(index);
             const auto& t = mesh.triangles[index];
             MeshTriangle tr{};
             vec4* vertices[3] = {&tr.v0, &tr.v1, &tr.v2};
