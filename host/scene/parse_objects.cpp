@@ -10,6 +10,7 @@
 #include "scene/mesh_materials.hpp"
 #include "scene/parse_shapes.hpp"
 #include "scene/placement.hpp"
+#include "scene/pov_ray_words.hpp"
 #include "scene/shape_bounds.hpp"
 #include "scene/transform.hpp"
 #include "surface/expr/program.hpp"
@@ -38,7 +39,8 @@ Object read_object(TableReader& t, const std::string& type, const MaterialIndex&
     if (reader == readers.end()) {
         auto types = names_of(readers);
         types.insert("group");
-        t.fail("type", "unknown object type '" + type + "'" + did_you_mean(type, types));
+        std::string suggestion = pov_ray_type_hint(type);  // a POV-Ray word's lancer name says more than a close spelling
+        t.fail("type", "unknown object type '" + type + "'" + (suggestion.empty() ? did_you_mean(type, types) : suggestion));
     }
     Object o;
     o.where = t.location();

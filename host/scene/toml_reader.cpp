@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/magnitude.hpp"
+#include "scene/pov_ray_words.hpp"
 #include "scene/string_position.hpp"
 
 namespace lancer {
@@ -154,7 +155,10 @@ void TableReader::accept(std::string_view key) { known_.emplace(key); }
 void TableReader::finish() const {
     for (auto&& [key, value] : table_) {
         if (known_.count(key.str())) continue;
-        std::string message = what_ + ": unknown key '" + std::string(key.str()) + "'" + did_you_mean(key.str(), known_);
+        // A POV-Ray word's lancer name says more than a spelling close to it.
+        std::string suggestion = pov_ray_key_hint(key.str());
+        if (suggestion.empty()) suggestion = did_you_mean(key.str(), known_);
+        std::string message = what_ + ": unknown key '" + std::string(key.str()) + "'" + suggestion;
         throw SceneError(location_of(key.source(), file_), message);
     }
 }
