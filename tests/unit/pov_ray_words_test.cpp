@@ -1,9 +1,12 @@
 // A POV-Ray user's words where lancer has others: the unknown key or type is still refused at
 // its line and column, and the message names lancer's word. A near-typo of one of lancer's own
 // keys keeps its did-you-mean.
+#include <random>
+
 #include <gtest/gtest.h>
 
 #include "support/test_support.hpp"
+#include "surface/expr/evaluate.hpp"
 
 namespace lancer {
 namespace {
@@ -34,6 +37,42 @@ TEST(PovRayWords, ObjectTypesPovRayUsersWriteAreNamedInLancersTerms) {
 TEST(PovRayWords, ANearTypoKeepsItsDidYouMean) {
     test::expect_scene_error(std::string(kCamera) + "[material.red]\ncolor = [1, 0, 0]\nspecularr = 0.5\n", 6, 1,
                              "did you mean 'specular'");
+}
+
+// POV-Ray's quartic as an implicit surface's `poly`: shapesq.inc's hyperbolic torus, whose
+// comment gives its equation, coefficient for coefficient in POV-Ray's order.
+TEST(PovRayWords, PolyCoefficientsInPovRaysOrderAreTheSurfacesFunction) {
+    const Scene scene = test::scene_from_text(std::string(kCamera) + R"toml(
+[[object]]
+type = "implicit"
+poly = [1, 0, 0, 0, 2, 0, 0, -2, 0, -104,
+        0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+        1, 0, 0, -2, 0, 56, 0, 0, 0, 0,
+        1, 0, 104, 0, 784]
+box = { min = [-12, -12, -12], max = [12, 12, 12] }
+)toml");
+    const surface::ImplicitSurface& s = std::get<ImplicitObject>(scene.objects.at(0).shape).surface;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-12.0, 12.0);
+    for (int k = 0; k < 100; ++k) {
+        const double x = u(rng), y = u(rng), z = u(rng);
+        const double expected = x * x * x * x + 2 * x * x * y * y - 2 * x * x * z * z - 104 * x * x + y * y * y * y -
+                                2 * y * y * z * z + 56 * y * y + z * z * z * z + 104 * z * z + 784;
+        const double xyz[] = {x, y, z};
+        EXPECT_NEAR(surface::evaluate<double>(s.f, xyz), expected, 1e-9 * (std::abs(expected) + 1e4));
+    }
+    ASSERT_TRUE(s.polynomial);
+    EXPECT_EQ(s.polynomial->degree(), 4);
+}
+
+TEST(PovRayWords, PolyRefusesACountOfNoDegreeAndAFunctionBeside) {
+    const std::string box = "box = { min = [-1, -1, -1], max = [1, 1, 1] }\n";
+    test::expect_scene_error(std::string(kCamera) + "[[object]]\ntype = \"implicit\"\npoly = [1, 0, 0, 0, -1, 2]\n" + box, 6, 8,
+                             "poly holds 6 coefficients; POV-Ray's poly of degree N has (N + 1)(N + 2)(N + 3) / 6");
+    test::expect_scene_error(std::string(kCamera) + "[[object]]\ntype = \"implicit\"\nfunction = \"x\"\npoly = [1, 0, 0, -1]\n" + box,
+                             7, 8, "give either function or poly");
+    test::expect_scene_error(std::string(kCamera) + "[[object]]\ntype = \"implicit\"\npoly = [0, 0, 0, 0]\n" + box, 6, 8,
+                             "every coefficient is 0");
 }
 
 }  // namespace
