@@ -92,11 +92,13 @@ struct CombineCommand {
                                             sum.height, first.total_passes));
             } else if (std::string why = stamp_difference(info, first); !why.empty()) {
                 throw UserError(fmt::format("'{}' and '{}' are parts of different renders: {}", parts[i], parts[0], why));
-            } else if (info.tone.exposure != first.tone.exposure || info.tone.tone != first.tone.tone) {
-                throw UserError(fmt::format("'{}' (exposure {}, tone {}) and '{}' (exposure {}, tone {}) disagree on the "
-                                            "picture's exposure or tone curve",
-                                            parts[i], info.tone.exposure, kToneNames[int(info.tone.tone)], parts[0],
-                                            first.tone.exposure, kToneNames[int(first.tone.tone)]));
+            } else if (info.tone.exposure != first.tone.exposure || info.tone.tone != first.tone.tone ||
+                       info.tone.assumed_gamma != first.tone.assumed_gamma) {
+                throw UserError(fmt::format("'{}' (exposure {}, tone {}, assumed gamma {}) and '{}' (exposure {}, tone {}, "
+                                            "assumed gamma {}) disagree on the picture's exposure, tone curve or gamma",
+                                            parts[i], info.tone.exposure, kToneNames[int(info.tone.tone)],
+                                            info.tone.assumed_gamma, parts[0], first.tone.exposure,
+                                            kToneNames[int(first.tone.tone)], first.tone.assumed_gamma));
             }
             for (std::size_t p = 0; p < part.pixels.size(); ++p) sum.pixels[p] += part.pixels[p] * float(info.passes);
             auto [it, fresh] = covered.emplace(info.first_pass, std::pair{info.passes, parts[i]});

@@ -36,6 +36,7 @@ constexpr const char* kPassesAttribute = "lancerPasses";
 constexpr const char* kTotalPassesAttribute = "lancerTotalPasses";
 constexpr const char* kExposureAttribute = "lancerExposure";
 constexpr const char* kToneAttribute = "lancerTone";
+constexpr const char* kAssumedGammaAttribute = "lancerAssumedGamma";
 constexpr const char* kSceneHashAttribute = "lancerSceneHash";
 constexpr const char* kSettingsAttribute = "lancerSettings";
 const char* const kToneNames[] = {"clamp", "reinhard", "aces"};
@@ -64,6 +65,7 @@ void write_exr(const std::string& path, const FloatImage& image, const ExrInfo& 
         }
         header.insert(kExposureAttribute, Imf::DoubleAttribute(info.tone.exposure));
         header.insert(kToneAttribute, Imf::StringAttribute(kToneNames[static_cast<int>(info.tone.tone)]));
+        if (info.tone.assumed_gamma != 1.0) header.insert(kAssumedGammaAttribute, Imf::DoubleAttribute(info.tone.assumed_gamma));
         if (!info.scene_hash.empty()) header.insert(kSceneHashAttribute, Imf::StringAttribute(info.scene_hash));
         if (!info.settings.empty()) header.insert(kSettingsAttribute, Imf::StringAttribute(info.settings));
         Imf::StdOSStream stream;
@@ -243,6 +245,13 @@ ExrInfo read_lancer_attributes(const Imf::Header& h) {
             throw ExrRejected(fmt::format("its {} attribute is '{}', not clamp, reinhard or aces", kToneAttribute,
                                           escape_control_characters(a->value())));
         info.tone.tone = static_cast<Tone>(name - std::begin(kToneNames));
+    }
+    if (const auto* a = lancer_attribute<Imf::DoubleAttribute>(h, kAssumedGammaAttribute)) {
+        const double g = a->value();
+        if (!(g >= kMinAssumedGamma && g <= kMaxAssumedGamma))
+            throw ExrRejected(fmt::format("its {} attribute is {}, not a gamma in [{}, {}]", kAssumedGammaAttribute, g,
+                                          kMinAssumedGamma, kMaxAssumedGamma));
+        info.tone.assumed_gamma = g;
     }
     if (const auto* a = lancer_attribute<Imf::StringAttribute>(h, kSceneHashAttribute)) info.scene_hash = a->value();
     if (const auto* a = lancer_attribute<Imf::StringAttribute>(h, kSettingsAttribute)) info.settings = a->value();

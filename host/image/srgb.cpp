@@ -79,7 +79,7 @@ float decode_srgb8(std::uint8_t encoded) {
 Rgb8Image to_srgb8(const FloatImage& image, const ToneMapping& mapping, float scale) {
     Rgb8Image out{image.width, image.height, {}};
     out.bytes.resize(image.pixels.size() * 3);
-    const bool identity = mapping.exposure == 0.0 && mapping.tone == Tone::Clamp;
+    const bool identity = mapping.exposure == 0.0 && mapping.tone == Tone::Clamp && mapping.assumed_gamma == 1.0;
     const Srgb8Tables& tables = srgb8_tables();
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c) {

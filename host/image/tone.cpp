@@ -17,6 +17,7 @@ float tone_map(float linear, const ToneMapping& mapping) {
             x = std::min(1.0f, (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f));
             break;
     }
+    if (mapping.assumed_gamma != 1.0) x = static_cast<float>(std::pow(std::max(x, 0.0f), mapping.assumed_gamma));
     return x;
 }
 

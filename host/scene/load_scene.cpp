@@ -42,6 +42,8 @@ void read_render(TableReader& t, RenderSettings& r) {
     r.background = check_color(t, "background", t.vec3("background", r.background));
     r.tone.exposure = check_range(t, "exposure", t.number("exposure", r.tone.exposure), -kMaxExposureStops, kMaxExposureStops);
     r.tone.tone = static_cast<Tone>(one_of(t, "tone", "tone curve", {"clamp", "reinhard", "aces"}, "clamp"));
+    r.tone.assumed_gamma =
+        check_range(t, "assumed_gamma", t.number("assumed_gamma", r.tone.assumed_gamma), kMinAssumedGamma, kMaxAssumedGamma);
     t.finish();
 }
 

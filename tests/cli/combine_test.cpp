@@ -140,8 +140,8 @@ INSTANTIATE_TEST_SUITE_P(
         combine("exposure_inf", kInf, cannot_read(kInf) + "its lancerExposure attribute is inf, not a finite number"),
         combine("exposure_1000", kThousand, cannot_read(kThousand) + "its lancerExposure attribute is 1000, not a finite number"),
         combine("exposures_disagree", kBright,
-                "lancer: error: '" + kSecond + "' (exposure 0, tone clamp) and '" + kBright +
-                    "' (exposure 1, tone clamp) disagree on the picture's exposure or tone curve"),
+                "lancer: error: '" + kSecond + "' (exposure 0, tone clamp, assumed gamma 1) and '" + kBright +
+                    "' (exposure 1, tone clamp, assumed gamma 1) disagree on the picture's exposure, tone curve or gamma"),
         combine("exposure_option_nan", kBright, "lancer: error: --exposure: the exposure must be a finite number of stops",
                 " --exposure nan"),
         combine("exposure_option_inf", kBright, "lancer: error: --exposure: the exposure must be a finite number of stops",

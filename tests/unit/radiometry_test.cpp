@@ -171,6 +171,23 @@ TEST(PhotonKeys, RadiusShrinksAsKnausAndZwickerSay) {
     EXPECT_NEAR(r1000 * r1000 / (r100 * r100), std::pow(10.0, -0.3), 0.01);
 }
 
+// POV-Ray's assumed_gamma 2.2: a computed value v is the light v^2.2, which sRGB shows as about v
+// (sRGB is close to gamma 2.2); 1 leaves the value linear light. Read from [render], kept in EXR.
+TEST(ToneCurves, AssumedGammaTakesValuesAsLightToItsPower) {
+    ToneMapping povray36;
+    povray36.assumed_gamma = 2.2;
+    EXPECT_FLOAT_EQ(tone_map(0.5f, povray36), std::pow(0.5f, 2.2f));
+    FloatImage image(1, 1);
+    image.pixels[0] = glm::vec4(0.5f, 0.25f, 0.75f, 1.0f);
+    const Rgb8Image linear = to_srgb8(image), gamma = to_srgb8(image, povray36);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(int(gamma.bytes[c]), int(std::lround(255.0 * image.pixels[0][c])), 3) << c;
+    EXPECT_EQ(int(linear.bytes[0]), 188);  // sRGB of 0.5: brighter, as lancer shows linear light
+    const Scene s = test::scene_from_text("[render]\nassumed_gamma = 2.2\n[camera]\neye = [0, 0, -5]\nlook_at = [0, 0, 0]\n");
+    EXPECT_DOUBLE_EQ(s.render.tone.assumed_gamma, 2.2);
+    test::expect_scene_error("[render]\nassumed_gamma = 0\n[camera]\neye = [0, 0, -5]\nlook_at = [0, 0, 0]\n", 2, 17,
+                             "assumed_gamma must be in [0.1, 10]");
+}
+
 TEST(ToneCurves, FollowTheirFormulas) {
     EXPECT_EQ(tone_map(0.25f, {}), 0.25f);
     EXPECT_EQ(tone_map(3.0f, {}), 3.0f);  // clamped later, by the sRGB encoder
@@ -201,7 +218,7 @@ FloatImage gradient(int w, int h) {
 TEST(HdrFiles, ExrAndPfmKeepEveryFloatAndTheirAttributes) {
     std::string dir = test::fresh_dir("hdr");
     FloatImage image = gradient(7, 5);
-    write_exr(dir + "/a.exr", image, ExrInfo{3, 4, 16, {1.5, Tone::Aces}});
+    write_exr(dir + "/a.exr", image, ExrInfo{3, 4, 16, {1.5, Tone::Aces, 2.2}});
     ExrInfo info;
     FloatImage exr = read_exr(dir + "/a.exr", &info);
     write_pfm(dir + "/a.pfm", image);
@@ -218,6 +235,7 @@ TEST(HdrFiles, ExrAndPfmKeepEveryFloatAndTheirAttributes) {
     EXPECT_EQ(info.total_passes, 16);
     EXPECT_EQ(info.tone.exposure, 1.5);
     EXPECT_EQ(info.tone.tone, Tone::Aces);
+    EXPECT_EQ(info.tone.assumed_gamma, 2.2);
     // No temporary files are left beside them.
     int files = 0;
     for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();
