@@ -63,10 +63,19 @@ void read_photons(TableReader& t, PhotonSettings& p) {
     t.finish();
 }
 
-void read_camera(TableReader& t, CameraSpec& c) {
+// `angle` is POV-Ray's horizontal field of view: the vertical one for the scene's own width and
+// height (an image of another shape keeps the vertical angle, as `fov` does).
+void read_camera(TableReader& t, CameraSpec& c, const RenderSettings& render) {
     c.eye = t.required_vec3("eye");
     c.look_at = t.required_vec3("look_at");
     c.up = t.vec3("up", c.up);
+    if (t.has("angle")) {
+        if (t.has("fov")) t.fail("angle", "give either fov (vertical, lancer's) or angle (horizontal, POV-Ray's), not both");
+        const double angle = t.number("angle", 0.0);
+        if (!(angle > 0.0 && angle < 180.0)) t.fail("angle", "angle must be between 0 and 180 degrees (exclusive)");
+        const double half = std::tan(angle * M_PI / 360.0) * double(render.height) / double(render.width);
+        c.fov_deg = 2.0 * std::atan(half) * 180.0 / M_PI;
+    }
     c.fov_deg = t.number("fov", c.fov_deg);
     if (!(c.fov_deg > 0.0 && c.fov_deg < 180.0)) t.fail("fov", "fov must be between 0 and 180 degrees (exclusive)");
     t.finish();
@@ -165,7 +174,7 @@ Scene parse_scene(std::string_view text, const std::string& path) {
     if (!camera) throw SceneError({path, 1, 1}, "the scene has no [camera] table");
     {
         TableReader c(*camera, path, "[camera]");
-        read_camera(c, scene.camera);
+        read_camera(c, scene.camera, scene.render);
     }
     if (const toml::table* t = top.table("ambient")) {
         TableReader a(*t, path, "[ambient]");

@@ -19,7 +19,7 @@ std::string pov_ray_key_hint(std::string_view key) {
         {"phong", "POV-Ray's phong is lancer's specular, and its phong_size is shininess"},
         {"phong_size", "POV-Ray's phong_size is lancer's shininess, with phong as specular"},
         {"location", "POV-Ray's location is lancer's eye in [camera], position in [[light]]"},
-        {"angle", "POV-Ray's camera angle is horizontal; lancer's fov is vertical: fov = 2 atan(tan(angle / 2) height / width)"},
+        {"angle", "POV-Ray's horizontal camera angle is [camera] angle (or fov, vertical)"},
         {"sky", "POV-Ray's sky is lancer's up"},
         {"right", "the picture's shape is [render]'s width and height"},
         {"direction", "lancer's camera is set by eye, look_at, up and fov"},

@@ -1,6 +1,7 @@
 // A POV-Ray user's words where lancer has others: the unknown key or type is still refused at
 // its line and column, and the message names lancer's word. A near-typo of one of lancer's own
 // keys keeps its did-you-mean.
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -18,8 +19,8 @@ TEST(PovRayWords, KeysPovRayUsersWriteAreNamedInLancersTerms) {
                              "unknown key 'phong' (POV-Ray's phong is lancer's specular, and its phong_size is shininess)");
     test::expect_scene_error("[camera]\neye = [0, 0, -5]\nlocation = [0, 0, -5]\nlook_at = [0, 0, 0]\n", 3, 1,
                              "POV-Ray's location is lancer's eye in [camera], position in [[light]]");
-    test::expect_scene_error(std::string(kCamera) + "angle = 60\n", 4, 1,
-                             "fov = 2 atan(tan(angle / 2) height / width)");
+    test::expect_scene_error(std::string(kCamera) + "[[light]]\nposition = [0, 1, 0]\nangle = 60\n", 6, 1,
+                             "POV-Ray's horizontal camera angle is [camera] angle");
     test::expect_scene_error(std::string(kCamera) + "[material.glass]\nfilter = 0.9\n", 5, 1,
                              "transmission = [f r, f g, f b]");
     test::expect_scene_error(std::string(kCamera) + "[[object]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\n"
@@ -32,6 +33,14 @@ TEST(PovRayWords, ObjectTypesPovRayUsersWriteAreNamedInLancersTerms) {
     test::expect_scene_error(std::string(kCamera) + "[[object]]\ntype = \"quartic\"\n", 5, 8,
                              "lancer's implicit surfaces: type = \"implicit\"");
     test::expect_scene_error(std::string(kCamera) + "[[object]]\ntype = \"mesh2\"\n", 5, 8, "type = \"mesh\" with an OBJ or PLY file");
+}
+
+// POV-Ray's camera angle is horizontal: lancer's vertical fov for the scene's shape.
+TEST(PovRayWords, TheCamerasAngleIsHorizontal) {
+    const Scene s = test::scene_from_text("[render]\nwidth = 400\nheight = 200\n[camera]\neye = [0, 0, -5]\nlook_at = [0, 0, 0]\nangle = 90\n");
+    EXPECT_NEAR(s.camera.fov_deg, 2.0 * std::atan(0.5) * 180.0 / M_PI, 1e-12);  // 53.13 degrees
+    test::expect_scene_error(std::string(kCamera) + "angle = 90\nfov = 40\n", 4, 9, "give either fov (vertical, lancer's) or angle");
+    test::expect_scene_error(std::string(kCamera) + "angle = 180\n", 4, 9, "angle must be between 0 and 180 degrees");
 }
 
 TEST(PovRayWords, ANearTypoKeepsItsDidYouMean) {
