@@ -295,6 +295,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     VEC4(up)         /* already scaled by tan(fov/2) */                                           \
     VEC4(background) /* rgb */                                                                    \
     VEC4(ambient)    /* rgb, the scene's ambient light */                                         \
+    VEC4(fog)        /* rgb = its colour, w = 1 / its distance (SCENE_HAS_FOG) */                 \
     SCALARS(uint, width, uint, height,                                                            \
             uint, samples,   /* N: an N x N grid of rays per pixel */                             \
             uint, max_depth) /* reflection bounces after the camera ray */                        \
@@ -518,7 +519,8 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(CHECK_GRID_CONTRACT, 27, bool, check_grid_contract, false) /* tests: a ray without a grid under GRIDS_ONLY fails the render */ \
     X(SPHERES_BY_NEAR_POINTS, 28, bool, spheres_by_near_points, false) /* spheres packed by their points nearest the camera (sphere.glsl) */ \
     X(PLACED_OBJECTS, 29, bool, placed_objects, false) /* some object has a transform: patterns in object coordinates (placement.glsl) */ \
-    X(OBJECT_SPACE_SHAPES, 30, bool, object_space_shapes, false) /* ... and some shape is traced in them */
+    X(OBJECT_SPACE_SHAPES, 30, bool, object_space_shapes, false) /* ... and some shape is traced in them */ \
+    X(SCENE_HAS_FOG, 31, bool, has_fog, true) /* [fog]: every ray's segments fogged (trace.comp) */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

@@ -125,6 +125,11 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
         if (SCENE_HAS_TRANSPARENCY && b.media.count > 0u) {
             b.weight *= absorption_over(innermost(b.media), found ? length(b.ray.origin + hit.t * b.ray.dir - b.from) : INFINITY);
         }
+        if (SCENE_HAS_FOG) {  // the fog in front of what the ray meets, and its veil over it (Tracer::trace)
+            float through = found ? exp(-length(b.ray.origin + hit.t * b.ray.dir - b.from) * frame.fog.w) : 0.0;
+            color += b.weight * (1.0 - through) * frame.fog.rgb;
+            b.weight *= through;
+        }
         bool goes_on = false;
         if (!found) {
             color += b.weight * frame.background.rgb;

@@ -323,6 +323,11 @@ dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
         bool found = closest_hit(b.ray, 0.0, inf, hit);
         // Media absorb between surface points (not from the offset origin): the true thickness.
         if (b.media.size() > 0) b.weight *= absorption_along(b.media, found ? glm::length(b.ray.origin + hit.t * b.ray.dir - b.from) : inf);
+        if (scene_.fog) {  // the fog in front of what the ray meets, and its veil over it
+            const double through = found ? std::exp(-glm::length(b.ray.origin + hit.t * b.ray.dir - b.from) / scene_.fog->distance) : 0.0;
+            color += b.weight * (1.0 - through) * scene_.fog->color;
+            b.weight *= through;
+        }
         bool goes_on = false;
         if (!found) {
             color += b.weight * scene_.render.background;

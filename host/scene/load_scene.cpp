@@ -195,6 +195,16 @@ Scene parse_scene(std::string_view text, const std::string& path) {
         });
     }
 
+    if (const toml::table* f = top.table("fog")) {
+        TableReader t(*f, path, "[fog]");
+        Fog fog;
+        fog.distance = t.required_number("distance");
+        if (!(fog.distance > 0.0)) t.fail("distance", fmt::format("fog distance must be positive, not {:g}", fog.distance));
+        fog.color = check_color(t, "color", t.vec3("color", fog.color));
+        t.finish();
+        scene.fog = fog;
+    }
+
     std::map<std::string, std::uint32_t, std::less<>> material_index;
     TextureLibrary textures(scene.dependencies);
     if (const toml::table* materials = top.table("material")) {

@@ -363,12 +363,21 @@ struct Scene;
 // A SceneError at the first light that has none.
 void check_photon_lights(const Scene& scene);
 
+// POV-Ray's constant fog (docs/scene-format.md, "[fog]"): along every ray a segment of length d
+// lets exp(-d / distance) of what lies beyond through and adds the rest in `color`; a ray that
+// meets nothing is all fog. Light on its way to a surface is not fogged (POV-Ray's rule).
+struct Fog {
+    dvec3 color{0.5};
+    double distance = 1.0;
+};
+
 struct Scene {
     std::string path;
     RenderSettings render;
     CameraSpec camera;
     dvec3 ambient{1.0};  // I_scene, scaled per material by Material::ambient
     std::optional<PhotonSettings> photons;  // photon mapping, when the scene or the command line asks for it
+    std::optional<Fog> fog;
     std::vector<Light> lights;
     std::vector<Material> materials;
     std::vector<Object> objects;
