@@ -296,6 +296,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     VEC4(background) /* rgb */                                                                    \
     VEC4(ambient)    /* rgb, the scene's ambient light */                                         \
     VEC4(fog)        /* rgb = its colour, w = 1 / its distance (SCENE_HAS_FOG) */                 \
+    VEC4S(sky, PATTERN_MAX_COLORS) /* SCENE_HAS_SKY: its ramp, rgb and w = the stop */             \
     SCALARS(uint, width, uint, height,                                                            \
             uint, samples,   /* N: an N x N grid of rays per pixel */                             \
             uint, max_depth) /* reflection bounces after the camera ray */                        \
@@ -305,7 +306,8 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
             uint, unbounded_count) /* the last unbounded_count primitives (outside the BVH) are tested by every ray */ \
     SCALARS(uint, loop_probe, /* always 2: the trip count of trace.comp's loop_limit_reached() probe */ \
             uint, mirror_plane, /* a flat mirror whose reflections of camera rays take DIRECTION_GRID_MIRROR, or NO_PRIMITIVE */ \
-            uint, reserved0, uint, reserved1)                                                     \
+            uint, sky_colors, /* the sky's ramp: its first sky_colors of sky */                \
+            uint, reserved1)                                                                      \
     /* the primitives outside the BVH, sorted by shape type: family t is [family_end[t - 1], */     \
     /* family_end[t]) (t = 0 from primitive_count - unbounded_count), read as [t / 4][t % 4] */   \
     UVEC4S(family_end, SHAPE_QUADS)                                                               \
@@ -520,7 +522,8 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(SPHERES_BY_NEAR_POINTS, 28, bool, spheres_by_near_points, false) /* spheres packed by their points nearest the camera (sphere.glsl) */ \
     X(PLACED_OBJECTS, 29, bool, placed_objects, false) /* some object has a transform: patterns in object coordinates (placement.glsl) */ \
     X(OBJECT_SPACE_SHAPES, 30, bool, object_space_shapes, false) /* ... and some shape is traced in them */ \
-    X(SCENE_HAS_FOG, 31, bool, has_fog, true) /* [fog]: every ray's segments fogged (trace.comp) */
+    X(SCENE_HAS_FOG, 31, bool, has_fog, true) /* [fog]: every ray's segments fogged (trace.comp) */ \
+    X(SCENE_HAS_SKY, 32, bool, has_sky, true) /* [sky]: rays that meet nothing see its ramp (trace.comp) */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

@@ -45,11 +45,12 @@ vec3 pattern_space(PatternInfo pat, vec3 p) {
 }
 
 // The ramp's colour at t: the first colour below the first stop, the last above the last.
-vec3 ramp_color(PatternInfo pat, float t) {
-    vec3 color = pat.colors[0].rgb;
-    for (uint i = 1u; i < pat.color_count; ++i) {
-        vec4 a = pat.colors[i - 1u];
-        vec4 b = pat.colors[i];
+// The ramp of `count` stops (rgb, w = the stop) at t (host/cpu/pattern.cpp's ramp_color).
+vec3 ramp_over(vec4 colors[PATTERN_MAX_COLORS], uint count, float t) {
+    vec3 color = colors[0].rgb;
+    for (uint i = 1u; i < count; ++i) {
+        vec4 a = colors[i - 1u];
+        vec4 b = colors[i];
         if (t >= b.w) {
             color = b.rgb;
         } else {
@@ -59,6 +60,8 @@ vec3 ramp_color(PatternInfo pat, float t) {
     }
     return color;
 }
+
+vec3 ramp_color(PatternInfo pat, float t) { return ramp_over(pat.colors, pat.color_count, t); }
 
 // The gradient g of a bump's pattern (in pattern space) in its object's coordinates.
 vec3 pattern_gradient(PatternInfo pat, vec3 g) { return g.x * pat.row0.xyz + g.y * pat.row1.xyz + g.z * pat.row2.xyz; }

@@ -132,7 +132,8 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
         }
         bool goes_on = false;
         if (!found) {
-            color += b.weight * frame.background.rgb;
+            // The sky's ramp at the direction's height, wrapped as POV-Ray's gradient y (Tracer::trace).
+            color += b.weight * (SCENE_HAS_SKY ? ramp_over(frame.sky, frame.sky_colors, fract(b.ray.dir.y)) : frame.background.rgb);
         } else {
             vec3 p = b.ray.origin + hit.t * b.ray.dir;
             vec3 n = hit.normal;

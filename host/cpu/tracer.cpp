@@ -11,6 +11,7 @@
 #include "core/constants.hpp"
 #include "cpu/appearance.hpp"
 #include "cpu/lights.hpp"
+#include "cpu/pattern.hpp"
 #include "cpu/photon_map.hpp"
 #include "cpu/shapes/shapes.hpp"
 
@@ -28,6 +29,9 @@ constexpr double kMinLight = 1.0 / 65536.0;
 constexpr int kMaxShadowCrossings = 16;
 
 dvec3 mirror(const dvec3& d, const dvec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
+
+// The sky in unit direction d: its ramp at d's height, wrapped as POV-Ray's gradient y.
+dvec3 sky_color(const Sky& sky, const dvec3& d) { return ramp_color(sky.colors, d.y - std::floor(d.y)); }
 
 }  // namespace
 
@@ -330,7 +334,7 @@ dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
         }
         bool goes_on = false;
         if (!found) {
-            color += b.weight * scene_.render.background;
+            color += b.weight * (scene_.sky ? sky_color(*scene_.sky, b.ray.dir) : scene_.render.background);
         } else {
             dvec3 p = b.ray.origin + hit.t * b.ray.dir;
             dvec3 n = glm::dot(hit.normal, b.ray.dir) > 0.0 ? -hit.normal : hit.normal;  // two-sided

@@ -205,6 +205,12 @@ Scene parse_scene(std::string_view text, const std::string& path) {
         scene.fog = fog;
     }
 
+    if (const toml::table* s = top.table("sky")) {
+        TableReader t(*s, path, "[sky]");
+        scene.sky = Sky{read_ramp(t)};
+        t.finish();
+    }
+
     std::map<std::string, std::uint32_t, std::less<>> material_index;
     TextureLibrary textures(scene.dependencies);
     if (const toml::table* materials = top.table("material")) {

@@ -143,6 +143,8 @@ Pattern read_pattern_shape(TableReader& t) {
     return p;
 }
 
+}  // namespace
+
 std::vector<ColorStop> read_ramp(TableReader& t) {
     const toml::array* colors = t.array("colors");
     if (!colors) throw SceneError(t.location(), t.what() + ": missing required key 'colors' (the colour ramp)");
@@ -170,8 +172,6 @@ std::vector<ColorStop> read_ramp(TableReader& t) {
     }
     return ramp;
 }
-
-}  // namespace
 
 std::shared_ptr<const TextureImage> TextureLibrary::load(const TableReader& t, std::string_view key,
                                                         const std::string& name, const std::string& path) {

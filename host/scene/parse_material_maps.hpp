@@ -30,6 +30,9 @@ private:
     long long texels_ = 0;
 };
 
+// A colour ramp: `colors` (2 to kMaxPatternColors) and optional `stops` (ascending, in [0, 1]).
+std::vector<ColorStop> read_ramp(TableReader& t);
+
 // Reads the material's optional `texture`, `pattern` and `bump` keys into `m`.
 void read_material_maps(TableReader& t, Material& m, TextureLibrary& textures);
 

@@ -371,6 +371,12 @@ struct Fog {
     double distance = 1.0;
 };
 
+// POV-Ray's sky_sphere with `gradient y` (docs/scene-format.md, "[sky]"): what a ray that meets
+// nothing sees, the colour ramp at its direction's height, wrapped as POV-Ray's gradient is
+// (d.y - floor(d.y): from the horizon up, and again from below it).
+struct Sky {
+    std::vector<ColorStop> colors;
+};
 struct Scene {
     std::string path;
     RenderSettings render;
@@ -378,6 +384,7 @@ struct Scene {
     dvec3 ambient{1.0};  // I_scene, scaled per material by Material::ambient
     std::optional<PhotonSettings> photons;  // photon mapping, when the scene or the command line asks for it
     std::optional<Fog> fog;
+    std::optional<Sky> sky;
     std::vector<Light> lights;
     std::vector<Material> materials;
     std::vector<Object> objects;

@@ -100,6 +100,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     f.grids_only = plan.flags.grids_only;
     f.has_photons = scene.photons.has_value();
     f.has_fog = scene.fog.has_value();
+    f.has_sky = scene.sky.has_value();
     f.spheres_by_near_points = spheres.by_near_points && f.has_shape(SHAPE_SPHERE);
     f.placed_objects = placed;
     f.object_space_shapes = object_space;
@@ -157,6 +158,10 @@ FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {
     f.background = v4(r.background);
     f.ambient = v4(scene.ambient);
     if (scene.fog) f.fog = v4(scene.fog->color, 1.0 / scene.fog->distance);
+    if (scene.sky) {
+        f.sky_colors = static_cast<uint>(scene.sky->colors.size());
+        for (std::size_t i = 0; i < scene.sky->colors.size(); ++i) f.sky[i] = v4(scene.sky->colors[i].color, scene.sky->colors[i].position);
+    }
     f.width = static_cast<uint>(r.width);
     f.height = static_cast<uint>(r.height);
     f.samples = static_cast<uint>(r.samples);

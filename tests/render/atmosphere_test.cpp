@@ -1,0 +1,114 @@
+// What lies around the scene. [fog], POV-Ray's constant fog: what a ray meets at distance d shows
+// through exp(-d / distance) of it, the fog's colour the rest; a ray that meets nothing is all
+// fog. [sky], POV-Ray's sky_sphere with gradient y: a ray that meets nothing sees the ramp at its
+// direction's height, wrapped as POV-Ray's gradient. Exact on the reference, the same on the GPU,
+// and their keys refused where wrong.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "support/test_support.hpp"
+
+namespace lancer {
+namespace {
+
+// A wall at distance 4 straight ahead, lit by its ambient term alone (ambient 1, diffuse 0):
+// the pixel in the middle sees its colour c through the fog; the top row sees nothing.
+const char* const kWall = R"toml(
+[render]
+width = 9
+height = 9
+samples = 1
+background = [1, 0, 0]
+[camera]
+eye = [0, 0, -4]
+look_at = [0, 0, 0]
+fov = 10
+[ambient]
+color = [1, 1, 1]
+[material.wall]
+color = [0.2, 0.6, 0.4]
+ambient = 1
+diffuse = 0
+[[object]]
+type = "rectangle"
+corner = [-0.1, -0.1, 0]
+edge_u = [0.2, 0, 0]
+edge_v = [0, 0.2, 0]
+material = "wall"
+[fog]
+distance = 5
+color = [0.5, 0.25, 1.0]
+)toml";
+
+TEST(Fog, VeilsWhatARayMeetsByItsDistance) {
+    const Scene scene = test::scene_from_text(kWall);
+    for (test::Backend backend : {test::Backend::Cpu, test::Backend::Gpu}) {
+        const FloatImage image = test::render_on(backend, scene);
+        const double through = std::exp(-4.0 / 5.0);
+        const glm::dvec3 wall(0.2, 0.6, 0.4), fog(0.5, 0.25, 1.0);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(image.at(4, 4)[c], wall[c] * through + fog[c] * (1.0 - through), test::kBackendTolerance)
+                << test::backend_name(backend) << " channel " << c;
+            EXPECT_NEAR(image.at(4, 0)[c], fog[c], test::kBackendTolerance) << test::backend_name(backend);  // no background through it
+        }
+    }
+}
+
+TEST(Fog, TheGpuDrawsTheReferencesPicture) {
+    Scene scene = test::shipped_scene("seed", 160, 90, 2);
+    scene.fog = Fog{{0.7, 0.75, 0.8}, 12.0};
+    test::expect_same_picture("fog_seed", to_srgb8(test::render_on(test::Backend::Gpu, scene)),
+                              to_srgb8(test::render_on(test::Backend::Cpu, scene)));
+}
+
+TEST(Fog, ItsKeysAreChecked) {
+    const std::string camera = "[camera]\neye = [0, 0, -5]\nlook_at = [0, 0, 0]\n";
+    test::expect_scene_error(camera + "[fog]\ndistance = 0\n", 5, 12, "fog distance must be positive, not 0");
+    test::expect_scene_error(camera + "[fog]\ncolor = [1, 1, 1]\n", 4, 1, "distance");
+    test::expect_scene_error(camera + "[fog]\ndistance = 3\nfog_type = 2\n", 6, 1, "unknown key 'fog_type'");
+}
+
+// A camera looking up at 30 degrees, and one looking down at 30 (the gradient wraps: -0.5 is 0.5
+// up the ramp), each pixel in the middle against the ramp's value there.
+TEST(Sky, RaysThatMeetNothingSeeItsRampAtTheirHeight) {
+    for (const char* look : {"[0, 0.57735026918962573, 1]", "[0, -0.57735026918962573, 1]"}) {
+        const Scene scene = test::scene_from_text(std::string(R"toml(
+[render]
+width = 9
+height = 9
+samples = 1
+background = [1, 0, 0]
+[camera]
+eye = [0, 0, 0]
+fov = 1
+look_at = )toml") + look + R"toml(
+[sky]
+colors = [[0.9, 0.95, 1.0], [0.25, 0.45, 0.85], [0.05, 0.1, 0.35]]
+stops = [0, 0.4, 1]
+)toml");
+        const double height = 0.5;  // sin(30 degrees) up; looking down, -0.5 wraps to the same 0.5
+        const glm::dvec3 expected = glm::mix(glm::dvec3(0.25, 0.45, 0.85), glm::dvec3(0.05, 0.1, 0.35), (height - 0.4) / 0.6);
+        for (test::Backend backend : {test::Backend::Cpu, test::Backend::Gpu}) {
+            const FloatImage image = test::render_on(backend, scene);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(image.at(4, 4)[c], expected[c], 2e-3) << test::backend_name(backend) << " looking at " << look;
+        }
+    }
+}
+
+TEST(Sky, TheGpuDrawsTheReferencesPicture) {
+    Scene scene = test::shipped_scene("seed", 160, 90, 2);
+    scene.sky = Sky{{{0.0, {0.9, 0.95, 1.0}}, {0.4, {0.25, 0.45, 0.85}}, {1.0, {0.05, 0.1, 0.35}}}};
+    test::expect_same_picture("sky_seed", to_srgb8(test::render_on(test::Backend::Gpu, scene)),
+                              to_srgb8(test::render_on(test::Backend::Cpu, scene)));
+}
+
+TEST(Sky, ItsKeysAreChecked) {
+    const std::string camera = "[camera]\neye = [0, 0, -5]\nlook_at = [0, 0, 0]\n";
+    test::expect_scene_error(camera + "[sky]\ncolors = [[1, 1, 1]]\n", 5, 10, "a pattern needs 2 to 8 colors, not 1");
+    test::expect_scene_error(camera + "[sky]\ncolors = [[1, 1, 1], [0, 0, 1]]\nstops = [0.5, 0.2]\n", 6, 15, "stops must not decrease");
+}
+
+}  // namespace
+}  // namespace lancer
