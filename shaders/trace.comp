@@ -133,7 +133,8 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
         bool goes_on = false;
         if (!found) {
             // The sky's ramp at the direction's height, wrapped as POV-Ray's gradient y (Tracer::trace).
-            color += b.weight * (SCENE_HAS_SKY ? ramp_over(frame.sky, frame.sky_colors, fract(b.ray.dir.y)) : frame.background.rgb);
+            if (SCENE_HAS_SKY) color += b.weight * ramp_over(frame.sky, frame.sky_colors, fract(b.ray.dir.y));
+            else color += b.weight * frame.background.rgb;
         } else {
             vec3 p = b.ray.origin + hit.t * b.ray.dir;
             vec3 n = hit.normal;
