@@ -115,7 +115,8 @@ struct ObjectReading {
     TextureLibrary& textures;
     std::uint32_t default_material;
     const toml::table* declared = nullptr;
-    std::map<const MeshGeometry*, std::vector<std::uint32_t>> mesh_materials;  // each file's, added once  // [declare.NAME]: objects declared once, placed by `type = "object"`
+    std::map<const MeshGeometry*, std::vector<std::uint32_t>> mesh_materials;  // each file's, added once
+    std::set<std::string> mesh_files;  // in scene.dependencies once, however often placed  // [declare.NAME]: objects declared once, placed by `type = "object"`
 
     // POV-Ray's object { Name ... }: the object declared as [declare.NAME] that `of` names, read
     // again for this placement (its `transform` after the declared one's; its `material` for the
@@ -196,6 +197,9 @@ struct ObjectReading {
                 t.fail("type", fmt::format("too many objects with the groups' members (the limit is {})", limits::kMaxObjects));
             if (auto* b = std::get_if<BezierSurface>(&o.shape); b && !b->source_file.empty())
                 scene.dependencies.push_back(b->source_file);
+            // A mesh's file too (watch reloads it; the render stamp's hash covers it).
+            if (auto* m = std::get_if<Mesh>(&o.shape); m && mesh_files.insert(m->source_file).second)
+                scene.dependencies.push_back(m->source_file);
             return;
         }
         if (depth == kMaxGroupDepth) t.fail("type", fmt::format("groups nest at most {} deep", kMaxGroupDepth));

@@ -2,6 +2,7 @@
 // through vertices and edges of closed meshes cross them exactly twice), smooth normals, texture
 // coordinates, the reader's keys and refusals, and convergence of a tessellated sphere to the
 // exact one.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -193,6 +194,7 @@ TEST(Mesh, TheReaderPlacesTheFileAndSharesItBetweenPlacements) {
     ASSERT_TRUE(scene.objects[0].placement && scene.objects[1].placement);  // always placed
     EXPECT_TRUE(scene.objects[1].placement->shape_in_object_space);
     EXPECT_EQ(a.geometry, b.geometry);  // read once
+    EXPECT_NE(std::find(scene.dependencies.begin(), scene.dependencies.end(), s.dir + "/m.obj"), scene.dependencies.end());
     EXPECT_EQ(a.geometry->mesh().triangles.size(), 2u);  // the quad, fanned
     EXPECT_FALSE(a.smooth);  // the file has no normals
     EXPECT_TRUE(b.smooth);
