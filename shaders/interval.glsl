@@ -16,6 +16,9 @@
 //  * NaN bounds (inf - inf, 0 * inf) become infinite ones, so no comparison ever sees a NaN.
 #ifndef LANCER_INTERVAL_GLSL
 #define LANCER_INTERVAL_GLSL
+#ifndef LANCER_FLOAT64
+#define LANCER_FLOAT64 0  // 1 where the device has shaderFloat64 (surface_codegen.cpp)
+#endif
 
 const float I_INF = 1.0 / 0.0;
 const float I_ULPS = 8.0 * 1.1920929e-7;  // 8 ulps, relative
@@ -177,5 +180,62 @@ vec2 i_max_derivative(vec2 a, vec2 b, vec2 da, vec2 db) {
     if (b.x >= a.y) return db;
     return i_hull(da, db);
 }
+
+#if LANCER_FLOAT64
+// The same arithmetic in double, for the value of f at one point (implicit_point_may_hold_root
+// in shapes/implicit.glsl): float's enclosures cannot tell f from 0 within about 1e-2 on a
+// degree-8 surface, double's within about 1e-11. Only +, -, *, /, sqrt and integer powers have
+// double versions (Vulkan's core double instructions); every other function is the float
+// one's, on the interval rounded outward to float (i_flt) and back (i_dbl).
+const double I_ULPS_D = 8.0lf * 2.220446049250313e-16lf;  // 8 ulps, relative
+const double I_INF_D = double(I_INF);
+
+dvec2 i_sane(dvec2 r) {
+    return dvec2(isnan(r.x) ? -I_INF_D : r.x, isnan(r.y) ? I_INF_D : r.y);
+}
+dvec2 i_widen(dvec2 r) {
+    return i_sane(r + dvec2(-1.0lf, 1.0lf) * (abs(r) * I_ULPS_D + 1e-300lf));
+}
+dvec2 i_widen_n(dvec2 r, double n) {
+    return i_sane(r + dvec2(-1.0lf, 1.0lf) * (abs(r) * (I_ULPS_D * n) + 1e-300lf));
+}
+// Outward to float: rounding to nearest moves a bound by at most half a float ulp.
+vec2 i_flt(dvec2 a) {
+    vec2 r = vec2(a);
+    return i_widen_by(r, 1.1920929e-7, 1e-37);
+}
+dvec2 i_dbl(vec2 a) { return dvec2(a); }
+
+dvec2 i_affine(double o, double d, dvec2 s) { return i_widen(dvec2(min(o + d * s.x, o + d * s.y), max(o + d * s.x, o + d * s.y))); }
+dvec2 i_add(dvec2 a, dvec2 b) { return i_widen(a + b); }
+dvec2 i_sub(dvec2 a, dvec2 b) { return i_widen(a - b.yx); }
+dvec2 i_neg(dvec2 a) { return -a.yx; }
+double i_times(double a, double b) {
+    double p = a * b;
+    return isnan(p) ? 0.0lf : p;
+}
+dvec2 i_mul(dvec2 a, dvec2 b) {
+    double p1 = i_times(a.x, b.x), p2 = i_times(a.x, b.y), p3 = i_times(a.y, b.x), p4 = i_times(a.y, b.y);
+    return i_widen(dvec2(min(min(p1, p2), min(p3, p4)), max(max(p1, p2), max(p3, p4))));
+}
+dvec2 i_div(dvec2 a, dvec2 b) {
+    if (b.x <= 0.0lf && b.y >= 0.0lf) return dvec2(-I_INF_D, I_INF_D);
+    double q1 = a.x / b.x, q2 = a.x / b.y, q3 = a.y / b.x, q4 = a.y / b.y;
+    if (isnan(q1) || isnan(q2) || isnan(q3) || isnan(q4)) return dvec2(-I_INF_D, I_INF_D);
+    return i_widen(dvec2(min(min(q1, q2), min(q3, q4)), max(max(q1, q2), max(q3, q4))));
+}
+double i_mig(dvec2 a) { return a.x > 0.0lf ? a.x : (a.y < 0.0lf ? -a.y : 0.0lf); }
+double i_mag(dvec2 a) { return max(abs(a.x), abs(a.y)); }
+dvec2 i_magnitudes(dvec2 a) { return dvec2(i_mig(a), i_mag(a)); }
+dvec2 i_sqr(dvec2 a) {
+    dvec2 m = i_magnitudes(a);
+    dvec2 r = i_widen(m * m);
+    return dvec2(max(r.x, 0.0lf), r.y);
+}
+dvec2 i_abs(dvec2 a) { return i_magnitudes(a); }
+dvec2 i_min(dvec2 a, dvec2 b) { return min(a, b); }
+dvec2 i_max(dvec2 a, dvec2 b) { return max(a, b); }
+dvec2 i_sqrt(dvec2 a) { return i_widen(sqrt(max(a, dvec2(0.0lf)))); }
+#endif
 
 #endif

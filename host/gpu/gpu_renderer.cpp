@@ -178,7 +178,7 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
     emitters_ = packed.emitters;
     float_notes_ = packed.float_notes;
     resources_.upload(packed, gpu::pack_frame(scene, packed));
-    if (std::string code = gpu::surface_functions_glsl(scene); !code.empty()) generated["surface_functions.glsl"] = code;
+    if (std::string code = gpu::surface_functions_glsl(scene, context_->float64()); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;
     features.check_loop_limit = gpu::limits_loop_iterations(context_->info());
     features.check_grid_contract = check_grid_contract_;

@@ -43,6 +43,7 @@ struct Case {
     const char* name;
     const char* text;
     glm::dvec3 lo, hi;  // where the rays' pieces stay (inside every function's domain)
+    bool library_functions = false;  // beyond +, -, *, /, sqrt and integer powers
 };
 
 const Case kCases[] = {
@@ -50,21 +51,22 @@ const Case kCases[] = {
     {"torus", "(x^2 + y^2 + z^2 + 1 - 0.35^2)^2 - 4*(x^2 + z^2)", glm::dvec3(-1.5), glm::dvec3(1.5)},
     {"barth", "4*(2.618034*x^2 - y^2)*(2.618034*y^2 - z^2)*(2.618034*z^2 - x^2) - 4.236068*(x^2 + y^2 + z^2 - 1)^2",
      glm::dvec3(-1.5), glm::dvec3(1.5)},
-    {"gyroid", "sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)", glm::dvec3(-7.0), glm::dvec3(7.0)},
+    {"gyroid", "sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)", glm::dvec3(-7.0), glm::dvec3(7.0), true},
     {"high powers", "x^7 - y^-3 + z^12 - (x - y)^9 + (x*y*z)^-2", glm::dvec3(0.3), glm::dvec3(1.4)},
     {"functions 1", "sin(x*y) + cos(x+z) + tan(0.5*x) + asin(0.5*y) + acos(0.4*z) + atan(x-y) + atan2(y, x - 0.5) "
-                    "+ sinh(x) + cosh(y) + tanh(x*z)", glm::dvec3(0.2), glm::dvec3(0.8)},
+                    "+ sinh(x) + cosh(y) + tanh(x*z)", glm::dvec3(0.2), glm::dvec3(0.8), true},
     {"functions 2", "asinh(x) + acosh(1.5 + y) + atanh(0.5*z) + exp(x - y) + exp2(z) + log(x + y) + log2(1 + z) "
-                    "+ log10(2 + y) + sqrt(x*y) + cbrt(x - 2*z)", glm::dvec3(0.2), glm::dvec3(0.8)},
+                    "+ log10(2 + y) + sqrt(x*y) + cbrt(x - 2*z)", glm::dvec3(0.2), glm::dvec3(0.8), true},
     {"functions 3", "sqr(x - y) + abs(x - 2*z) + pow(x, y) + x^z + min(x, y^2) + max(z, y^2) + hypot(x, y) + x^3 "
-                    "+ y^-2 + z^2.5 + x/(z + 1) + 2^x", glm::dvec3(0.2), glm::dvec3(0.8)},
+                    "+ y^-2 + z^2.5 + x/(z + 1) + 2^x", glm::dvec3(0.2), glm::dvec3(0.8), true},
 };
 
 // Per invocation, 5 vec4s: in (o, a), (d, b); out (F, dF) over [a, b], (gradient at o, f(o)),
-// (f's derivative along d at o, 0, 0, 0).
+// (f's derivative along d at o, 0, 0, 0), and with doubles (F in double over [a, b], F in double
+// at o) rounded outward to float.
 const char* kMain = R"(
 void main() {
-    uint i = 5u * gl_GlobalInvocationID.x;
+    uint i = 6u * gl_GlobalInvocationID.x;
     vec3 o = pixels[i].xyz, d = pixels[i + 1u].xyz;
     vec2 s = vec2(pixels[i].w, pixels[i + 1u].w);
     vec2 f, df;
@@ -74,6 +76,10 @@ void main() {
     float value = test(o, d, dd);
     pixels[i + 3u] = vec4(test_gradient(o), value);
     pixels[i + 4u] = vec4(dd, 0.0, 0.0, 0.0);
+#if LANCER_FLOAT64
+    pixels[i + 5u] = vec4(i_flt(test_at_a_point(dvec3(o), dvec3(d), dvec2(s))),
+                          i_flt(test_at_a_point(dvec3(o), dvec3(d), dvec2(0.0))));
+#endif
 }
 )";
 
@@ -104,19 +110,21 @@ TEST_P(GlslImplicitOnDevice, ValuesDerivativesAndEnclosures) {
         if (glm::any(glm::lessThan(glm::min(p0, p1), c.lo)) || glm::any(glm::greaterThan(glm::max(p0, p1), c.hi))) continue;
         pieces.push_back({glm::vec3(o), glm::vec3(d), float(a), float(a + w)});
     }
-    std::vector<float> data(pieces.size() * 20, 0.0f);
+    std::vector<float> data(pieces.size() * 24, 0.0f);
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         const Piece& p = pieces[i];
-        float* v = &data[20 * i];
+        float* v = &data[24 * i];
         v[0] = p.o.x, v[1] = p.o.y, v[2] = p.o.z, v[3] = p.a;
         v[4] = p.d.x, v[5] = p.d.y, v[6] = p.d.z, v[7] = p.b;
     }
-    std::vector<float> out = run_compute("#include \"interval.glsl\"\n" + gpu::emit_glsl_implicit(s.f, "test") + kMain,
-                                               data, static_cast<std::uint32_t>(pieces.size()));
+    const bool float64 = test::gpu_renderer().context().float64();
+    std::vector<float> out = run_compute(fmt::format("#define LANCER_FLOAT64 {}\n#include \"interval.glsl\"\n", float64 ? 1 : 0) +
+                                             gpu::emit_glsl_implicit(s.f, "test", float64) + kMain,
+                                         data, static_cast<std::uint32_t>(pieces.size()));
     int samples = 0;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         const Piece& p = pieces[i];
-        const float* v = &out[20 * i];
+        const float* v = &out[24 * i];
         const glm::dvec3 o(p.o), d(p.d);
         // Point values at o: float against double, relative to the sizes involved.
         surface::ImplicitPoint at_o = surface::evaluate_implicit(s, o);
@@ -131,6 +139,15 @@ TEST_P(GlslImplicitOnDevice, ValuesDerivativesAndEnclosures) {
         if (i % 5 == 0) {
             EXPECT_LE(hi - lo, 1e-2 * scale) << c.name << " piece " << i;  // asin and acos have 2e-3 margins
         }
+        // In double, f at o is known to float's last bits where only arithmetic is involved (the
+        // library functions are float's: 2e-3 again).
+        const double point_lo = v[22], point_hi = v[23], dlo64 = v[20], dhi64 = v[21];
+        if (float64) {
+            const double slack = 1e-12 * (1.0 + std::abs(at_o.f));
+            EXPECT_TRUE(point_lo - slack <= at_o.f && at_o.f <= point_hi + slack)
+                << c.name << " piece " << i << ": f(o) " << at_o.f << " outside [" << point_lo << ", " << point_hi << "]";
+            EXPECT_LE(point_hi - point_lo, (c.library_functions ? 1e-2 : 1e-6) * scale) << c.name << " piece " << i;
+        }
         for (int k = 0; k <= 32; ++k) {
             double t = p.a + (double(p.b) - p.a) * k / 32.0;
             surface::ImplicitPoint q = surface::evaluate_implicit(s, o + t * d);
@@ -140,6 +157,10 @@ TEST_P(GlslImplicitOnDevice, ValuesDerivativesAndEnclosures) {
                 << c.name << " piece " << i << " s " << t << ": f " << q.f << " outside [" << lo << ", " << hi << "]";
             EXPECT_TRUE(dlo - slack_d <= dq && dq <= dhi + slack_d)
                 << c.name << " piece " << i << " s " << t << ": f' " << dq << " outside [" << dlo << ", " << dhi << "]";
+            if (float64)
+                EXPECT_TRUE(dlo64 - slack_f <= q.f && q.f <= dhi64 + slack_f)
+                    << c.name << " piece " << i << " s " << t << ": f " << q.f << " outside the double [" << dlo64 << ", "
+                    << dhi64 << "]";
             ++samples;
         }
     }

@@ -369,7 +369,7 @@ TEST_P(Reintersect, HitsLieOnTheSurfaceAndRestartedRaysLeaveIt) {
     }
     gpu::ShaderFeatures features = packed.features;
     features.grids_only = false;  // its rays start anywhere (NO_GRID): they need the BVH
-    test::GpuKernel kernel(kKernel, gpu::surface_functions_glsl(world), features);
+    test::GpuKernel kernel(kKernel, gpu::surface_functions_glsl(world, test::gpu_renderer().context().float64()), features);
     std::vector<vec4> out = kernel.run(packed, frame, io, static_cast<std::uint32_t>(rays.size()));
 
     for (std::size_t i = 0; i < rays.size(); ++i) {

@@ -141,9 +141,9 @@ TEST(MemoryLimits, TheRenderEstimateCoversTheMeasuredPeaksOfManyImplicitSurfaces
         int in_use_mib, peak_mib;
     };
     const Measured measured[] = {
-        {8, false, "Mesa 25.0.7", 351, 551},    {32, false, "Mesa 25.0.7", 351, 1113},
-        {32, true, "Mesa 25.0.7", 351, 1763},   {8, false, "Mesa 22.3.6", 270, 512},
-        {32, false, "Mesa 22.3.6", 270, 1195},  {32, true, "Mesa 22.3.6", 270, 1990},
+        {8, false, "Mesa 25.0.7", 351, 657},    {32, false, "Mesa 25.0.7", 351, 1526},
+        {32, true, "Mesa 25.0.7", 351, 2504},   {8, false, "Mesa 22.3.6", 270, 640},
+        {32, false, "Mesa 22.3.6", 270, 1703},  {32, true, "Mesa 22.3.6", 270, 2904},
     };
     for (const Measured& m : measured) {
         const Scene scene = test::scene_from_text(implicit_surfaces_scene(m.surfaces, m.extra));

@@ -216,7 +216,7 @@ std::string emit_glsl_surface(const surface::Expr& x, const surface::Expr& y, co
     return out;
 }
 
-std::string emit_glsl_implicit(const surface::Expr& f, const std::string& function_name) {
+std::string emit_glsl_implicit(const surface::Expr& f, const std::string& function_name, bool in_double_at_a_point) {
     if (!is_glsl_identifier(function_name))
         throw std::invalid_argument("emit_glsl_implicit: '" + function_name + "' is not a GLSL identifier");
     const surface::Expr* expressions[] = {&f};
@@ -237,6 +237,7 @@ std::string emit_glsl_implicit(const surface::Expr& f, const std::string& functi
         out += fmt::format("    return {};\n}}\n", e.grad(root));
     }
     out += emit_glsl_interval(program, function_name + "_interval");
+    if (in_double_at_a_point) out += emit_glsl_interval_at_a_point(program, function_name + "_at_a_point");
     return out;
 }
 

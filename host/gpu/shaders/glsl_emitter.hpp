@@ -24,7 +24,9 @@ namespace lancer::gpu {
 // function_name must be a GLSL identifier (letters, digits, '_'; not starting with a digit or
 // "gl_"); std::invalid_argument otherwise.
 std::string emit_glsl_surface(const surface::Expr& x, const surface::Expr& y, const surface::Expr& z, const std::string& function_name);
-std::string emit_glsl_implicit(const surface::Expr& f, const std::string& function_name);
+// `in_double_at_a_point` adds NAME_at_a_point, f's enclosure at a point in double
+// (emit_glsl_interval_at_a_point), for devices with shaderFloat64.
+std::string emit_glsl_implicit(const surface::Expr& f, const std::string& function_name, bool in_double_at_a_point = false);
 
 // A double as a GLSL float literal that reads back as the nearest float: "2.0", "0.100000001",
 // "1e-05", "(-1.5)"; out-of-range values become +-infinity.

@@ -25,10 +25,15 @@ std::string chain(const std::string& x, int m) {
     return "(" + x + " * " + chain(x, m - 1) + ")";
 }
 
+// A double literal that reads back as `value` (the "#" keeps a decimal point: "2lf" is no literal).
+std::string glsl_double(double value) { return fmt::format("{:#.17g}lf", value); }
+
 class GlslIntervalEmitter {
 public:
-    explicit GlslIntervalEmitter(const surface::Program& program)
-        : program_(program), value_(program.nodes.size()), derivative_(program.nodes.size()) {}
+    // `at_a_point`: the value alone, in double (interval.glsl's dvec2 overloads).
+    GlslIntervalEmitter(const surface::Program& program, bool at_a_point)
+        : program_(program), interval_(at_a_point ? "dvec2" : "vec2"),
+          value_(program.nodes.size()), derivative_(program.nodes.size()) {}
 
     std::string run(const std::string& name) {
         out_ = fmt::format("void {}(vec3 o, vec3 d, vec2 s, out vec2 f, out vec2 df) {{\n", name);
@@ -38,29 +43,41 @@ public:
         return out_;
     }
 
+    std::string run_at_a_point(const std::string& name) {
+        out_ = fmt::format("dvec2 {}(dvec3 o, dvec3 d, dvec2 s) {{\n", name);
+        for (std::size_t i = 0; i < program_.nodes.size(); ++i) emit_at_a_point(static_cast<int>(i));
+        out_ += fmt::format("    return {};\n}}\n", value_[program_.outputs[0]]);
+        return out_;
+    }
+
 private:
     std::string der(int i) const { return derivative_[i].empty() ? "vec2(0.0)" : derivative_[i]; }
     bool varies(int i) const { return !derivative_[i].empty(); }
 
     std::string temp(const std::string& prefix, int i, const std::string& code) {
+        return temp_of(interval_, prefix, i, code);
+    }
+    std::string temp_of(const std::string& type, const std::string& prefix, int i, const std::string& code) {
         std::string name = fmt::format("{}{}", prefix, i);
-        out_ += fmt::format("    vec2 {} = {};\n", name, code);
+        out_ += fmt::format("    {} {} = {};\n", type, name, code);
         return name;
     }
     void define(int i, const std::string& code) { value_[i] = temp("v", i, code); }
     void define_derivative(int i, const std::string& code) { derivative_[i] = temp("w", i, code); }
 
     // The interval of a^k for an integer k, as a temporary named after node i and `tag`.
-    std::string power(const std::string& a, int k, int i, const std::string& tag) {
-        if (k == 0) return "vec2(1.0)";
-        if (k < 0) return temp("r" + tag, i, fmt::format("i_div(vec2(1.0), {})", power(a, -k, i, tag + "n")));
+    std::string power(const std::string& a, int k, int i, const std::string& tag) { return power_of(interval_, a, k, i, tag); }
+    std::string power_of(const std::string& type, const std::string& a, int k, int i, const std::string& tag) {
+        if (k == 0) return type + "(1.0)";
+        if (k < 0) return temp_of(type, "r" + tag, i, fmt::format("i_div({}(1.0), {})", type, power_of(type, a, -k, i, tag + "n")));
         if (k == 1) return a;
-        if (k == 2) return temp("p" + tag, i, fmt::format("i_sqr({})", a));
+        if (k == 2) return temp_of(type, "p" + tag, i, fmt::format("i_sqr({})", a));
         std::string base = a;
-        if (k % 2 == 0) base = temp("m" + tag, i, fmt::format("i_magnitudes({})", a));
+        if (k % 2 == 0) base = temp_of(type, "m" + tag, i, fmt::format("i_magnitudes({})", a));
         std::string r;
         if (k <= kMaxChain) {
-            r = fmt::format("i_widen_n(vec2({}, {}), {})", chain(base + ".x", k), chain(base + ".y", k), glsl_float(2.0 * k));
+            r = fmt::format("i_widen_n({}({}, {}), {})", type, chain(base + ".x", k), chain(base + ".y", k),
+                            glsl_float(2.0 * k));
         } else {
             // Odd powers keep the sign: pow() of the magnitude, the sign put back.
             std::string lo = k % 2 ? fmt::format("sign({0}.x) * pow(abs({0}.x), {1})", base, glsl_float(k))
@@ -69,8 +86,8 @@ private:
                                    : fmt::format("pow({}.y, {})", base, glsl_float(k));
             r = fmt::format("i_widen_n(vec2({}, {}), {})", lo, hi, glsl_float(100.0 * k));
         }
-        if (k % 2 == 0) r = fmt::format("max({}, vec2(0.0, -I_INF))", r);
-        return temp("p" + tag, i, r);
+        if (k % 2 == 0) r = fmt::format("max({}, {}(0.0, -I_INF))", r, type);
+        return temp_of(type, "p" + tag, i, r);
     }
 
     // A function of one argument with derivative k(a) da.
@@ -234,7 +251,79 @@ private:
         throw std::logic_error("emit_glsl_interval: unhandled operation");
     }
 
+    // The value alone, in double where Vulkan's core instructions allow (arithmetic, sqrt,
+    // integer powers as products); the library functions are float's, on an interval rounded
+    // outward to float and back.
+    void emit_at_a_point(int i) {
+        const surface::Node& n = program_.nodes[i];
+        const std::string a = n.a >= 0 ? value_[n.a] : "", b = n.b >= 0 ? value_[n.b] : "";
+        switch (n.op) {
+            case surface::Op::Constant: value_[i] = fmt::format("dvec2({})", glsl_double(n.value)); return;
+            case surface::Op::Variable: {
+                const char axis = "xyz"[static_cast<int>(n.value)];
+                return define(i, fmt::format("i_affine(o.{0}, d.{0}, s)", axis));
+            }
+            case surface::Op::Add: return define(i, fmt::format("i_add({}, {})", a, b));
+            case surface::Op::Sub: return define(i, fmt::format("i_sub({}, {})", a, b));
+            case surface::Op::Neg: return define(i, fmt::format("i_neg({})", a));
+            case surface::Op::Mul: return define(i, fmt::format("i_mul({}, {})", a, b));
+            case surface::Op::Div: return define(i, fmt::format("i_div({}, {})", a, b));
+            case surface::Op::Sqr: return define(i, fmt::format("i_sqr({})", a));
+            case surface::Op::Sqrt: return define(i, fmt::format("i_sqrt({})", a));
+            case surface::Op::Abs: return define(i, fmt::format("i_abs({})", a));
+            case surface::Op::Min: return define(i, fmt::format("i_min({}, {})", a, b));
+            case surface::Op::Max: return define(i, fmt::format("i_max({}, {})", a, b));
+            case surface::Op::PowInt:
+                if (std::abs(n.value) <= kMaxChain) {
+                    value_[i] = power(a, static_cast<int>(n.value), i, "");
+                    if (value_[i] == a) value_[i] = temp("v", i, a);
+                    return;
+                }
+                // Beyond products, float's pow() on each bound (power_of), rounded outward.
+                return define(i, fmt::format("i_dbl({})", power_of("vec2", temp_of("vec2", "f", i, "i_flt(" + a + ")"),
+                                                                    static_cast<int>(n.value), i, "f")));
+            default: return define(i, in_float(n, a, b));
+        }
+    }
+
+    // Node i's value by interval.glsl's float function, for operands given in double.
+    std::string in_float(const surface::Node& n, const std::string& a, const std::string& b) {
+        const std::string fa = "i_flt(" + a + ")", fb = b.empty() ? "" : "i_flt(" + b + ")";
+        switch (n.op) {
+            case surface::Op::PowConst: return fmt::format("i_dbl(i_powc({}, {}))", fa, glsl_float(n.value));
+            case surface::Op::Pow: return fmt::format("i_dbl(i_powr({}, {}))", fa, fb);
+            case surface::Op::Atan2: return fmt::format("i_dbl(i_atan2({}, {}))", fa, fb);
+            case surface::Op::Hypot: return fmt::format("i_dbl(i_hypot({}, {}))", fa, fb);
+            default: return fmt::format("i_dbl(i_{}({}))", float_function(n.op), fa);
+        }
+    }
+
+    static const char* float_function(surface::Op op) {
+        switch (op) {
+            case surface::Op::Cbrt: return "cbrt";
+            case surface::Op::Exp: return "exp";
+            case surface::Op::Exp2: return "exp2";
+            case surface::Op::Log: return "log";
+            case surface::Op::Log2: return "log2";
+            case surface::Op::Log10: return "log10";
+            case surface::Op::Sin: return "sin";
+            case surface::Op::Cos: return "cos";
+            case surface::Op::Tan: return "tan";
+            case surface::Op::Asin: return "asin";
+            case surface::Op::Acos: return "acos";
+            case surface::Op::Atan: return "atan";
+            case surface::Op::Sinh: return "sinh";
+            case surface::Op::Cosh: return "cosh";
+            case surface::Op::Tanh: return "tanh";
+            case surface::Op::Asinh: return "asinh";
+            case surface::Op::Acosh: return "acosh";
+            case surface::Op::Atanh: return "atanh";
+            default: throw std::logic_error("emit_glsl_interval_at_a_point: unhandled operation");
+        }
+    }
+
     const surface::Program& program_;
+    const std::string interval_;  // the GLSL type of an interval
     std::vector<std::string> value_;       // a temporary's name or a literal
     std::vector<std::string> derivative_;  // "" where the derivative is zero
     std::string out_;
@@ -243,7 +332,11 @@ private:
 }  // namespace
 
 std::string emit_glsl_interval(const surface::Program& program, const std::string& function_name) {
-    return GlslIntervalEmitter(program).run(function_name);
+    return GlslIntervalEmitter(program, false).run(function_name);
+}
+
+std::string emit_glsl_interval_at_a_point(const surface::Program& program, const std::string& function_name) {
+    return GlslIntervalEmitter(program, true).run_at_a_point(function_name);
 }
 
 }  // namespace lancer::gpu

@@ -16,4 +16,10 @@ namespace lancer::gpu {
 // `program` has one output, an expression in x, y, z (variables 0, 1, 2).
 std::string emit_glsl_interval(const surface::Program& program, const std::string& function_name);
 
+//   dvec2 NAME(dvec3 o, dvec3 d, dvec2 s)
+//
+// The same enclosure of f(o + t d) for t in [s.x, s.y], without the derivative and in double
+// (interval.glsl's dvec2 overloads): used at a point, where float's rounding cannot tell f from 0.
+std::string emit_glsl_interval_at_a_point(const surface::Program& program, const std::string& function_name);
+
 }  // namespace lancer::gpu

@@ -14,6 +14,8 @@ namespace lancer::gpu {
 // Parametric surface k is the k-th ParametricObject of scene.objects, the index of its
 // SurfaceInfo; implicit surface k the k-th ImplicitObject, the index of its ImplicitInfo
 // (scene_packing.cpp).
-std::string surface_functions_glsl(const Scene& scene);
+// `float64`: the device runs double precision (shaderFloat64), so implicit surfaces get their
+// enclosure at a point in double too (LANCER_FLOAT64, shapes/implicit.glsl).
+std::string surface_functions_glsl(const Scene& scene, bool float64);
 
 }  // namespace lancer::gpu

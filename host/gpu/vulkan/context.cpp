@@ -219,9 +219,15 @@ Context::Context(const ContextOptions& options) {
         queue_info.queueFamilyIndex = queue_family_;
         queue_info.queueCount = 1;
         queue_info.pQueuePriorities = &priority;
+        VkPhysicalDeviceFeatures supported{};
+        vkGetPhysicalDeviceFeatures(physical_, &supported);
+        VkPhysicalDeviceFeatures enabled{};
+        enabled.shaderFloat64 = supported.shaderFloat64;  // where there, implicit surfaces use it (surface_codegen)
+        float64_ = supported.shaderFloat64 == VK_TRUE;
         VkDeviceCreateInfo device_info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
         device_info.queueCreateInfoCount = 1;
         device_info.pQueueCreateInfos = &queue_info;
+        device_info.pEnabledFeatures = &enabled;
         VK_CHECK(vkCreateDevice(physical_, &device_info, nullptr, &device_));
         vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
         if (debug_utils)

@@ -56,6 +56,8 @@ public:
     const DeviceInfo& info() const { return info_; }
     const VkPhysicalDeviceLimits& limits() const { return limits_; }
     const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_; }
+    // Whether shaders may use double precision (the device's shaderFloat64, enabled when there).
+    bool float64() const { return float64_; }
 
     // A memory type with all of `required` flags (and as many of `preferred` as possible).
     std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required,
@@ -93,6 +95,7 @@ private:
     VkPhysicalDeviceLimits limits_{};
     VkPhysicalDeviceMemoryProperties memory_{};
     bool memory_in_a_file_ = false;
+    bool float64_ = false;
     mutable std::mutex file_memory_mutex_;
     mutable std::uint64_t file_memory_allocated_ = 0;
 };
