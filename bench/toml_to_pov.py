@@ -55,6 +55,8 @@ TRANSLATED = {
     "bezier": {"file", "control_points", "patches", "transform", "subdivision"},
     "parametric": {"x", "y", "z", "u", "v", "params", "transform"},
     "implicit": {"function", "box", "params", "transform"},
+    "superellipsoid": {"e", "n"},
+    "blob": {"threshold", "spheres", "cylinders"},
     "mesh": {"file", "smooth", "transform"},
 }
 OBJECT_KEYS = {"type", "material", "name", "transform"}
@@ -506,6 +508,14 @@ def shape_body(o, base, torus_as, implicit_as, accuracy):
         return implicit(o, implicit_as, accuracy)
     if t == "mesh":
         return mesh(o, base)
+    if t == "superellipsoid":  # the same parameters and meaning
+        return f"superellipsoid {{ <{o['e']:.9g}, {o['n']:.9g}>\n"
+    if t == "blob":  # the same components; POV-Ray's cylinders have the same round ends
+        parts = [f"  sphere {{ {vec(c['center'])}, {c['radius']:.9g}, strength {c['strength']:.9g} }}\n"
+                 for c in o.get("spheres", [])]
+        parts += [f"  cylinder {{ {vec(c['base_point'])}, {vec(c['cap_point'])}, {c['radius']:.9g}, strength {c['strength']:.9g} }}\n"
+                  for c in o.get("cylinders", [])]
+        return f"blob {{ threshold {o['threshold']:.9g}\n" + "".join(parts)
     sys.exit(f"toml_to_pov: object type {t} is not supported")
 
 

@@ -43,9 +43,6 @@ void read_box(TableReader& object, surface::ImplicitSurface& s) {
                                       object.what(), "xyz"[i], s.box_hi[i], s.box_lo[i]));
 }
 
-// Where in the scene file a column of f's text is: inside the `function` string, or the `poly` key.
-using ColumnPlace = std::function<SourceLocation(int column)>;
-
 // Where f is undefined or infinite everywhere in the box, the error is at the operation that
 // makes it so.
 void check_defined(const ColumnPlace& place, const surface::ImplicitSurface& s) {
@@ -114,6 +111,12 @@ Shape read_implicit(TableReader& t, const glm::dmat4& to_world) {
         s.f = parse_expression_key(*node, t.file(), "function", constants, surface::kImplicitVariables);
     }
     read_box(t, s);
+    return prepared_implicit(t, std::move(object), key, place, to_world);
+}
+
+Shape prepared_implicit(TableReader& t, ImplicitObject object, const std::string& key, const ColumnPlace& place,
+                        const glm::dmat4& to_world) {
+    surface::ImplicitSurface& s = object.surface;
     check_defined(place, s);
     try {
         s.polynomial = surface::expand_polynomial(s.f);

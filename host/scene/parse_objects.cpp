@@ -9,6 +9,7 @@
 #include "scene/limits.hpp"
 #include "scene/mesh_materials.hpp"
 #include "scene/parse_shapes.hpp"
+#include "scene/parse_surfaces.hpp"
 #include "scene/placement.hpp"
 #include "scene/pov_ray_words.hpp"
 #include "scene/shape_bounds.hpp"
@@ -68,7 +69,7 @@ struct SurfaceTotals {
         if (type == "parametric" && ++parametric > limits::kMaxParametricSurfaces)
             t.fail("type", fmt::format("too many parametric surfaces (the limit is {} per scene)",
                                        limits::kMaxParametricSurfaces));
-        if (type == "implicit" && ++implicit > limits::kMaxImplicitSurfaces)
+        if (type && is_implicit_type(*type) && ++implicit > limits::kMaxImplicitSurfaces)
             t.fail("type", fmt::format("too many implicit surfaces (the limit is {} per scene)",
                                        limits::kMaxImplicitSurfaces));
     }

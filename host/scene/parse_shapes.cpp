@@ -164,6 +164,8 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"bezier", read_bezier},
         {"parametric", read_parametric},
         {"implicit", read_implicit},
+        {"superellipsoid", read_superellipsoid},
+        {"blob", read_blob},
         {"disc", read_disc},
         {"cylinder", read_cylinder},
         {"cone", read_cone},

@@ -3,6 +3,9 @@
 // "parametric" (equations in u and v), "implicit" (an equation f(x, y, z) = 0) and "mesh" (a
 // triangle mesh file). Registered in
 // shape_readers() (parse_shapes.cpp).
+#include <functional>
+#include <string>
+
 #include <glm/mat4x4.hpp>
 
 #include "scene/scene.hpp"
@@ -14,6 +17,21 @@ Shape read_bezier(TableReader& t, const glm::dmat4& to_world);
 Shape read_parametric(TableReader& t, const glm::dmat4& to_world);
 Shape read_implicit(TableReader& t, const glm::dmat4& to_world);
 Shape read_mesh(TableReader& t, const glm::dmat4& to_world);  // parse_mesh.cpp
+// POV-Ray's superellipsoid and blob, as the implicit surfaces they are (parse_implicit_solids.cpp).
+Shape read_superellipsoid(TableReader& t, const glm::dmat4& to_world);
+Shape read_blob(TableReader& t, const glm::dmat4& to_world);
+
+// Where in the scene file a column of f's text is: inside the `function` string, or the key
+// whose values the function was written from.
+using ColumnPlace = std::function<SourceLocation(int column)>;
+
+// The checks and preparation of every implicit surface (parse_implicit.cpp), once f and the box
+// are in `object`: errors at `key` (and within f's text, at `place`), then placed by `to_world`.
+Shape prepared_implicit(TableReader& t, ImplicitObject object, const std::string& key, const ColumnPlace& place,
+                        const glm::dmat4& to_world);
+
+// Whether objects of this type are implicit surfaces (counted against the implicit limits).
+bool is_implicit_type(std::string_view type);
 
 // Fails at `key` unless every coordinate of [lo, hi] is within kMaxMagnitude: geometry built by
 // transforms and equations must stay as representable as the numbers it came from.
