@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # lancer's benchmark suite against POV-Ray 3.7 (a benchmark, never a test: speed is not asserted).
 #
-#   bench/run.sh [runs=3] [all|classic|implicit|quality|parametric|mesh]
+#   bench/run.sh [runs=3] [all|classic|implicit|quality|parametric|mesh|shapes]
 #
 # For each suite scene, in one run so the ratios mean something on a shared, noisy machine:
 # lancer on the GPU path (lavapipe here), lancer's CPU reference, and POV-Ray rendering the same
@@ -32,6 +32,10 @@
 # ../shared/models beside the repository) and a torus knot of 10^6 triangles in the same view
 # (bench/knot_million.toml, made by scenes/tools/make_meshes.py --million), against POV-Ray's
 # mesh2 twins, which bench/toml_to_pov.py writes into bench/out/ (too large to keep).
+#
+# The shapes people build with (suite `shapes`, not in `all`): bench/shapes.toml (cylinder, cone,
+# disc, torus, a CSG die, a superellipsoid and a blob, opaque) against the POV-Ray twin that
+# bench/toml_to_pov.py writes into bench/out/.
 #
 # Installs POV-Ray (and GNU time) with apt-get when missing: the benchmark's own setup, not the
 # main one.
@@ -268,11 +272,13 @@ if [ "$suite" = all ] || [ "$suite" = classic ]; then
   # POV-Ray's parametric (Lipschitz subdivision) needs minutes for even a small torus image.
   bench_scene torus 160 90 160 90 parametric
 fi
-if [ "$suite" = mesh ]; then
-  [ -f bench/out/torus_knot_million.obj ] || python3 scenes/tools/make_meshes.py --million
+if [ "$suite" = mesh ] || [ "$suite" = shapes ]; then
+  [ "$suite" = shapes ] || [ -f bench/out/torus_knot_million.obj ] || python3 scenes/tools/make_meshes.py --million
+  names="bunny knot_million"
+  [ "$suite" = shapes ] && names=shapes
   printf '| scene | size | rays/pixel | renderer | wall s | render s | Mrays/s | peak MiB | POV wall / this |\n'
   printf '|---|---|---|---|---|---|---|---|---|\n'
-  for name in bunny knot_million; do
+  for name in $names; do
     python3 bench/toml_to_pov.py "bench/$name.toml" >"$out/$name.pov"
     build/lancer render "bench/$name.toml" --width 64 --height 36 -q -o "$out/warm.png"
     gpu=$(measure run_lancer "bench/$name.toml" 1280 720 gpu)
@@ -281,7 +287,7 @@ if [ "$suite" = mesh ]; then
     pov_wall=$(awk '{print $1}' <<<"$pov")
     row "$name" 1280x720 9 "lancer gpu" "$gpu" "$pov_wall"
     row "$name" 1280x720 9 "lancer cpu reference" "$cpu" "$pov_wall"
-    row "$name" 1280x720 "9 (+centre)" "POV-Ray 3.7, 2 threads (mesh2)" "$pov" "$pov_wall"
+    row "$name" 1280x720 "9 (+centre)" "POV-Ray 3.7, 2 threads" "$pov" "$pov_wall"
     build/lancer diff "$out/$name-lancer-gpu.png" "$out/$name-pov.png" --side-by-side "$out/$name-side.png" \
       | sed 's/^/    /' >>"$out/psnr.txt"
   done
