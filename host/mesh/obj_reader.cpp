@@ -214,6 +214,7 @@ private:
             lines_.fail(t, fmt::format("cannot read the MTL file {} ({}): {}", excerpt(name), path, e.what()));
         }
         read_mtl(text, path, companions_.texture_exists, mesh_.materials);
+        mesh_.companion_files.push_back(path);
         ++mtl_files_;
     }
 

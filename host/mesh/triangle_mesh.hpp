@@ -31,6 +31,7 @@ struct TriangleMesh {
     std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into positions (and normals, uvs), counter-clockwise seen from the front
     std::vector<std::uint32_t> triangle_materials;        // one per triangle, into materials; empty: none
     std::vector<MeshMaterial> materials;
+    std::vector<std::string> companion_files;  // read besides the mesh's own file (an OBJ's MTL files)
     std::size_t skipped_degenerate = 0;  // zero-area triangles the reader left out (they cannot be seen)
 };
 

@@ -198,9 +198,12 @@ struct ObjectReading {
                 t.fail("type", fmt::format("too many objects with the groups' members (the limit is {})", limits::kMaxObjects));
             if (auto* b = std::get_if<BezierSurface>(&o.shape); b && !b->source_file.empty())
                 scene.dependencies.push_back(b->source_file);
-            // A mesh's file too (watch reloads it; the render stamp's hash covers it).
-            if (auto* m = std::get_if<Mesh>(&o.shape); m && mesh_files.insert(m->source_file).second)
+            // A mesh's files too, its MTL files with it (watch reloads them; the render stamp's
+            // hash covers them).
+            if (auto* m = std::get_if<Mesh>(&o.shape); m && mesh_files.insert(m->source_file).second) {
                 scene.dependencies.push_back(m->source_file);
+                for (const std::string& file : m->geometry->mesh().companion_files) scene.dependencies.push_back(file);
+            }
             return;
         }
         if (depth == kMaxGroupDepth) t.fail("type", fmt::format("groups nest at most {} deep", kMaxGroupDepth));

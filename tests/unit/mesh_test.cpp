@@ -227,6 +227,9 @@ TEST(Mesh, TheFilesMaterialsApplyWhereTheSceneGivesNone) {
     EXPECT_EQ(blue.transmission, dvec3(0.75));
     EXPECT_TRUE(third.part_materials.empty());
     EXPECT_EQ(scene.materials[third.material_of(1, scene.objects[2].material)].name, "green");
+    // The MTL file is a dependency as the OBJ is, once: watch reloads it, the render stamp covers it.
+    EXPECT_EQ(std::count(scene.dependencies.begin(), scene.dependencies.end(), s.dir + "/m.mtl"), 1);
+    EXPECT_EQ(std::count(scene.dependencies.begin(), scene.dependencies.end(), s.dir + "/m.obj"), 1);
 }
 
 TEST(Mesh, TheReaderRefusesWhatItCannotUse) {
