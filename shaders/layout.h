@@ -262,7 +262,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 #define LANCER_ROWS_Light(VEC4, VEC4S, SCALARS, UVEC4S)                                                      \
     VEC4(position)  /* xyz = where it is (area light: the rectangle's centre); w = fall-off distance, 0 = none */ \
     VEC4(color)     /* rgb */                                                                        \
-    VEC4(direction) /* spot: xyz = unit axis of the cone */                                          \
+    VEC4(direction) /* spot: xyz = unit axis of the cone; w = POV-Ray's fade_power, 0 = 1/d^2 */      \
     VEC4(spot)      /* spot: x = cos(outer_angle), y = cos(inner_angle), z = tightness */            \
     VEC4(edge_u)    /* area: xyz = first edge (whole length) */                                      \
     VEC4(edge_v)    /* area: xyz = second edge */                                                    \

@@ -53,8 +53,8 @@ vec3 light_intensity(Light light, vec3 q, vec3 p, uint count) {
     if (SCENE_HAS_AREA_LIGHTS && count > 1u) c /= float(count);
     if (SCENE_HAS_SPOT_LIGHTS && light.type == LIGHT_SPOT) c *= spot_factor(light, normalize(p - q));
     if (SCENE_HAS_FALLOFF && light.position.w > 0.0) {
-        float r = light.position.w / length(p - q);  // inverse square, 1 at the fall-off distance
-        c *= r * r;
+        float r = light.position.w / length(p - q);  // 1 at the fall-off distance
+        c *= light.direction.w > 0.0 ? 2.0 / (1.0 + pow(r, -light.direction.w)) : r * r;  // POV-Ray's fade, or 1/d^2
     }
     return c;
 }

@@ -67,6 +67,8 @@ dvec3 light_intensity(const Light& light, const dvec3& q, const dvec3& p, int co
     if (light.falloff == Falloff::InverseSquare) {
         double d = glm::length(p - q);
         c *= (light.falloff_distance * light.falloff_distance) / (d * d);
+    } else if (light.falloff == Falloff::PovFade) {
+        c *= 2.0 / (1.0 + std::pow(glm::length(p - q) / light.falloff_distance, light.fade_power));
     }
     return c;
 }

@@ -58,7 +58,31 @@ void read_radiometry(TableReader& t, Light& l) {
     l.scale = watts_per_sr / kPi;
 }
 
+// POV-Ray's light fading, with its words and formula: 2 / (1 + (d / fade_distance)^fade_power),
+// 1 at fade_distance, 2 at the light, for any positive fade_power (1 linear, 2 quadratic).
+void read_pov_fade(TableReader& t, Light& l) {
+    for (const char* other : {"falloff", "falloff_distance", "power", "intensity"})
+        if (t.has(other))
+            t.fail(other, fmt::format("{} is not used with fade_distance and fade_power (POV-Ray's fading): give one "
+                                      "way of falling off",
+                                      other));
+    if (!t.has("fade_distance") || !t.has("fade_power"))
+        t.fail(t.has("fade_distance") ? "fade_distance" : "fade_power",
+               "POV-Ray's fading needs both fade_distance and fade_power: the light is 2 / (1 + (d / fade_distance)"
+               "^fade_power) times its color at distance d");
+    l.falloff = Falloff::PovFade;
+    l.falloff_distance = t.number("fade_distance", 1.0);
+    if (!(l.falloff_distance > 0.0))
+        t.fail("fade_distance", fmt::format("fade_distance must be positive, not {:g}", l.falloff_distance));
+    l.fade_power = t.number("fade_power", 1.0);
+    if (!(l.fade_power > 0.0 && l.fade_power <= 100.0))
+        t.fail("fade_power", fmt::format("fade_power must be in (0, 100], not {:g} (0 is no fading: leave both keys "
+                                         "out)",
+                                         l.fade_power));
+}
+
 void read_falloff(TableReader& t, Light& l) {
+    if (t.has("fade_distance") || t.has("fade_power")) return read_pov_fade(t, l);
     if (t.has("power") || t.has("intensity")) return;  // read_radiometry
     l.falloff = static_cast<Falloff>(one_of(t, "falloff", "falloff", {"none", "inverse_square"}, "none"));
     if (l.falloff == Falloff::InverseSquare) {

@@ -25,8 +25,10 @@ std::string pov_ray_key_hint(std::string_view key) {
         {"direction", "lancer's camera is set by eye, look_at, up and fov"},
         {"filter", "a POV-Ray filter f on colour c is lancer's transmission = [f r, f g, f b]"},
         {"transmit", "POV-Ray's transmit t is lancer's transmission = t"},
-        {"fade_distance", "POV-Ray's fade_distance D and fade_color c are lancer's absorption = (1 - c) / D"},
-        {"fade_power", "a medium's fading is lancer's absorption (Beer-Lambert); see \"Porting from POV-Ray\""},
+        {"fade_distance", "an interior's fade_distance D and fade_color c are lancer's absorption = (1 - c) / D; a "
+                          "light takes fade_distance and fade_power as POV-Ray's"},
+        {"fade_power", "a medium's fading is lancer's absorption (Beer-Lambert; see \"Porting from POV-Ray\"); a "
+                       "light takes fade_distance and fade_power as POV-Ray's"},
         {"fade_color", "POV-Ray's fade_distance D and fade_color c are lancer's absorption = (1 - c) / D"},
         {"pigment", "a material's colour is its color, checker, texture or pattern"},
         {"finish", "a material's finish is its own keys: ambient, diffuse, specular, shininess, reflection"},

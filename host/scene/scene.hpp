@@ -86,6 +86,7 @@ enum class LightType {
 enum class Falloff {
     None,           // the same intensity at every distance
     InverseSquare,  // color * (falloff_distance / d)^2
+    PovFade,        // POV-Ray's fade: color * 2 / (1 + (d / falloff_distance)^fade_power)
 };
 
 // A light ([[light]]). Every type has position, color, name and the distance fall-off; the
@@ -100,6 +101,7 @@ struct Light {
     std::string name;     // optional, for [animation] to refer to it
     Falloff falloff = Falloff::None;
     double falloff_distance = 1.0;
+    double fade_power = 0.0;  // PovFade: POV-Ray's fade_power (any positive value)
     SourceLocation where;  // the [[light]] table, for messages
 
     // Spot (POV-Ray's spotlight): full intensity within inner_angle of the axis, none beyond

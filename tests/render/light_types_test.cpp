@@ -106,6 +106,27 @@ TEST_P(LightTypes, InverseSquareFalloffGivesTheColourAtTheReferenceDistance) {
     EXPECT_NEAR(centre[0] / centre[1], 4.0, 1e-4);
 }
 
+// POV-Ray's fading, with any fade_power: 2 / (1 + (d / fade_distance)^fade_power) times the
+// colour, 1 at fade_distance, on both backends (the spot is in the same place as the point).
+TEST_P(LightTypes, PovRayFadeFollowsItsFormulaForAnyPower) {
+    for (double power : {1.0, 2.0, 3.5}) {
+        for (double height : {1.0, 2.0, 5.0}) {
+            Scene s = test::scene_from_text(floor_scene(fmt::format(R"(
+                [[light]]
+                position = [0, {}, 0]
+                color = [0.8, 0.6, 0.4]
+                fade_distance = 2
+                fade_power = {}
+            )",
+                                                                    height, power)));
+            s.render.width = 3;
+            s.render.height = 3;
+            const double expected = 0.8 * 2.0 / (1.0 + std::pow(height / 2.0, power));
+            EXPECT_NEAR(render(s).at(1, 1).r, expected, test::kBackendTolerance) << "power " << power << ", height " << height;
+        }
+    }
+}
+
 // A wall x = 0 of height 1 between the floor x > 0 and an area light at height 5, centred 2
 // to the left, `size` wide along x, 8 x 8 samples at their cells' centres. A point light at
 // -a over the wall's top shades the floor up to x = a / 4, so the penumbra runs from the

@@ -160,13 +160,14 @@ void pack_emitters(const Scene& scene, PackedScene& out) {
 Light pack_light(const lancer::Light& l) {
     constexpr double kDegree = M_PI / 180.0;
     Light g{};
-    g.position = v4(l.position, l.falloff == Falloff::InverseSquare ? l.falloff_distance : 0.0);
+    g.position = v4(l.position, l.falloff != Falloff::None ? l.falloff_distance : 0.0);
+    g.direction.w = l.falloff == Falloff::PovFade ? float(l.fade_power) : 0.0f;
     g.color = v4(l.emitted());
     switch (l.type) {
         case LightType::Point: g.type = LIGHT_POINT; break;
         case LightType::Spot:
             g.type = LIGHT_SPOT;
-            g.direction = v4(l.direction);
+            g.direction = v4(l.direction, g.direction.w);
             g.spot = vec4(float(std::cos(l.outer_angle_deg * kDegree)), float(std::cos(l.inner_angle_deg * kDegree)),
                           float(l.tightness), 0.0f);
             break;
