@@ -37,7 +37,8 @@ import tomllib
 # rather than dropped: a benchmark must compare the same picture. ("subdivision" only changes how
 # lancer's GPU path organises the work; "name" only labels.)
 TRANSLATED = {
-    "top": {"render", "camera", "ambient", "light", "material", "object", "declare"},
+    "top": {"render", "camera", "ambient", "light", "material", "object", "declare", "fog"},
+    "fog": {"type", "distance", "color", "offset", "altitude", "up"},
     "render": {"width", "height", "samples", "max_depth", "background"},
     "camera": {"eye", "look_at", "up", "fov"},
     "ambient": {"color"},
@@ -571,7 +572,7 @@ def main():
     with open(args.scene, "rb") as f:
         scene = tomllib.load(f)
     check_keys(scene, TRANSLATED["top"], "the scene")
-    for table in ("render", "camera", "ambient"):
+    for table in ("render", "camera", "ambient", "fog"):
         check_keys(scene.get(table, {}), TRANSLATED[table], f"[{table}]")
     for i, light in enumerate(scene.get("light", [])):
         plain = {k: v for k, v in light.items() if not (k == "type" and v == "point")}
@@ -587,6 +588,12 @@ def main():
           f"max_trace_level {r.get('max_depth', 5) + 1} adc_bailout 1/1024 }}")
     print(camera(scene))
     print(f"background {{ {rgb(r.get('background', [0, 0, 0]))} }}")
+    if "fog" in scene:  # POV-Ray's fog_type 1 (constant) or 2 (ground), the same parameters
+        fog = scene["fog"]
+        ground = fog.get("type", "constant") == "ground"
+        extra = (f" fog_type 2 fog_offset {fog.get('offset', 0.0):.9g} fog_alt {fog.get('altitude', 1.0):.9g}"
+                 f" up {vec(fog.get('up', [0, 1, 0]))}") if ground else ""
+        print(f"fog {{ distance {fog['distance']:.9g} {rgb(fog.get('color', [0.5, 0.5, 0.5]))}{extra} }}")
     for light in scene.get("light", []):
         print(f"light_source {{ {vec(light['position'])} color {rgb(light.get('color', [1, 1, 1]))} }}")
     print()

@@ -296,6 +296,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     VEC4(background) /* rgb */                                                                    \
     VEC4(ambient)    /* rgb, the scene's ambient light */                                         \
     VEC4(fog)        /* rgb = its colour, w = 1 / its distance (SCENE_HAS_FOG) */                 \
+    VEC4(fog_ground) /* ground fog: height Y(p) = dot(p, xyz) - w in altitudes; xyz = 0: constant */ \
     VEC4S(sky, PATTERN_MAX_COLORS) /* SCENE_HAS_SKY: its ramp, rgb and w = the stop */             \
     SCALARS(uint, width, uint, height,                                                            \
             uint, samples,   /* N: an N x N grid of rays per pixel */                             \

@@ -18,6 +18,7 @@ layout(push_constant) uniform BandBlock { BandParams band; };
 const float CONTRACT_BROKEN = -3.0;
 
 #include "common.glsl"
+#include "fog.glsl"
 #include "scene.glsl"
 #include "dielectric.glsl"
 #include "shade.glsl"
@@ -126,7 +127,7 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
             b.weight *= absorption_over(innermost(b.media), found ? length(b.ray.origin + hit.t * b.ray.dir - b.from) : INFINITY);
         }
         if (SCENE_HAS_FOG) {  // the fog in front of what the ray meets, and its veil over it (Tracer::trace)
-            float through = found ? exp(-length(b.ray.origin + hit.t * b.ray.dir - b.from) * frame.fog.w) : 0.0;
+            float through = exp(-fog_depth(b.from, normalize(b.ray.dir), found ? length(b.ray.origin + hit.t * b.ray.dir - b.from) : INFINITY) * frame.fog.w);
             color += b.weight * (1.0 - through) * frame.fog.rgb;
             b.weight *= through;
         }

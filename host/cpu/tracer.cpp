@@ -328,7 +328,8 @@ dvec3 Tracer::trace(Ray camera_ray, std::uint32_t seed, double& rays) const {
         // Media absorb between surface points (not from the offset origin): the true thickness.
         if (b.media.size() > 0) b.weight *= absorption_along(b.media, found ? glm::length(b.ray.origin + hit.t * b.ray.dir - b.from) : inf);
         if (scene_.fog) {  // the fog in front of what the ray meets, and its veil over it
-            const double through = found ? std::exp(-glm::length(b.ray.origin + hit.t * b.ray.dir - b.from) / scene_.fog->distance) : 0.0;
+            const double length = found ? glm::length(b.ray.origin + hit.t * b.ray.dir - b.from) : inf;
+            const double through = std::exp(-fog_depth(*scene_.fog, b.from, glm::normalize(b.ray.dir), length) / scene_.fog->distance);
             color += b.weight * (1.0 - through) * scene_.fog->color;
             b.weight *= through;
         }

@@ -201,6 +201,20 @@ Scene parse_scene(std::string_view text, const std::string& path) {
         fog.distance = t.required_number("distance");
         if (!(fog.distance > 0.0)) t.fail("distance", fmt::format("fog distance must be positive, not {:g}", fog.distance));
         fog.color = check_color(t, "color", t.vec3("color", fog.color));
+        const std::size_t type = one_of(t, "type", "fog type", {"constant", "ground"}, "constant");
+        if (type == 1) {
+            Fog::Ground g;
+            g.offset = t.number("offset", 0.0);
+            g.altitude = t.number("altitude", 1.0);
+            if (!(g.altitude > 0.0)) t.fail("altitude", fmt::format("fog altitude must be positive, not {:g}", g.altitude));
+            const dvec3 up = t.vec3("up", g.up);
+            if (!(glm::length(up) > 0.0)) t.fail("up", "fog up must not be the zero vector");
+            g.up = glm::normalize(up);
+            fog.ground = g;
+        } else {
+            for (const char* key : {"offset", "altitude", "up"})
+                if (t.has(key)) t.fail(key, fmt::format("{} belongs to the ground fog: type = \"ground\"", key));
+        }
         t.finish();
         scene.fog = fog;
     }

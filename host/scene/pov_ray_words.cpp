@@ -30,6 +30,9 @@ std::string pov_ray_key_hint(std::string_view key) {
         {"fade_power", "a medium's fading is lancer's absorption (Beer-Lambert; see \"Porting from POV-Ray\"); a "
                        "light takes fade_distance and fade_power as POV-Ray's"},
         {"fade_color", "POV-Ray's fade_distance D and fade_color c are lancer's absorption = (1 - c) / D"},
+        {"fog_type", "POV-Ray's fog_type 1 is [fog] type = \"constant\", 2 is type = \"ground\""},
+        {"fog_offset", "POV-Ray's fog_offset is [fog] offset, with type = \"ground\""},
+        {"fog_alt", "POV-Ray's fog_alt is [fog] altitude, with type = \"ground\""},
         {"pigment", "a material's colour is its color, checker, texture or pattern"},
         {"finish", "a material's finish is its own keys: ambient, diffuse, specular, shininess, reflection"},
         {"interior", "a material's interior is its ior and absorption"},

@@ -371,7 +371,21 @@ void check_photon_lights(const Scene& scene);
 struct Fog {
     dvec3 color{0.5};
     double distance = 1.0;
+    // POV-Ray's ground fog (fog_type 2): the fog's density is 1 up to `offset` along `up`, and
+    // 1 / (1 + Y^2) above it, Y the height above `offset` in units of `altitude`.
+    struct Ground {
+        dvec3 up{0.0, 1.0, 0.0};  // unit
+        double offset = 0.0;
+        double altitude = 1.0;
+    };
+    std::optional<Ground> ground;
 };
+
+// The fog's depth along a segment: its density integrated over it, exactly (POV-Ray's constant
+// and ground fog), from `from` along the unit direction `dir` for `length` (infinite: a ray that
+// meets nothing; infinite where the density does not fall off). What lies behind shows through
+// exp(-depth / fog.distance).
+double fog_depth(const Fog& fog, const dvec3& from, const dvec3& dir, double length);
 
 // POV-Ray's sky_sphere with `gradient y` (docs/scene-format.md, "[sky]"): what a ray that meets
 // nothing sees, the colour ramp at its direction's height, wrapped as POV-Ray's gradient is

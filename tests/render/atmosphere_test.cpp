@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "scene/camera.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
@@ -66,7 +67,47 @@ TEST(Fog, ItsKeysAreChecked) {
     const std::string camera = "[camera]\neye = [0, 0, -5]\nlook_at = [0, 0, 0]\n";
     test::expect_scene_error(camera + "[fog]\ndistance = 0\n", 5, 12, "fog distance must be positive, not 0");
     test::expect_scene_error(camera + "[fog]\ncolor = [1, 1, 1]\n", 4, 1, "distance");
-    test::expect_scene_error(camera + "[fog]\ndistance = 3\nfog_type = 2\n", 6, 1, "unknown key 'fog_type'");
+    test::expect_scene_error(camera + "[fog]\ndistance = 3\nfog_type = 2\n", 6, 1,
+                             "unknown key 'fog_type' (POV-Ray's fog_type 1 is [fog] type = \"constant\", 2 is type = \"ground\")");
+    test::expect_scene_error(camera + "[fog]\ndistance = 3\noffset = 1\n", 6, 10, "offset belongs to the ground fog");
+    test::expect_scene_error(camera + "[fog]\ndistance = 3\ntype = \"ground\"\naltitude = 0\n", 7, 12,
+                             "fog altitude must be positive, not 0");
+    test::expect_scene_error(camera + "[fog]\ndistance = 3\ntype = \"ground\"\nup = [0, 0, 0]\n", 7, 6,
+                             "fog up must not be the zero vector");
+    test::expect_scene_error(camera + "[fog]\ndistance = 3\ntype = \"layer\"\n", 6, 8, "unknown fog type 'layer'");
+}
+
+// POV-Ray's ground fog (fog_type 2): density 1 / (1 + Y^2) at the height Y above the offset, in
+// altitudes. The camera looks level at the wall from Y = 2 (density 1/5): the wall shows through
+// exp(-4 / 5 / 5); the top row looks up, out of the fog, and sees the background through what
+// fog lies above (fog_depth, proved against the integral in tests/unit/fog_test.cpp).
+TEST(Fog, GroundFogVeilsByTheDensityAlongTheRay) {
+    std::string text = kWall;
+    text += "type = \"ground\"\noffset = -1\naltitude = 0.5\n";
+    const Scene scene = test::scene_from_text(text);
+    const CameraSpec& cam = scene.camera;
+    const CameraBasis basis = make_camera_basis(cam, 9, 9);
+    const glm::dvec3 up_dir = glm::normalize(camera_ray_direction(basis, 4.5, 0.5, 9, 9));
+    const double wall_through = std::exp(-4.0 / 5.0 / 5.0);
+    const double sky_through = std::exp(-fog_depth(*scene.fog, cam.eye, up_dir, INFINITY) / 5.0);
+    ASSERT_GT(sky_through, 0.05);  // the sky shows: the ray leaves the fog
+    const glm::dvec3 wall(0.2, 0.6, 0.4), fog(0.5, 0.25, 1.0), background(1.0, 0.0, 0.0);
+    for (test::Backend backend : {test::Backend::Cpu, test::Backend::Gpu}) {
+        const FloatImage image = test::render_on(backend, scene);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(image.at(4, 4)[c], wall[c] * wall_through + fog[c] * (1.0 - wall_through), test::kBackendTolerance)
+                << test::backend_name(backend) << " channel " << c;
+            EXPECT_NEAR(image.at(4, 0)[c], background[c] * sky_through + fog[c] * (1.0 - sky_through), test::kBackendTolerance)
+                << test::backend_name(backend) << " channel " << c;
+        }
+    }
+}
+
+TEST(Fog, TheGpuDrawsTheReferencesGroundFog) {
+    Scene scene = test::shipped_scene("seed", 160, 90, 2);
+    scene.fog = Fog{{0.85, 0.85, 0.9}, 6.0, Fog::Ground{{0.0, 1.0, 0.0}, 0.3, 0.5}};
+    test::expect_same_picture("ground_fog_seed", to_srgb8(test::render_on(test::Backend::Gpu, scene)),
+                              to_srgb8(test::render_on(test::Backend::Cpu, scene)));
 }
 
 // A camera looking up at 30 degrees, and one looking down at 30 (the gradient wraps: -0.5 is 0.5

@@ -158,6 +158,10 @@ FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {
     f.background = v4(r.background);
     f.ambient = v4(scene.ambient);
     if (scene.fog) f.fog = v4(scene.fog->color, 1.0 / scene.fog->distance);
+    if (scene.fog && scene.fog->ground) {  // heights in the GPU's frame, which starts at the anchor
+        const Fog::Ground& g = *scene.fog->ground;
+        f.fog_ground = v4(g.up / g.altitude, (g.offset - glm::dot(packed.anchor, g.up)) / g.altitude);
+    }
     if (scene.sky) {
         f.sky_colors = static_cast<uint>(scene.sky->colors.size());
         for (std::size_t i = 0; i < scene.sky->colors.size(); ++i) f.sky[i] = v4(scene.sky->colors[i].color, scene.sky->colors[i].position);
