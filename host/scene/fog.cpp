@@ -4,6 +4,7 @@
 // height grows by k per unit length its integral is (G(Y_end) - G(Y_start)) / k with
 // G(Y) = Y below 0 and atan(Y) above, written so that nearly level segments keep their precision
 // (atan(b) - atan(a) = atan((b - a) / (1 + a b)) for a, b > 0).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 

@@ -9,10 +9,13 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "gpu/gpu_renderer.hpp"
 #include "support/gpu_kernel.hpp"
+#include "support/test_support.hpp"
 #include "surface/expr/evaluate.hpp"
 #include "gpu/shaders/glsl_emitter.hpp"
 #include "surface/expr/parser.hpp"

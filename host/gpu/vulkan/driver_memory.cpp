@@ -50,20 +50,23 @@ RenderMemoryEstimate render_memory_estimate(const Scene& scene, std::uint64_t sc
             const surface::Expr* xyz[] = {&p->surface.x, &p->surface.y, &p->surface.z};
             operations += static_cast<std::uint64_t>(surface::count_operations(surface::compile_program(xyz)));
         } else if (const auto* i = std::get_if<ImplicitObject>(&o.shape)) {
-            // f becomes four functions in the tracer (value and derivative along the ray, gradient,
-            // interval enclosure, and the enclosure at a point in double), so each operation is
-            // counted four times.
+            // f becomes three float functions in the tracer (value and derivative along the ray,
+            // gradient, interval enclosure), so each operation is counted three times; the
+            // enclosure at a point in double, inlined at two places, is counted below.
             expressions = true;
             const auto n = static_cast<std::uint64_t>(surface::count_operations(i->surface.program));
-            operations += 4 * n;
+            operations += 3 * n;
             implicit_operations += n;
         }
     }
     // The driver's compile of many implicit surfaces grows with the square of their operations
     // (docs/robustness.md, "Implicit surfaces' compile": 32 surfaces of 16 operations each peak
-    // at 2.45 GiB of address space on Mesa 25 and 2.84 GiB on Mesa 22.3, 1.2 GiB over the linear
-    // estimate); 5 KiB per operation squared covers both drivers' measured peaks by 10%.
+    // at 2.45 GiB of address space on Mesa 25 and 2.84 GiB on Mesa 22.3, 0.6 GiB over the linear
+    // estimate); 5 KiB per operation squared covers both drivers' measured peaks by 10%. The
+    // double enclosure adds 1.5 MiB per implicit operation (8 surfaces of 11 operations: 128
+    // MiB more than without it, on both drivers).
     const std::uint64_t compile = (expressions ? 128 : 32) * kMiB + operations * (kMiB * 3 / 4) +
+                                  implicit_operations * (kMiB * 3 / 2) +
                                   implicit_operations * implicit_operations * (kMiB * 5 / 1024);
     return {2 * image + 2 * scene_buffer_bytes + compile, 2 * image + scene_buffer_bytes + compile};
 }
