@@ -76,7 +76,8 @@ std::string poly_function(TableReader& t) {
     for (int i = order; i >= 0; --i)
         for (int j = order - i; j >= 0; --j)
             for (int l = order - i - j; l >= 0; --l) {
-                const double c = node_number(*list->get(k++), t.file(), fmt::format("poly[{}]", k - 1));
+                const std::size_t index = k++;
+                const double c = node_number(*list->get(index), t.file(), fmt::format("poly[{}]", index));
                 if (c == 0.0) continue;
                 text += fmt::format("{}({:.17g})", text.empty() ? "" : " + ", c);
                 for (const auto& [variable, power] : {std::pair{'x', i}, {'y', j}, {'z', l}})

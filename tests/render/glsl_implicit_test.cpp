@@ -160,10 +160,11 @@ TEST_P(GlslImplicitOnDevice, ValuesDerivativesAndEnclosures) {
                 << c.name << " piece " << i << " s " << t << ": f " << q.f << " outside [" << lo << ", " << hi << "]";
             EXPECT_TRUE(dlo - slack_d <= dq && dq <= dhi + slack_d)
                 << c.name << " piece " << i << " s " << t << ": f' " << dq << " outside [" << dlo << ", " << dhi << "]";
-            if (float64)
+            if (float64) {
                 EXPECT_TRUE(dlo64 - slack_f <= q.f && q.f <= dhi64 + slack_f)
                     << c.name << " piece " << i << " s " << t << ": f " << q.f << " outside the double [" << dlo64 << ", "
                     << dhi64 << "]";
+            }
             ++samples;
         }
     }
