@@ -257,6 +257,7 @@ TEST(ImplicitExactness, ChmutovSurfacesWithManyNodesAreTheReferences) {
             [render]
             width = 160
             height = 120
+            samples = 2
             background = [0.45, 0.55, 0.75]
             [camera]
             eye = [0, 2.2, -3.6]
