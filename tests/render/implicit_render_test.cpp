@@ -232,7 +232,7 @@ TEST(ImplicitExactness, GpuRootsAgreeWithTheCertifiedRoots) {
 // have dozens of nodes, and without the + 1 the octic has long folds that rays skim. Float's
 // enclosures of the expanded octic cannot tell f from 0 within about 1e-2: rays that skimmed it
 // spent their budget of pieces and missed the roots beyond, shadow rays started 1e-3 off the
-// surface and passed through its folds (1.4% of the pixels off with nodes, 0.9% without). With
+// surface and passed through its folds (at 2 x 2 rays: 1.5% of the pixels off with nodes, 0.4% without). With
 // the device's doubles for f at a point (shapes/implicit.glsl) the GPU draws the reference's
 // picture; without them (a device lacking shaderFloat64) it draws what it did.
 TEST(ImplicitExactness, ChmutovSurfacesWithManyNodesAreTheReferences) {
