@@ -32,11 +32,11 @@
 // Whether it can be outside the BVH, tested by every ray in its family's loop.
 #define LANCER_MAY_BE_OUTSIDE_BVH(traits) (!SCENE_HAS_BVH || !LANCER_BOUNDED(traits) || (LANCER_BOXABLE(traits) && !BVH_HAS_ANALYTIC))
 
-// A CSG leaf's hit in (t_min, t_max): its intersection through its placement (the solids' only:
-// csg.glsl, which follows, never calls itself).
+// A CSG leaf's hit in (t_min, t_max): its intersection through its placement (the solids' and
+// closed shapes' only: csg.glsl, which follows, never calls itself).
 #define LANCER_LEAF_CASE(NAME, name, Type, type, traits)                                     \
     case SHAPE_##NAME:                                                                        \
-        hit = SCENE_HAS_##NAME && ((traits) & SHAPE_SOLID) != 0u &&                            \
+        hit = SCENE_HAS_##NAME && ((traits) & (SHAPE_SOLID | SHAPE_CLOSED)) != 0u &&           \
               name##_intersect(p, ray, t_min * k, t_max * k, t_hit, uv, error);                \
         break;
 // CSG is no solid: its row of the switch calls this instead of itself (GLSL has no recursion).
@@ -44,9 +44,10 @@ bool csg_is_no_leaf(Primitive p, Ray ray, float t_min, float t_max, out float t_
     return false;
 }
 #define csg_intersect csg_is_no_leaf
-bool leaf_hit(Primitive p, Ray world_ray, float t_min, float t_max, out float t_hit, out vec2 uv) {
+bool leaf_hit(Primitive p, Ray world_ray, float t_min, float t_max, out float t_hit, out vec2 uv, out float error) {
     uv = vec2(0.0);
-    float error = 0.0, k;
+    error = 0.0;
+    float k;
     Ray ray = primitive_ray(p, world_ray, k);
     bool hit = false;
     switch (p.type) {
@@ -57,6 +58,17 @@ bool leaf_hit(Primitive p, Ray world_ray, float t_min, float t_max, out float t_
 }
 #undef LANCER_LEAF_CASE
 #undef csg_intersect
+
+// Whether a walked CSG leaf (SHAPE_CLOSED: the torus and the implicit surfaces, as the CPU
+// reference's cpu/shapes/csg.cpp asserts) holds the world ray's point at t.
+bool leaf_inside(Primitive p, Ray world_ray, float t) {
+    float k;
+    Ray ray = primitive_ray(p, world_ray, k);
+    vec3 point = ray.origin + (t * k) * ray.dir;
+    if (p.type == SHAPE_TORUS) return SCENE_HAS_TORUS && torus_inside(p, point);
+    if (p.type == SHAPE_IMPLICIT) return SCENE_HAS_IMPLICIT && implicit_inside(p, point);
+    return false;
+}
 
 #include "shapes/csg.glsl"
 
@@ -421,7 +433,8 @@ bool closest_hit(Ray ray, float t_min, uint grid, out Hit hit) {
     hit.uv = best.uv;
     hit.error = best.error;
     // A CSG hit is its leaf's: shaded with the leaf's normal, material and texture.
-    if (SCENE_HAS_CSG && primitive_at(best.prim).type == SHAPE_CSG) hit.primitive = csg_leaf_hit(ray, best.uv, hit.uv);
+    if (SCENE_HAS_CSG && primitive_at(best.prim).type == SHAPE_CSG)
+        hit.primitive = csg_leaf_hit(primitive_at(best.prim), ray, best.t, best.uv, hit.uv, hit.error);
     hit.normal = primitive_normal(hit.primitive, ray, best.t, ray.origin + best.t * ray.dir, hit.uv, hit.error);
     return true;
 }

@@ -14,6 +14,10 @@
 //                    inside along any line is one interval, from its first hit from -infinity to
 //                    the reversed ray's: it may be an operand of CSG
 //                    (shaders/shapes/csg.glsl; a cone only when capped, as its reader checks);
+//   SHAPE_CLOSED     closed but not convex, with f < 0 inside: its inside along a line is walked
+//                    root by root, each stretch between roots told by f's sign at its middle
+//                    (name_inside): it may be an operand of CSG too (an implicit surface only
+//                    where its reader proved f > 0 on its box's faces);
 //   SHAPE_KEEPS_LOCALS  lavapipe's code for it is faster where the host leaves the SPIR-V's
 //                    local variables alone (gpu/shaders/spirv_specialize.hpp: the Bezier clipper 7-9%,
 //                    the parametric search 2-5%).
@@ -27,10 +31,10 @@
     X(BOX, box, Box, 3, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SOLID)                    \
     X(BEZIER, bezier, BezierSurface, 4, SHAPE_BOUNDED | SHAPE_KEEPS_LOCALS)                              \
     X(PARAMETRIC, parametric, ParametricObject, 5, SHAPE_BOUNDED | SHAPE_GENERATED | SHAPE_KEEPS_LOCALS) \
-    X(IMPLICIT, implicit, ImplicitObject, 6, SHAPE_BOUNDED | SHAPE_GENERATED)                            \
+    X(IMPLICIT, implicit, ImplicitObject, 6, SHAPE_BOUNDED | SHAPE_GENERATED | SHAPE_CLOSED)             \
     X(DISC, disc, Disc, 7, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SHEET)                                    \
     X(CONE, cone, Cone, 8, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SOLID)                                    \
-    X(TORUS, torus, Torus, 9, SHAPE_BOUNDED)                                                             \
+    X(TORUS, torus, Torus, 9, SHAPE_BOUNDED | SHAPE_CLOSED)                                              \
     X(CSG, csg, Csg, 10, SHAPE_BOUNDED)                                                                  \
     X(MESH, mesh, Mesh, 11, SHAPE_BOUNDED)
 
@@ -48,6 +52,7 @@ LANCER_SHAPE_CONST SHAPE_SHEET = 4u;
 LANCER_SHAPE_CONST SHAPE_GENERATED = 8u;
 LANCER_SHAPE_CONST SHAPE_KEEPS_LOCALS = 16u;
 LANCER_SHAPE_CONST SHAPE_SOLID = 32u;
+LANCER_SHAPE_CONST SHAPE_CLOSED = 64u;
 
 // A CSG program (Csg::program, shaders/shapes/csg.glsl): postfix over whether a point is inside
 // each of the node's leaves. An op is CSG_LEAF | k << 4 (push leaf k's inside) or one of the

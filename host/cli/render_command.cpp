@@ -18,14 +18,14 @@ namespace {
 // which degree (the CPU reference then solves it by companion matrix; otherwise by interval
 // Newton), so that a user can tell which path a surface takes.
 void report_implicit_surfaces(const Scene& scene) {
-    for (const Object& o : scene.objects) {
+    for_each_object_and_leaf(scene.objects, [](const Object& o) {
         const auto* implicit = std::get_if<ImplicitObject>(&o.shape);
-        if (!implicit) continue;
+        if (!implicit) return;
         int degree = implicit->surface.degree();
         std::string what = degree > 0 ? fmt::format("a polynomial of degree {}", degree) : "not a polynomial";
         std::fprintf(stderr, "%s:%d:%d: note: implicit surface: %s\n", o.where.file.c_str(), o.where.line,
                      o.where.column, what.c_str());
-    }
+    });
 }
 
 struct RenderCommand {

@@ -270,13 +270,23 @@ struct ObjectReading {
         } else {
             if (csg.leaves.size() == CSG_MAX_LEAVES)
                 t.fail("type", fmt::format("a CSG object combines at most {} solids", CSG_MAX_LEAVES));
+            totals.before(t, type);
             Object leaf = read_object(t, type, materials, material, parent);
+            totals.after(t, leaf);
             const auto* cone = std::get_if<Cone>(&leaf.shape);
-            if (!shape_has(shape_type(leaf.shape), SHAPE_SOLID) || (cone && cone->open))
+            const std::uint32_t kind = shape_type(leaf.shape);
+            if (!(shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED)) || (cone && cone->open))
                 t.fail(cone ? "open" : "type",
-                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, plane as "
-                                   "the half-space behind its normal) and CSG objects and groups of them",
+                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, torus, "
+                                   "implicit surfaces closed in their box, plane as the half-space behind its normal) and "
+                                   "CSG objects and groups of them",
                                    cone ? "an open " : "a ", type));
+            if (const auto* implicit = std::get_if<ImplicitObject>(&leaf.shape))
+                if (auto point = surface::not_proved_positive_on_faces(implicit->surface))
+                    t.fail("type", fmt::format("this {} is not proved closed in its box: CSG takes f < 0 as its inside, "
+                                               "and f > 0 could not be proved on the box's faces near ({:.4g}, {:.4g}, {:.4g}) "
+                                               "(its coordinates); make the box larger than the solid",
+                                               type, point->x, point->y, point->z));
             csg.program.push_back(CSG_LEAF | std::uint32_t(csg.leaves.size()) << 4);
             csg.leaves.push_back(std::move(leaf));
         }

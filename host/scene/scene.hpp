@@ -314,7 +314,8 @@ struct Mesh {
 struct Object;
 
 // Constructive solid geometry: POV-Ray's intersection, difference and merge (docs/scene-format.md,
-// "CSG"). `leaves` are solids (shapes with SHAPE_SOLID: convex and closed, or half-spaces), each
+// "CSG"). `leaves` are solids (shapes with SHAPE_SOLID: convex and closed, or half-spaces; or
+// with SHAPE_CLOSED: a torus, an implicit surface proved closed in its box), each
 // an object with its own placement and material; `program` combines whether a point is inside
 // each (postfix: the CSG_* ops of shapes.h). The surface is where the combination's value changes
 // along a ray; each of its points is a leaf's, shaded with that leaf's material and texture.
@@ -357,6 +358,17 @@ struct Object {
     SourceLocation where;        // the [[object]] table, for messages
     std::string name;            // optional, for [animation] to refer to it
 };
+
+// Calls visit(object) for each object and, after a CSG object, for each of its leaves: the
+// order the GPU packs them in (the generated surface functions are numbered in it).
+template <class Visit>
+void for_each_object_and_leaf(const std::vector<Object>& objects, Visit&& visit) {
+    for (const Object& o : objects) {
+        visit(o);
+        if (const auto* csg = std::get_if<Csg>(&o.shape))
+            for (const Object& leaf : csg->leaves) visit(leaf);
+    }
+}
 
 struct Animation;  // scene/animation.hpp
 struct Scene;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -80,6 +81,37 @@ bool proved_without_zero(const ImplicitSurface& s, const dvec3& lo, const dvec3&
         boxes.push_back(high);
     }
     return true;
+}
+
+std::optional<dvec3> not_proved_positive_on_faces(const ImplicitSurface& s, int budget) {
+    struct Piece {
+        Interval axis[3];
+    };
+    const dvec3 size = s.box_hi - s.box_lo;
+    for (int face = 0; face < 6; ++face) {
+        const int fixed = face / 2;
+        const double at = face % 2 == 0 ? s.box_lo[fixed] : s.box_hi[fixed];
+        Piece whole{{{s.box_lo.x, s.box_hi.x}, {s.box_lo.y, s.box_hi.y}, {s.box_lo.z, s.box_hi.z}}};
+        whole.axis[fixed] = Interval(at);
+        std::vector<Piece> pieces{whole};
+        while (!pieces.empty()) {
+            Piece piece = pieces.back();
+            pieces.pop_back();
+            Interval f;
+            evaluate_program<Interval>(s.program, piece.axis, &f);
+            if (!f.is_empty() && f.lo > 0.0) continue;
+            const dvec3 middle(piece.axis[0].mid(), piece.axis[1].mid(), piece.axis[2].mid());
+            if (f.is_empty() || f.hi <= 0.0 || --budget <= 0) return middle;
+            int split = fixed == 0 ? 1 : 0;
+            for (int k = 0; k < 3; ++k)
+                if (k != fixed && piece.axis[k].width() / size[k] > piece.axis[split].width() / size[split]) split = k;
+            Piece low = piece, high = piece;
+            low.axis[split].hi = high.axis[split].lo = piece.axis[split].mid();
+            pieces.push_back(low);
+            pieces.push_back(high);
+        }
+    }
+    return std::nullopt;
 }
 
 void shrink_to_surface(const ImplicitSurface& s, dvec3& lo, dvec3& hi) {

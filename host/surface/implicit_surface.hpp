@@ -55,6 +55,11 @@ glm::dvec2 implicit_texture_uv(const ImplicitSurface& s, const dvec3& local);
 bool proved_without_zero(const ImplicitSurface& s, int budget = 4096);
 bool proved_without_zero(const ImplicitSurface& s, const dvec3& lo, const dvec3& hi, int budget);
 
+// Whether interval arithmetic proves, within `budget` pieces, that f > 0 all over the box's six
+// faces, so that the surface closes the region f < 0 in the box (CSG takes it as a solid's
+// inside): none where proved, else a point (the surface's coordinates) where it could not be.
+std::optional<dvec3> not_proved_positive_on_faces(const ImplicitSurface& s, int budget = 20000);
+
 // The box [lo, hi] shrunk, face by face, past slabs of it that interval arithmetic proves hold no
 // zero of f, to within 1/64 of its size (and a margin of that much again): the part of the
 // surface's box where the surface can be. A unit sphere given a box of 10^6 gets one of about its

@@ -1,18 +1,54 @@
 // CSG: POV-Ray's intersection, difference and merge (scene/scene.hpp's Csg). Twin of
 // host/cpu/shapes/csg.cpp, written apart. p0, p1 = the combination's box (xyz), data = its
-// CsgNode. Its leaves (SHAPE_SOLID: convex solids and half-spaces) are each inside along the ray
-// on one interval: from their first hit from -infinity to the reversed ray's (a half-space's
-// reaches to infinity). The combination's surface is the first end of an interval, beyond t_min, where the
-// program's value changes: comparing ends, not counting crossings, stays exact where a ray
-// grazes a leaf (an interval of no length changes nothing). A hit is the leaf's: uv = (the
-// leaf's primitive, 0 at its interval's entry or 1 at its exit), which closest_hit resolves
-// (csg_leaf_hit) so that the leaf's normal, material and texture shade it.
+// CsgNode. Its convex leaves (SHAPE_SOLID: convex solids and half-spaces) are each inside along
+// the ray on one interval: from their first hit from -infinity to the reversed ray's (a
+// half-space's reaches to infinity). Its closed leaves that are not convex (SHAPE_CLOSED: tori,
+// implicit surfaces) are walked root by root from the line's start, each stretch between roots
+// told by f's sign at its middle (leaf_inside), adjacent stretches inside joined: each holds
+// one interval at a time, the next found once the ray passes its end. The combination's surface
+// is the first end of an interval, beyond t_min, where the program's value changes: comparing
+// ends, not counting crossings, stays exact where a ray grazes a leaf (an interval of no length
+// changes nothing). A hit is the leaf's: uv = (the leaf's primitive, 0 at a convex leaf's
+// entry, 1 at its exit, 2 at a walked leaf's root), which closest_hit resolves (csg_leaf_hit) so
+// that the leaf's normal, material and texture shade it.
 #ifndef LANCER_CSG_GLSL
 #define LANCER_CSG_GLSL
 
-// The leaf's inside along the ray: (in, out), empty where in >= out.
+const uint CSG_MAX_ENDS = 256u;  // interval ends examined per ray: beyond, a miss
+const int CSG_WALK_ROOTS = 32;   // roots one walk examines
+
+bool csg_walked(Primitive leaf) { return (shape_traits(leaf.type) & SHAPE_CLOSED) != 0u; }
+
+// Past a root at a, a walked leaf's next search starts this far on: its searches are
+// not deterministic in t_min (the torus re-bases its segment there), so from a itself one could
+// find a again. 4e-6 of the node's box: beyond the searches' resolution (the torus's 6e-8 of its
+// ball, the implicit surfaces' 1e-6 of their boxes), and beyond float's at a.
+float csg_walk_gap(Primitive node, float a) { return max(4e-6 * length(node.p1.xyz - node.p0.xyz), 5e-7 * abs(a)); }
+
+// A walked leaf's first interval inside that ends after `after`, walking from `from` (a root of
+// it, or -INFINITY: the line's start); empty where none.
+vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, float from, float after) {
+    vec2 span = vec2(INFINITY, -INFINITY);
+    float a = from;
+    for (int i = 0; i < CSG_WALK_ROOTS; ++i) {
+        float b, error;
+        vec2 uv;
+        bool more = leaf_hit(leaf, ray, a == -INFINITY ? -INFINITY : a + csg_walk_gap(node, a), INFINITY, b, uv, error);
+        if (more && a != -INFINITY && leaf_inside(leaf, ray, 0.5 * (a + b))) {
+            span = span.x < span.y ? vec2(span.x, b) : vec2(a, b);  // adjacent stretches inside join
+        } else if (span.x < span.y) {
+            if (span.y > after) return span;
+            span = vec2(INFINITY, -INFINITY);
+        }
+        if (!more) break;
+        a = b;
+    }
+    return span;
+}
+
+// A convex leaf's inside along the ray: (in, out), empty where in >= out.
 vec2 csg_inside(Primitive leaf, Ray ray) {
-    float t_in, t_out;
+    float t_in, t_out, error;
     vec2 uv;
     if (leaf.type == SHAPE_PLANE) {
         // The half-space behind the normal, in the plane's own coordinates (t is the same there).
@@ -24,10 +60,12 @@ vec2 csg_inside(Primitive leaf, Ray ray) {
         return along > 0.0 ? vec2(-INFINITY, t) : vec2(t, INFINITY);
     }
     // The exit is the reversed ray's entry: no second search from the entry, whose rounding
-    // could find the entry again or step past a close exit.
-    if (!leaf_hit(leaf, ray, -INFINITY, INFINITY, t_in, uv)) return vec2(INFINITY, -INFINITY);
-    if (!leaf_hit(leaf, Ray(ray.origin, -ray.dir), -INFINITY, INFINITY, t_out, uv)) return vec2(INFINITY, -INFINITY);
-    return vec2(t_in, -t_out);  // in >= out: a touching ray, no length
+    // could find the entry again or step past a close exit. (One call: lavapipe inlines each.)
+    vec2 ends;
+    for (int side = 0; side < 2; ++side)
+        if (!leaf_hit(leaf, Ray(ray.origin, side == 0 ? ray.dir : -ray.dir), -INFINITY, INFINITY, ends[side], uv, error))
+            return vec2(INFINITY, -INFINITY);
+    return vec2(ends.x, -ends.y);  // in >= out: a touching ray, no length
 }
 
 // The program's value with every leaf's inside as just before t (after = false) or after it.
@@ -54,9 +92,19 @@ bool csg_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_h
     if (box_entry(p.p0.xyz, p.p1.xyz, ray.origin, safe_inverse(ray.dir), t_max) == INFINITY) return false;
     CsgNode node = csg_node_at(p.data);
     vec2 inside[CSG_MAX_LEAVES];
-    for (uint k = 0u; k < node.leaf_count; ++k) inside[k] = csg_inside(primitive_at(node.first_leaf + k), ray);
+    uint walk = 0u;  // the walked leaves whose next interval is to be found, from inside[k].y on
+    for (uint k = 0u; k < node.leaf_count; ++k) {
+        Primitive leaf = primitive_at(node.first_leaf + k);
+        bool walked = csg_walked(leaf);
+        inside[k] = walked ? vec2(INFINITY, -INFINITY) : csg_inside(leaf, ray);
+        if (walked) walk |= 1u << k;
+    }
     float t = t_min;
-    for (uint step = 0u; step < 2u * CSG_MAX_LEAVES; ++step) {
+    for (uint step = 0u; step < CSG_MAX_ENDS; ++step) {
+        for (; walk != 0u; walk &= walk - 1u) {  // one call: lavapipe inlines each
+            uint k = uint(findLSB(walk));
+            inside[k] = csg_walk(p, primitive_at(node.first_leaf + k), ray, inside[k].y, t);
+        }
         float next = t_max, end = 0.0;
         uint leaf = NO_PRIMITIVE;
         for (uint k = 0u; k < node.leaf_count; ++k) {
@@ -66,23 +114,32 @@ bool csg_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_h
             if (span.y > t && span.y < next) { next = span.y; leaf = k; end = 1.0; }
         }
         if (leaf == NO_PRIMITIVE) return false;
+        Primitive hit_leaf = primitive_at(node.first_leaf + leaf);
+        bool walked = csg_walked(hit_leaf);
         if (csg_value(node, inside, next, false) != csg_value(node, inside, next, true)) {
             t_hit = next;
-            uv = vec2(float(node.first_leaf + leaf), end);
+            uv = vec2(float(node.first_leaf + leaf), walked ? 2.0 : end);
             return true;
         }
+        if (walked && end == 1.0) walk = 1u << leaf;  // past its interval: the next, from its end
         t = next;
     }
     return false;
 }
 
-// The leaf's own hit at a CSG hit (uv as csg_intersect left it): its primitive, and its (u, v).
-uint csg_leaf_hit(Ray ray, vec2 csg_uv, out vec2 uv) {
+// The leaf's own hit at a CSG hit at t (uv as csg_intersect left it): its primitive, its (u, v),
+// and for a walked leaf, the error of its root found again there.
+uint csg_leaf_hit(Primitive node, Ray ray, float t, vec2 csg_uv, out vec2 uv, inout float error) {
     uint leaf = uint(csg_uv.x);
     Primitive p = primitive_at(leaf);
-    float t;
     uv = vec2(0.0);
-    if (p.type != SHAPE_PLANE) leaf_hit(p, csg_uv.y != 0.0 ? Ray(ray.origin, -ray.dir) : ray, -INFINITY, INFINITY, t, uv);
+    bool walked = csg_uv.y == 2.0;
+    if (walked || p.type != SHAPE_PLANE) {
+        float t_leaf, leaf_error;
+        float from = walked ? t - csg_walk_gap(node, t) : -INFINITY;
+        bool found = leaf_hit(p, csg_uv.y == 1.0 ? Ray(ray.origin, -ray.dir) : ray, from, INFINITY, t_leaf, uv, leaf_error);
+        if (found && walked) error = max(error, leaf_error + abs(t_leaf - t));
+    }
     return leaf;
 }
 

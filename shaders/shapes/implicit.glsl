@@ -173,6 +173,15 @@ bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out f
     return false;
 }
 
+// Whether a world point is inside: f < 0 (CSG's walked leaves, csg.glsl; the reader proved f > 0
+// on the box's faces, so the surface closes that region).
+bool implicit_inside(Primitive prim, vec3 p) {
+    vec3 o, d;
+    implicit_local_ray(implicit_at(prim.data), Ray(p, vec3(0.0)), o, d);
+    float unused;
+    return implicit_eval(prim.data, o, d, unused) < 0.0;
+}
+
 // The half-width of the band around the surface at world point p in which f's enclosures cannot
 // tell on which side of it a point is, in world units: f's enclosure over the cube of the
 // intersector's resolution around p (sides of IMPLICIT_EPS of the box's diagonal: a piece of a
@@ -267,4 +276,5 @@ bool implicit_intersect(Primitive prim, Ray ray, float t_min, float t_max, out f
 }
 vec3 implicit_hit_normal(Primitive prim, Ray ray, float t, vec3 p, vec2 uv, inout float error) { return vec3(0.0, 0.0, 1.0); }
 vec2 implicit_texture_uv(Primitive prim, Hit hit, vec3 p) { return hit.uv; }
+bool implicit_inside(Primitive prim, vec3 p) { return false; }
 #endif

@@ -166,6 +166,12 @@ vec3 torus_local(Primitive p, vec3 point) {
     return vec3(dot(e, u), dot(e, ax), dot(e, cross(u, ax)));
 }
 
+// Whether a point is inside the tube (f < 0: CSG's walked leaves, csg.glsl).
+bool torus_inside(Primitive p, vec3 point) {
+    float S = p.p0.w + p.p1.w;
+    return torus_f(torus_local(p, point), p.p0.w / S, p.p1.w / S) < 0.0;
+}
+
 // The gradient of f = h- h+ (normalised): h+ grad h- + h- grad h+, each factor and gradient
 // accurate near its own zero, all of the unit ball's scale (no overflow, nothing to rescale).
 vec3 torus_hit_normal(Primitive p, Ray ray, float t, vec3 point, vec2 uv, inout float error) {

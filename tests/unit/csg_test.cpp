@@ -25,6 +25,14 @@ bool leaf_contains(const Object& leaf, dvec3 p) {
         const double radius = c->base_radius + z * (c->cap_radius - c->base_radius);
         return z > 0.0 && z < 1.0 && glm::length(p - c->base - z * axis) < radius;
     }
+    if (const auto* o = std::get_if<Torus>(&leaf.shape)) {  // (|q|^2 + R^2 - r^2)^2 < 4 R^2 rho^2
+        const dvec3 q = p - o->center;
+        const double y = glm::dot(q, o->axis), rho2 = glm::dot(q, q) - y * y;
+        const double R = o->major_radius, r = o->minor_radius, s = glm::dot(q, q) + R * R - r * r;
+        return s * s < 4.0 * R * R * rho2;
+    }
+    if (const auto* i = std::get_if<ImplicitObject>(&leaf.shape))
+        return surface::evaluate_implicit(i->surface, dvec3(i->surface.to_local * glm::dvec4(p, 1.0))).f < 0.0;
     ADD_FAILURE() << "no point test for this solid";
     return false;
 }
@@ -115,6 +123,28 @@ TEST(Csg, HalfSpacesStretchedSolidsMergesAndInverses) {
     )");
 }
 
+// Tori and implicit surfaces are not convex: several intervals inside along one ray.
+TEST(Csg, ToriAndImplicitSurfacesAreWalkedRootByRoot) {
+    expect_membership_agrees(R"(
+        [[object]]
+        type = "difference"
+        transform = { rotate = [20, 10, 0] }
+        objects = [
+          { type = "torus", major_radius = 0.9, minor_radius = 0.35, transform = { scale = [1, 1.5, 1] } },
+          { type = "box", min = [0, -2, -2], max = [2, 2, 0] },
+          { type = "implicit", function = "x^4 - 5*x^2 + y^4 - 5*y^2 + z^4 - 5*z^2 + 11.8", box = { min = [-2.9, -2.9, -2.9], max = [2.9, 2.9, 2.9] }, transform = { scale = 0.5 } },
+        ]
+    )");
+    expect_membership_agrees(R"(
+        [[object]]
+        type = "intersection"
+        objects = [
+          { type = "superellipsoid", e = 0.3, n = 0.6, transform = { scale = 1.2 } },
+          { type = "torus", major_radius = 0.8, minor_radius = 0.5, axis = [1, 1, 0], inverse = true },
+        ]
+    )");
+}
+
 TEST(Csg, AHitIsTheLeafsWithItsMaterial) {
     const Scene scene = test::scene_from_text(std::string(kStage) + R"(
         [[object]]
@@ -160,6 +190,13 @@ TEST(Csg, WhatCannotBeASolidIsRefusedWithWhy) {
     expect_refused("[[object]]\ntype = \"difference\"\nobjects = []\n", 3, "needs `objects`");
     expect_refused("[[object]]\ntype = \"difference\"\nobjects = [" + sphere.substr(0, sphere.size() - 2) + ", name = \"x\" }]\n",
                    3, "cannot have its own name");
+    // f < 0 reaches the box's faces: the box would be part of the solid's boundary.
+    expect_refused("[[object]]\ntype = \"intersection\"\nobjects = [" + sphere +
+                       R"(, { type = "implicit", function = "x^2 + y^2 + z^2 - 1.44", box = { min = [-1, -1, -1], max = [1, 1, 1] } }])" + "\n",
+                   3, "is not proved closed in its box");
+    expect_refused("[[object]]\ntype = \"merge\"\nobjects = [" + sphere +
+                       R"(, { type = "parametric", x = "u", y = "v", z = "0", u = [0, 1], v = [0, 1] }])" + "\n",
+                   3, "a parametric has no inside");
     std::string many = "[[object]]\ntype = \"merge\"\nobjects = [";
     for (int i = 0; i < 33; ++i) many += (i ? ", " : "") + sphere;
     expect_refused(many + "]\n", 3, "at most 32 solids");

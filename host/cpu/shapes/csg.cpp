@@ -1,11 +1,15 @@
-// CSG for the CPU reference (twin of shaders/shapes/csg.glsl, written apart): each leaf is a
-// convex solid or a half-space, inside along the ray on one interval (from its first hit from
-// -infinity to the first of the reversed ray); the combination's surface is the first end of an interval, beyond
-// t_min, where the program's value changes. Comparing ends, not counting crossings, stays exact
-// where a ray grazes a leaf (an interval of no length changes nothing).
+// CSG for the CPU reference (twin of shaders/shapes/csg.glsl, written apart): a leaf that is a
+// convex solid or a half-space is inside along the ray on one interval (from its first hit from
+// -infinity to the first of the reversed ray); a closed leaf that is not convex (a torus, an
+// implicit surface) on the stretches between its roots along the whole line where f < 0 at
+// their middle. The combination's surface is the first end of an interval, beyond t_min, where
+// the program's value changes. Comparing ends, not counting crossings, stays exact where a ray
+// grazes a leaf (an interval of no length changes nothing).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -45,6 +49,42 @@ Interval inside_along(const Object& leaf, const Ray& ray) {
     return in && out ? Interval{in->t, -out->t} : Interval{};  // in >= out: a touching ray, no length
 }
 
+// A closed leaf that is not convex: its intervals inside along the line, in order, each the
+// stretches between consecutive roots whose middle is inside, adjacent ones joined (a ray
+// touching the surface from inside). Before the first root and after the last it is outside.
+std::vector<Interval> walked_inside(const Object& leaf, const Ray& ray) {
+    Ray r = ray;
+    double k = 1.0;  // t in the shape's coordinates over the world's
+    if (leaf.placement && leaf.placement->shape_in_object_space) {
+        const dvec3 d = leaf.placement->object_direction(ray.dir);
+        k = glm::length(d);
+        r = Ray{leaf.placement->object_point(ray.origin), d / k};
+    }
+    auto walk = [&](const auto& shape) {
+        const std::vector<double> roots = roots_on_line(shape, r);
+        std::vector<Interval> spans;
+        for (std::size_t i = 0; i + 1 < roots.size(); ++i) {
+            const double a = roots[i], b = roots[i + 1];
+            if (!inside(shape, r.origin + (0.5 * (a + b)) * r.dir)) continue;
+            if (!spans.empty() && spans.back().out == a / k) spans.back().out = b / k;
+            else spans.push_back(Interval{a / k, b / k});
+        }
+        return spans;
+    };
+    if (const auto* torus = std::get_if<Torus>(&leaf.shape)) return walk(*torus);
+    return walk(std::get<ImplicitObject>(leaf.shape));
+}
+
+bool walked(const Object& leaf) { return shape_has(shape_type(leaf.shape), SHAPE_CLOSED); }
+
+// walked_inside (and the GPU's leaf_inside, shaders/scene.glsl) know these two closed shapes.
+constexpr bool closed_shapes_are_torus_and_implicit() {
+    for (std::uint32_t t = 0; t < SHAPE_COUNT; ++t)
+        if (shape_has(t, SHAPE_CLOSED) != (t == SHAPE_TORUS || t == SHAPE_IMPLICIT)) return false;
+    return true;
+}
+static_assert(closed_shapes_are_torus_and_implicit());
+
 bool value(const Csg& c, const std::array<Interval, CSG_MAX_LEAVES>& inside, double t, bool after) {
     std::uint64_t stack = 0;
     for (std::uint32_t op : c.program) {
@@ -67,8 +107,18 @@ bool value(const Csg& c, const std::array<Interval, CSG_MAX_LEAVES>& inside, dou
 
 std::optional<SurfaceHit> intersect(const Csg& c, const Ray& ray, double t_min, double t_max) {
     const std::size_t n = c.leaves.size();
-    std::array<Interval, CSG_MAX_LEAVES> inside{};
-    for (std::size_t k = 0; k < n; ++k) inside[k] = inside_along(c.leaves[k], ray);
+    std::array<Interval, CSG_MAX_LEAVES> inside{};       // each leaf's interval now
+    std::array<std::vector<Interval>, CSG_MAX_LEAVES> later;  // a walked leaf's after it, last first
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!walked(c.leaves[k])) {
+            inside[k] = inside_along(c.leaves[k], ray);
+            continue;
+        }
+        later[k] = walked_inside(c.leaves[k], ray);
+        std::reverse(later[k].begin(), later[k].end());
+        while (!later[k].empty() && later[k].back().out <= t_min) later[k].pop_back();
+        if (!later[k].empty()) inside[k] = later[k].back(), later[k].pop_back();
+    }
     // The ends in (t_min, t_max), nearest first: where the value just before differs from just after.
     double t = t_min;
     for (;;) {
@@ -82,15 +132,25 @@ std::optional<SurfaceHit> intersect(const Csg& c, const Ray& ray, double t_min, 
             if (i.out > t && i.out < next) next = i.out, leaf = k, entering = false;
         }
         if (leaf == n) return std::nullopt;
+        const Object& hit_leaf = c.leaves[leaf];
         if (value(c, inside, next, false) != value(c, inside, next, true)) {
-            // The leaf's own hit there, for its normal and (u, v): its entry, or its exit.
-            const Object& hit_leaf = c.leaves[leaf];
-            const bool exit = !entering && !std::holds_alternative<Plane>(hit_leaf.shape);
-            std::optional<SurfaceHit> h = intersect(hit_leaf, exit ? reversed(ray) : ray, -kInf, kInf);
+            // The leaf's own hit there, for its normal and (u, v): a convex solid's entry or its
+            // exit (the reversed ray's entry); a walked leaf's root there.
+            std::optional<SurfaceHit> h;
+            if (walked(hit_leaf)) {
+                h = intersect(hit_leaf, ray, next - 1e-9 * (1.0 + std::abs(next)), kInf);
+            } else {
+                const bool exit = !entering && !std::holds_alternative<Plane>(hit_leaf.shape);
+                h = intersect(hit_leaf, exit ? reversed(ray) : ray, -kInf, kInf);
+            }
             if (!h) return std::nullopt;  // cannot happen: the interval came from these calls
             h->t = next;
             h->part = static_cast<int>(leaf);
             return h;
+        }
+        if (!entering && walked(hit_leaf)) {  // past a walked leaf's interval: its next one
+            inside[leaf] = later[leaf].empty() ? Interval{} : later[leaf].back();
+            if (!later[leaf].empty()) later[leaf].pop_back();
         }
         t = next;
     }

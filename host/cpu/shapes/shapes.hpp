@@ -55,6 +55,14 @@ struct ImplicitRoot {
 std::vector<ImplicitRoot> implicit_roots(const surface::ImplicitSurface& s, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const ImplicitObject& o, const Ray& ray, double t_min, double t_max);
 
+// The closed shapes that are not convex (SHAPE_CLOSED: CSG walks their inside along a line):
+// every root along the whole line, nearest first, and whether a point is inside (f < 0; an
+// implicit surface's reader proved f > 0 on its box's faces before it let it into CSG).
+std::vector<double> roots_on_line(const Torus& o, const Ray& ray);
+bool inside(const Torus& o, const dvec3& p);
+std::vector<double> roots_on_line(const ImplicitObject& o, const Ray& ray);
+bool inside(const ImplicitObject& o, const dvec3& p);
+
 // CSG (csg.cpp): the nearest point of the combination's surface, a leaf's hit (part: which leaf;
 // the normal and (u, v) the leaf's there).
 std::optional<SurfaceHit> intersect(const Csg& c, const Ray& ray, double t_min, double t_max);

@@ -22,7 +22,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -56,38 +59,40 @@ public:
     Isolator(const TorusFrame& fr, const dvec3& base, double half, double sigma_mid, double t_min, double t_max)
         : fr_(fr), base_(base), half_(half), sigma_mid_(sigma_mid), t_min_(t_min), t_max_(t_max) {}
 
-    // The nearest root in (lo, hi) whose t is in (t_min, t_max).
-    std::optional<double> nearest(const Bernstein& c, double lo, double hi, double error) const {
+    // The roots in (lo, hi) whose t is in (t_min, t_max), nearest first, into `roots`: all of
+    // them, or only the nearest (true once it is found).
+    bool find(const Bernstein& c, double lo, double hi, double error, bool nearest_only, std::vector<double>& roots) const {
         double min = c[0], max = c[0];
         for (double x : c) {
             min = std::min(min, x);
             max = std::max(max, x);
         }
-        if (min > error || max < -error) return std::nullopt;  // proved: no root here
+        if (min > error || max < -error) return false;  // proved: no root here
         bool certain = true;
         int variations = 0;
         for (std::size_t i = 0; i < c.size(); ++i) {
             certain = certain && std::abs(c[i]) > error;
             if (i > 0 && (c[i] > 0.0) != (c[i - 1] > 0.0)) ++variations;
         }
-        if (certain && variations == 1) return accept(bisect(lo, hi, c[0] > 0.0));
-        if (hi - lo <= kTouchingWidth) return accept(0.5 * (lo + hi));  // within rounding of a touching point
+        if (certain && variations == 1) return accept(bisect(lo, hi, c[0] > 0.0), nearest_only, roots);
+        if (hi - lo <= kTouchingWidth) return accept(0.5 * (lo + hi), nearest_only, roots);  // within rounding of a touching point
         Bernstein left, right;
         split(c, left, right);
         const double mid = 0.5 * (lo + hi);
         // Each de Casteljau level averages: one more rounding of the largest coefficient.
         const double next = error + 2.0 * kEpsilon * std::max(std::abs(min), std::abs(max));
-        if (auto r = nearest(left, lo, mid, next)) return r;
-        return nearest(right, mid, hi, next);
+        if (find(left, lo, mid, next, nearest_only, roots)) return true;
+        return find(right, mid, hi, next, nearest_only, roots);
     }
 
     double sigma(double tau) const { return sigma_mid_ + half_ * tau; }
 
 private:
-    std::optional<double> accept(double tau) const {
+    bool accept(double tau, bool nearest_only, std::vector<double>& roots) const {
         const double t = sigma(tau) * fr_.to_t;
-        if (t > t_min_ && t < t_max_) return tau;
-        return std::nullopt;
+        if (!(t > t_min_ && t < t_max_)) return false;
+        roots.push_back(tau);
+        return nearest_only;
     }
 
     // The one root in (lo, hi) where g(lo) has sign `lo_positive`: bisection on f's factored form
@@ -132,9 +137,8 @@ dvec3 gradient(double a, double b, const dvec3& p) {
     return plus * gm + minus * gp;
 }
 
-}  // namespace
-
-std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min, double t_max) {
+// The torus's scaled frame (a + b = 1) for a ray, or none for a degenerate ray or torus.
+std::optional<TorusFrame> frame_of(const Torus& o, const Ray& ray) {
     const double S = o.major_radius + o.minor_radius;
     const double length = glm::length(ray.dir);
     if (!(length > 0.0) || !(S > 0.0)) return std::nullopt;
@@ -146,6 +150,15 @@ std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min
     fr.a = o.major_radius / S;
     fr.b = o.minor_radius / S;
     fr.to_t = S / length;
+    return fr;
+}
+
+// The roots along the ray with t in (t_min, t_max), nearest first (only the nearest, or all):
+// t and the gradient of f there (in the scaled frame).
+std::vector<std::pair<double, dvec3>> torus_roots(const Torus& o, const Ray& ray, double t_min, double t_max, bool nearest_only) {
+    const std::optional<TorusFrame> frame = frame_of(o, ray);
+    if (!frame) return {};
+    const TorusFrame& fr = *frame;
 
     // The segment: the unit ball and the slab |y| <= b, within (t_min, t_max), relative to the
     // ray's point nearest the centre.
@@ -155,7 +168,7 @@ std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min
     // c is the nearest point to the rounding of fr.o + tc fr.d, which is of |fr.o|: its c.d kept.
     const double beta0 = glm::dot(c, fr.d);
     const double reach2 = beta0 * beta0 + ball * ball - glm::dot(c, c);
-    if (!(reach2 >= 0.0)) return std::nullopt;
+    if (!(reach2 >= 0.0)) return {};
     double lo = -std::sqrt(reach2) - beta0, hi = std::sqrt(reach2) - beta0;
     const double slab = fr.b + kMargin;
     if (fr.d.y != 0.0) {
@@ -164,11 +177,11 @@ std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min
         lo = std::max(lo, y0);
         hi = std::min(hi, y1);
     } else if (std::abs(c.y) > slab) {
-        return std::nullopt;
+        return {};
     }
     lo = std::max(lo, t_min / fr.to_t - tc);
     hi = std::min(hi, t_max / fr.to_t - tc);
-    if (!(lo < hi)) return std::nullopt;
+    if (!(lo < hi)) return {};
 
     // g(tau) = f(P + half tau D), P the segment's middle.
     const double mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
@@ -221,14 +234,39 @@ std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min
 
     // tau from -1 to 1 is sigma from mid - half to mid + half about tc.
     Isolator isolator(fr, P, half, tc + mid, t_min, t_max);
-    const std::optional<double> tau = isolator.nearest(bern, -1.0, 1.0, error);
-    if (!tau) return std::nullopt;
-    const dvec3 hit = P + (half * *tau) * D;
-    const dvec3 g = gradient(fr.a, fr.b, hit);
-    dvec3 normal = g.x * u + g.y * ax + g.z * v;
-    const double gl = glm::length(normal);
-    normal = gl > 0.0 ? normal / gl : ax;  // a cusp of a spindle: no tangent plane
-    return SurfaceHit{isolator.sigma(*tau) * fr.to_t, normal};
+    std::vector<double> taus;
+    isolator.find(bern, -1.0, 1.0, error, nearest_only, taus);
+    std::vector<std::pair<double, dvec3>> roots;
+    for (double tau : taus) roots.emplace_back(isolator.sigma(tau) * fr.to_t, gradient(fr.a, fr.b, P + (half * tau) * D));
+    return roots;
+}
+
+// The scaled frame's gradient as a world unit normal (a cusp of a spindle has no tangent plane: the axis).
+dvec3 world_normal(const Torus& o, const dvec3& g) {
+    const dvec3 normal = g.x * o.u_axis + g.y * o.axis + g.z * glm::cross(o.u_axis, o.axis);
+    const double length = glm::length(normal);
+    return length > 0.0 ? normal / length : o.axis;
+}
+
+}  // namespace
+
+std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min, double t_max) {
+    const auto roots = torus_roots(o, ray, t_min, t_max, true);
+    if (roots.empty()) return std::nullopt;
+    return SurfaceHit{roots.front().first, world_normal(o, roots.front().second)};
+}
+
+std::vector<double> roots_on_line(const Torus& o, const Ray& ray) {
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    std::vector<double> roots;
+    for (const auto& root : torus_roots(o, ray, -kInfinity, kInfinity, false)) roots.push_back(root.first);
+    return roots;
+}
+
+// f < 0, from its factored form (the factors are accurate near their zeros).
+bool inside(const Torus& o, const dvec3& p) {
+    const auto fr = frame_of(o, Ray{p, o.axis});
+    return fr && f_factored(*fr, fr->o) < 0.0;
 }
 
 // u the angle about the axis from u_axis toward v_axis, v the angle around the tube from its

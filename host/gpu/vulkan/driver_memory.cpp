@@ -44,7 +44,7 @@ RenderMemoryEstimate render_memory_estimate(const Scene& scene, std::uint64_t sc
     const std::uint64_t image = std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height) * 16;
     std::uint64_t operations = 0, implicit_operations = 0;
     bool expressions = false;
-    for (const Object& o : scene.objects) {
+    for_each_object_and_leaf(scene.objects, [&](const Object& o) {
         if (const auto* p = std::get_if<ParametricObject>(&o.shape)) {
             expressions = true;
             const surface::Expr* xyz[] = {&p->surface.x, &p->surface.y, &p->surface.z};
@@ -58,7 +58,7 @@ RenderMemoryEstimate render_memory_estimate(const Scene& scene, std::uint64_t sc
             operations += 3 * n;
             implicit_operations += n;
         }
-    }
+    });
     // The driver's compile of many implicit surfaces grows with the square of their operations
     // (docs/robustness.md, "Implicit surfaces' compile": 32 surfaces of 16 operations each peak
     // at 2.45 GiB of address space on Mesa 25 and 2.84 GiB on Mesa 22.3, 0.6 GiB over the linear
