@@ -44,7 +44,7 @@ TRANSLATED = {
     "ambient": {"color"},
     "light": {"position", "color", "name"},
     "material": {"color", "checker", "ambient", "diffuse", "specular", "shininess", "reflection"},
-    "checker": {"colors", "size"},
+    "checker": {"colors", "size", "transform"},
     "sphere": {"center", "radius"},
     "plane": {"point", "normal"},
     "rectangle": {"corner", "edge_u", "edge_v"},
@@ -102,7 +102,7 @@ def pigment(m):
     if "checker" in m:
         c = m["checker"]
         return (f"pigment {{ checker {rgb(c['colors'][0])}, {rgb(c['colors'][1])} "
-                f"scale {c.get('size', 1.0):.9g} }}")
+                f"scale {c.get('size', 1.0):.9g} {transform(c.get('transform'))} }}")
     return f"pigment {{ {rgb(m.get('color', [1, 1, 1]))} }}"
 
 

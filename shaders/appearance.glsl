@@ -22,8 +22,12 @@ Appearance appearance_at(Material m, Hit hit, vec3 p, vec3 n) {
         q = object_point(frame, p);
         world = frame.world != 0u;
     }
-    // A checker without a transform keeps float's precision far from the origin through its phase.
-    Appearance a = Appearance(world ? material_pigment(m, p, m.checker_phase.xyz) : material_pigment(m, q, vec3(0.0)), n);
+    // A checker without a transform keeps float's precision far from the origin through its
+    // phase; one with a transform of its own is evaluated in its frame, as a pattern is.
+    vec3 pigment;
+    if (SCENE_HAS_PATTERNS && m.checker_frame != NO_MAP) pigment = material_pigment(m, pattern_space(pattern_at(m.checker_frame), q), vec3(0.0));
+    else pigment = world ? material_pigment(m, p, m.checker_phase.xyz) : material_pigment(m, q, vec3(0.0));
+    Appearance a = Appearance(pigment, n);
     // A smooth mesh shades with its interpolated vertex normals; a bump tilts that. (A mesh is
     // always placed: PLACED_OBJECTS holds where there is one.)
     if (SCENE_HAS_MESH && PLACED_OBJECTS) {

@@ -238,6 +238,8 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     VEC4(transmission) /* rgb = T, the fraction passed per channel (all 0: opaque); w = ior */      \
     VEC4(absorption)   /* rgb = Beer-Lambert coefficient per unit distance inside; w unused */      \
     VEC4(checker_phase) /* xyz = where the GPU's origin is in the solid checker (gpu/packing/float_anchor.hpp) */ \
+    SCALARS(uint, checker_frame, /* into patterns (its rows only): a checker's own transform, or NO_MAP */ \
+            uint, reserved0, uint, reserved1, uint, reserved2)                                      \
     SCALARS(uint, highlight, /* HIGHLIGHT_PHONG or HIGHLIGHT_BLINN */                               \
             float, ms_tint_r, float, ms_tint_g, float, ms_tint_b) /* microfacet metals: the multiple-scattering colour */
 

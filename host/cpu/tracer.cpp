@@ -35,8 +35,9 @@ dvec3 sky_color(const Sky& sky, const dvec3& d) { return ramp_color(sky.colors, 
 
 }  // namespace
 
-dvec3 pigment_at(const Material& m, const dvec3& p) {
+dvec3 pigment_at(const Material& m, const dvec3& object_point) {
     if (!m.checker) return m.color;
+    const dvec3 p = m.checker->to_checker ? dvec3(*m.checker->to_checker * glm::dvec4(object_point, 1.0)) : object_point;
     // First colour where floor(x)+floor(y)+floor(z) is even; the bias keeps a floor lying on an
     // integer plane on one side of it despite rounding.
     // The parity by fmod, not by converting to an integer: a checker much finer than the scene

@@ -21,6 +21,7 @@
 #include "scene/parse_optics.hpp"
 #include "scene/parse_shapes.hpp"
 #include "scene/string_position.hpp"
+#include "scene/transform.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace lancer {
@@ -108,6 +109,7 @@ Material read_material(TableReader& t, const std::string& name, TextureLibrary& 
         check_color(c, "colors", k.color_b);
         k.size = c.number("size", k.size);
         if (!(k.size > 0.0)) c.fail("size", "checker size must be positive");
+        if (c.has("transform")) k.to_checker = glm::inverse(read_transform(c));
         c.finish();
         m.checker = k;
     }

@@ -141,6 +141,9 @@ struct Checker {
     dvec3 color_a{1.0};  // where floor(x/s)+floor(y/s)+floor(z/s) is even
     dvec3 color_b{0.0};
     double size = 1.0;
+    // Its own `transform` (POV-Ray's pigment { checker ... scale, rotate }), inverted: from the
+    // object's coordinates into the checker's. None: the object's coordinates are the checker's.
+    std::optional<glm::dmat4> to_checker;
 };
 
 enum class Highlight {

@@ -159,5 +159,48 @@ TEST(Transforms, ACheckerTravelsWithItsObjectThroughAnAnimation) {
                      to_srgb8(test::render_on(backend, first)));
 }
 
+// A checker's own transform comes before its object's: doubled and turned a quarter about z
+// (which maps the lattice onto itself with the parities swapped), it is the checker of twice
+// the size with its colours swapped, on a ball turned by its own transform.
+TEST(Transforms, ACheckersOwnTransformComesBeforeItsObjects) {
+    const std::string stage = R"(
+        [render]
+        width = 64
+        height = 48
+        samples = 1
+        [camera]
+        eye = [0, 0, -4]
+        look_at = [0, 0, 0]
+        fov = 40
+        [[light]]
+        position = [0, 0, -10]
+        [[object]]
+        type = "sphere"
+        center = [0, 0, 0]
+        radius = 1
+        material = "squares"
+        transform = { rotate = [10, 20, 0], translate = [0.1, 0, 0] }
+    )";
+    const Scene own = test::scene_from_text(stage + R"(
+        [material.squares]
+        checker = { colors = [[0.2, 0.3, 0.9], [0.9, 0.8, 0.2]], size = 0.25, transform = [{ scale = 2 }, { rotate = [0, 0, 90] }] }
+    )");
+    const Scene plain = test::scene_from_text(stage + R"(
+        [material.squares]
+        checker = { colors = [[0.9, 0.8, 0.2], [0.2, 0.3, 0.9]], size = 0.5 }
+    )");
+    for (test::Backend backend : {test::Backend::Cpu, test::Backend::Gpu})
+        expect_close(fmt::format("checker-transform-{}", test::backend_name(backend)), to_srgb8(test::render_on(backend, own)),
+                     to_srgb8(test::render_on(backend, plain)));
+    // A checker's transform alone (not a lattice map) on both backends.
+    const Scene turned = test::scene_from_text(stage + R"(
+        [material.squares]
+        checker = { colors = [[0.2, 0.3, 0.9], [0.9, 0.8, 0.2]], size = 0.25, transform = { rotate = [0, 0, 30], translate = [0.1, 0, 0] } }
+    )");
+    const Rgb8Image gpu = to_srgb8(test::render_on(test::Backend::Gpu, turned));
+    expect_close("checker-turned-gpu-vs-cpu", gpu, to_srgb8(test::render_on(test::Backend::Cpu, turned)));
+    EXPECT_GT(compare_images(gpu, to_srgb8(test::render_on(test::Backend::Gpu, own)), 4).fraction_over, 0.1);  // it did turn
+}
+
 }  // namespace
 }  // namespace lancer

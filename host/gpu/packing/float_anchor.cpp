@@ -37,6 +37,8 @@ Scene rebased(const Scene& scene, const glm::dvec3& anchor) {
     for (lancer::Material& m : local.materials) {
         if (m.pattern) move(*m.pattern);
         if (m.bump) move(m.bump->pattern);
+        if (m.checker && m.checker->to_checker)  // so is a checker's (its inverse: taken from the rebased world)
+            (*m.checker->to_checker)[3] = *m.checker->to_checker * glm::dvec4(anchor, 1.0);
     }
     return local;
 }

@@ -53,12 +53,23 @@ struct MapPacker {
         return static_cast<uint>(out.textures.size() - 1);
     }
 
-    uint pattern(const Pattern& p, double bump_amount) {
-        PatternInfo info{};
-        glm::dmat4 to_pattern = glm::inverse(p.to_world);  // column-major: m[column][row]
+    static void set_rows(PatternInfo& info, const glm::dmat4& to_pattern) {  // column-major: m[column][row]
         vec4* rows[] = {&info.row0, &info.row1, &info.row2};
         for (int r = 0; r < 3; ++r)
             *rows[r] = vec4(float(to_pattern[0][r]), float(to_pattern[1][r]), float(to_pattern[2][r]), float(to_pattern[3][r]));
+    }
+
+    // A checker's own transform, as a pattern's rows (appearance.glsl reads nothing else of it).
+    uint frame(const glm::dmat4& to_checker) {
+        PatternInfo info{};
+        set_rows(info, to_checker);
+        out.patterns.push_back(info);
+        return static_cast<uint>(out.patterns.size() - 1);
+    }
+
+    uint pattern(const Pattern& p, double bump_amount) {
+        PatternInfo info{};
+        set_rows(info, glm::inverse(p.to_world));
         double mean_scale = std::cbrt(std::abs(glm::determinant(glm::dmat3(p.to_world))));
         info.params = vec4(float(p.turbulence), float(p.omega), float(p.lambda), float(bump_amount * mean_scale));
         switch (p.type) {
@@ -83,6 +94,7 @@ struct MapPacker {
         g.pattern = m.checker ? PATTERN_CHECKER : PATTERN_SOLID;
         g.checker_size = m.checker ? float(m.checker->size) : 1.0f;
         g.checker_phase = m.checker ? v4(checker_phase(anchor, m.checker->size)) : vec4(0.0f);
+        g.checker_frame = m.checker && m.checker->to_checker ? frame(*m.checker->to_checker) : NO_MAP;
         g.texture_map = m.texture ? texture(*m.texture) : NO_MAP;
         g.color_pattern = m.pattern ? pattern(*m.pattern, 0.0) : NO_MAP;
         g.bump_pattern = m.bump ? pattern(m.bump->pattern, m.bump->amount) : NO_MAP;
