@@ -21,7 +21,7 @@ Scene load_scene_at_frame(const RenderOptions& options, std::optional<int> frame
         int n = loaded.animation->frames;
         int f = frame.value_or(0);
         if (f < 0 || f >= n) throw UserError(fmt::format("--frame {} is outside the animation's frames 0-{}", f, n - 1));
-        return scene_at(loaded, frame_time(*loaded.animation, f));
+        return scene_for_frame(options, loaded, f);
     }
     if (frame) throw UserError("--frame: the scene has no [animation]");
     return loaded;

@@ -22,6 +22,7 @@
 #include "gpu/gpu_renderer.hpp"
 #include "gpu/shaders/shader_compiler.hpp"
 #include "scene/limits.hpp"
+#include "scene/animation.hpp"
 #include "scene/load_scene.hpp"
 
 namespace lancer {
@@ -111,8 +112,18 @@ void add_render_options(CLI::App& cmd, RenderOptions& o) {
     cmd.add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
 }
 
-Scene load_scene_with_overrides(const RenderOptions& o) {
-    Scene scene = load_scene(o.scene);
+Scene scene_for_frame(const RenderOptions& o, const Scene& loaded, int k) {
+    const double time = frame_time(*loaded.animation, k);
+    if (!loaded.depends_on_time) return scene_at(loaded, time);
+    const Scene again = load_scene_with_overrides(o, SceneTime{time, k});
+    if (!again.animation || again.animation->frames != loaded.animation->frames)
+        throw UserError(fmt::format("{}: [animation] frames depends on clock or frame: the frames would change as they are rendered",
+                                    o.scene));
+    return scene_at(again, time);
+}
+
+Scene load_scene_with_overrides(const RenderOptions& o, SceneTime time) {
+    Scene scene = load_scene(o.scene, time);
     RenderSettings& r = scene.render;
     if (o.width) r.width = *o.width;
     if (o.height) r.height = *o.height;

@@ -10,6 +10,7 @@
 
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_values.hpp"
 
 namespace lancer {
 
@@ -33,8 +34,13 @@ struct RenderOptions {
 
 void add_render_options(CLI::App& cmd, RenderOptions& o);
 
-// Loads the scene and applies the command line's overrides of its [render] table.
-Scene load_scene_with_overrides(const RenderOptions& o);
+// Loads the scene (its expressions at `time`) and applies the command line's overrides of its
+// [render] table.
+Scene load_scene_with_overrides(const RenderOptions& o, SceneTime time = {});
+
+// Frame k of the animated scene `loaded` (as load_scene_with_overrides read it), static: read
+// again at the frame's clock where the file's numbers depend on it, then moved by its tracks.
+Scene scene_for_frame(const RenderOptions& o, const Scene& loaded, int k);
 
 // What an image file of this scene's render records: its tone mapping and which photon passes
 // its pixels average (a part of a farm render).

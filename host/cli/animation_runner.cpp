@@ -80,7 +80,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
     if (!pattern) {
         // A plain name: one still of one frame, e.g. a poster image.
         if (range.single() && !opts.frames.empty() && opts.video.empty())
-            return render_still(options, scene_at(scene, frame_time(animation, range.first)), options.output);
+            return render_still(options, scene_for_frame(options, scene, range.first), options.output);
         throw UserError(fmt::format("-o {}: an animation needs a frame number in the name, such as {} "
                                     "(or --frames N for a single frame)",
                                     options.output, suggest_pattern(options.output, animation.frames)));
@@ -123,7 +123,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
         auto start = Clock::now();
         std::unique_ptr<Renderer> renderer = make_renderer(options);
         try {
-            renderer->prepare(scene_at(scene, frame_time(animation, todo.front())),
+            renderer->prepare(scene_for_frame(options, scene, todo.front()),
                               [&](double) { return !interrupts.requested(); });
         } catch (const RenderCancelled&) {
             progress.clear();
@@ -152,7 +152,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
         for (int k : todo) {
             std::string path = pattern->path(k);
             if (interrupts.requested()) stop(k, path);
-            Scene frame = scene_at(scene, frame_time(animation, k));
+            Scene frame = scene_for_frame(options, scene, k);
             progress.begin(k, path);
             auto frame_start = Clock::now();
             FloatImage image;

@@ -1,5 +1,8 @@
 #include "scene/expression_keys.hpp"
 
+#include <algorithm>
+
+#include "scene/scene_values.hpp"
 #include "scene/string_position.hpp"
 
 namespace lancer {
@@ -14,6 +17,7 @@ surface::Expr parse_expression_key(const toml::node& node, const std::string& fi
     if (!text)
         throw SceneError(location_of(node, file),
                          what + " must be a string holding an expression in " + surface::list_variables(variables));
+    if (SceneValues* values = current_scene_values()) values->note_expression(text->get());
     try {
         return surface::parse_expression(text->get(), constants, variables);
     } catch (const surface::ExprError& e) {
@@ -23,8 +27,13 @@ surface::Expr parse_expression_key(const toml::node& node, const std::string& fi
     }
 }
 
-surface::Constants read_params(TableReader& t) {
+surface::Constants read_params(TableReader& t, surface::Variables variables) {
+    // The scene's named numbers ([define], clock, frame, repeat indices) first, but not those a
+    // variable's name hides; then the surface's own.
     surface::Constants constants;
+    if (const SceneValues* values = current_scene_values())
+        for (const auto& [name, value] : values->numbers())
+            if (std::find(variables.begin(), variables.end(), name) == variables.end()) constants[name] = value;
     const toml::table* params = t.table("params");
     if (!params) return constants;
     for (auto&& [key, node] : *params)

@@ -17,7 +17,8 @@ surface::Expr parse_expression_key(const toml::node& node, const std::string& fi
                                    const surface::Constants& constants,
                                    surface::Variables variables = surface::kParametricVariables);
 
-// The table `params` of named constants (empty when absent).
-surface::Constants read_params(TableReader& t);
+// The named constants a surface's expressions in `variables` see: the scene's named numbers
+// (scene_values.hpp) that no variable hides, and its table `params` (empty when absent).
+surface::Constants read_params(TableReader& t, surface::Variables variables);
 
 }  // namespace lancer

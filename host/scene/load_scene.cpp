@@ -21,6 +21,7 @@
 #include "scene/parse_optics.hpp"
 #include "scene/parse_shapes.hpp"
 #include "scene/string_position.hpp"
+#include "scene/scene_values.hpp"
 #include "scene/transform.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -155,8 +156,10 @@ PhotonSettings photon_defaults(const CameraSpec& camera) {
     return p;
 }
 
-Scene parse_scene(std::string_view text, const std::string& path) {
+Scene parse_scene(std::string_view text, const std::string& path, SceneTime time) {
     SourceTextScope source(path, text);  // for messages pointing inside strings (expressions)
+    SceneValues values(time);
+    SceneValuesScope values_scope(values);
     toml::table root;
     try {
         root = toml::parse(text, path);
@@ -167,6 +170,7 @@ Scene parse_scene(std::string_view text, const std::string& path) {
     Scene scene;
     scene.path = path;
     TableReader top(root, path, "scene");
+    if (const toml::table* defines = top.table("define")) values.read_defines(*defines, path);
 
     if (const toml::table* t = top.table("render")) {
         TableReader r(*t, path, "[render]");
@@ -254,10 +258,11 @@ Scene parse_scene(std::string_view text, const std::string& path) {
     read_animation(top, root, scene, entry_starts);
     top.finish();
     if (scene.photons) check_photon_lights(scene);
+    scene.depends_on_time = values.uses_time();
     return scene;
 }
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path, SceneTime time) {
     // In pieces, stopping past the limit: /dev/zero or an endless pipe is an error, not a hang.
     FileText file;
     try {
@@ -268,7 +273,7 @@ Scene load_scene(const std::string& path) {
     if (!file.complete)
         throw UserError(fmt::format("cannot read scene file '{}': it is larger than the limit of {} MiB", path,
                                     limits::kMaxSceneFileBytes >> 20));
-    return parse_scene(file.text, path);
+    return parse_scene(file.text, path, time);
 }
 
 }  // namespace lancer

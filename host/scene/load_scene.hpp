@@ -4,15 +4,16 @@
 #include <string_view>
 
 #include "scene/scene.hpp"
+#include "scene/scene_values.hpp"
 
 namespace lancer {
 
-// Reads and validates a TOML scene file. Every problem is a SceneError at file:line:col;
-// an unreadable file is a UserError.
-Scene load_scene(const std::string& path);
+// Reads and validates a TOML scene file, its expressions at `time` (scene_values.hpp). Every
+// problem is a SceneError at file:line:col; an unreadable file is a UserError.
+Scene load_scene(const std::string& path, SceneTime time = {});
 
 // The same from text already in memory; `path` is used for messages only.
-Scene parse_scene(std::string_view text, const std::string& path);
+Scene parse_scene(std::string_view text, const std::string& path, SceneTime time = {});
 
 // Photon mapping's settings where a scene gives none ([photons] keys left out, or --photons on
 // a scene without the table): radii scaled to the distance from the camera to what it looks at.

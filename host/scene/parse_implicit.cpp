@@ -90,7 +90,7 @@ std::string poly_function(TableReader& t) {
 }  // namespace
 
 Shape read_implicit(TableReader& t, const glm::dmat4& to_world) {
-    surface::Constants constants = read_params(t);
+    surface::Constants constants = read_params(t, surface::kImplicitVariables);
     ImplicitObject object;
     surface::ImplicitSurface& s = object.surface;
     const toml::node* node = t.node("function");

@@ -11,6 +11,7 @@
 #include "scene/parse_shapes.hpp"
 #include "scene/parse_surfaces.hpp"
 #include "scene/placement.hpp"
+#include "scene/scene_values.hpp"
 #include "scene/pov_ray_words.hpp"
 #include "scene/shape_bounds.hpp"
 #include "scene/transform.hpp"
@@ -141,7 +142,38 @@ struct ObjectReading {
         return TableReader(*table, t.file(), describe_object("declared object '" + name + "'", *table));
     }
 
+    // POV-Ray's #for: `repeat = { i = [first, last] }` reads the entry once for each whole i
+    // from first to last, with i a name its numbers' expressions may use.
     void entry(TableReader& t, std::uint32_t material, const glm::dmat4& parent, int depth, const std::string& group = "") {
+        const toml::table* repeat = t.table("repeat");
+        if (!repeat) return entry_once(t, material, parent, depth, group);
+        TableReader r(*repeat, t.file(), t.what() + " repeat");
+        if (repeat->size() != 1) t.fail("repeat", "repeat takes one index: repeat = { i = [first, last] }");
+        const std::string index(repeat->cbegin()->first.str());
+        SceneValues& values = *current_scene_values();
+        if (values.is_bound(index) || index == "pi" || index == "e" || index == "clock" || index == "frame")
+            r.fail(index, fmt::format("the index '{}' is already a name (a [define], or an outer repeat's index)", index));
+        const dvec3 range = [&] {
+            const toml::array* bounds = r.array(index);
+            if (!bounds || bounds->size() != 2) r.fail(index, fmt::format("repeat = {{ {} = [first, last] }}: two whole numbers", index));
+            return dvec3(node_number(*bounds->get(0), t.file(), index + "[0]"), node_number(*bounds->get(1), t.file(), index + "[1]"), 0.0);
+        }();
+        if (range.x != std::floor(range.x) || range.y != std::floor(range.y))
+            r.fail(index, fmt::format("a repeat's first and last are whole numbers, not {:g} and {:g}", range.x, range.y));
+        if (range.y - range.x + 1.0 > limits::kMaxObjects)
+            r.fail(index, fmt::format("repeat {} from {:g} to {:g}: more than the {} objects a scene may hold", index, range.x,
+                                      range.y, limits::kMaxObjects));
+        for (double i = range.x; i <= range.y; ++i) {
+            values.bind(index, i);
+            TableReader again(t.table(), t.file(), fmt::format("{} ({} = {:g})", t.what(), index, i));
+            again.accept("repeat");
+            entry_once(again, material, parent, depth, group);
+        }
+        values.unbind(index);
+        t.accept("repeat");
+    }
+
+    void entry_once(TableReader& t, std::uint32_t material, const glm::dmat4& parent, int depth, const std::string& group) {
         const std::string type = t.required_string("type");
         if (type == "object") {
             if (depth == kMaxGroupDepth) t.fail("of", fmt::format("objects nest at most {} deep (does a declared object place itself?)", kMaxGroupDepth));

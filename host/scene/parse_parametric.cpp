@@ -53,7 +53,7 @@ std::pair<double, double> read_range(TableReader& t, std::string_view key, const
 }  // namespace
 
 Shape read_parametric(TableReader& t, const glm::dmat4& to_world) {
-    surface::Constants constants = read_params(t);
+    surface::Constants constants = read_params(t, surface::kParametricVariables);
     ParametricObject object;
     surface::ParametricSurface& s = object.surface;
     const char* axes[] = {"x", "y", "z"};

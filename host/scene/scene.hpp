@@ -424,6 +424,9 @@ struct Scene {
     // Set when the file has an [animation] table; scene_at() (scene/animation.hpp) turns the
     // scene into the static one of a moment. Renderers ignore it.
     std::shared_ptr<const Animation> animation;
+    // Some number is an expression of clock or frame: each frame of an animation reads the file
+    // again at its time (scene_values.hpp).
+    bool depends_on_time = false;
 };
 
 }  // namespace lancer

@@ -7,7 +7,9 @@
 #include <fmt/format.h>
 
 #include "core/magnitude.hpp"
+#include "scene/pov_colors.hpp"
 #include "scene/pov_ray_words.hpp"
+#include "scene/scene_values.hpp"
 #include "scene/string_position.hpp"
 
 namespace lancer {
@@ -42,8 +44,10 @@ double node_number(const toml::node& node, const std::string& file, const std::s
         value = static_cast<double>(i->get());
     } else if (auto f = node.as_floating_point()) {
         value = f->get();
+    } else if (SceneValues* values = current_scene_values(); values && node.is_string()) {
+        value = values->evaluate(node, file, what);  // an expression of the scene's named numbers
     } else {
-        throw SceneError(location_of(node, file), what + " must be a number, not " + type_name(node));
+        throw SceneError(location_of(node, file), what + " must be a number or an expression (a string), not " + type_name(node));
     }
     if (!std::isfinite(value)) throw SceneError(location_of(node, file), fmt::format("{} must be finite, not {}", what, value));
     if (std::abs(value) > kMaxMagnitude)
@@ -53,10 +57,19 @@ double node_number(const toml::node& node, const std::string& file, const std::s
 }
 
 dvec3 node_vec3(const toml::node& node, const std::string& file, const std::string& what) {
+    if (SceneValues* values = current_scene_values(); values && node.is_string()) {  // a defined vector or a colour's name
+        const std::string& name = node.as_string()->get();
+        if (auto v = values->vector(name)) return *v;
+        std::set<std::string, std::less<>> names;
+        for (const auto& [colour, value] : pov_colors()) names.insert(colour);
+        throw SceneError(location_of(node, file),
+                         fmt::format("{}: '{}' is neither a vector in [define] nor a colour of POV-Ray's colors.inc{}", what,
+                                     name, did_you_mean(name, names)));
+    }
     const toml::array* array = node.as_array();
     if (!array || array->size() != 3) {
         std::string got = array ? "an array of " + std::to_string(array->size()) : std::string(type_name(node));
-        throw SceneError(location_of(node, file), what + " must be an array of 3 numbers, not " + got);
+        throw SceneError(location_of(node, file), what + " must be an array of 3 numbers (or a name: a [define] vector, a colour), not " + got);
     }
     dvec3 v;
     for (int i = 0; i < 3; ++i) v[i] = node_number(*array->get(i), file, what + "[" + std::to_string(i) + "]");

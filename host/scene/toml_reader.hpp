@@ -47,6 +47,7 @@ public:
     [[noreturn]] void fail(std::string_view key, const std::string& message) const;
 
     const std::string& file() const { return file_; }
+    const toml::table& table() const { return table_; }
     const std::string& what() const { return what_; }
 
 private:

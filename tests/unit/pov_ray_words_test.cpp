@@ -84,8 +84,8 @@ TEST(PovRayWords, PolyRefusesACountOfNoDegreeAndAFunctionBeside) {
                              "every coefficient is 0");
     // A coefficient that is not a number is named by its own index (the index was once read in
     // the same call that advanced it, in an order C++ leaves open).
-    test::expect_scene_error(std::string(kCamera) + "[[object]]\ntype = \"implicit\"\npoly = [1, 0, \"x\", 0]\n" + box, 6,
-                             15, "poly[2] must be a number, not a string");
+    test::expect_scene_error(std::string(kCamera) + "[[object]]\ntype = \"implicit\"\npoly = [1, 0, true, 0]\n" + box, 6,
+                             15, "poly[2] must be a number or an expression (a string), not a boolean");
 }
 
 }  // namespace

@@ -212,9 +212,11 @@ private:
         // A one-letter name is within one edit of every other one; suggesting there is noise.
         std::string known = "pi, e";
         for (const auto& [constant, value] : constants_) known += ", " + constant;
-        std::string listed = fmt::format(" (the variables are {}; constants: {})", list_variables(variables_), known);
+        // A scene's numbers have no variables: only named values ([define], clock, ...).
+        std::string listed = variables_.empty() ? fmt::format(" (the names are {})", known)
+                                                : fmt::format(" (the variables are {}; constants: {})", list_variables(variables_), known);
         std::string ending = n.size() >= 2 ? did_you_mean(n, variable_names(), listed) : listed;
-        throw ExprError(fmt::format("unknown variable '{}'", n) + ending, token.column);
+        throw ExprError(fmt::format("unknown {} '{}'", variables_.empty() ? "name" : "variable", n) + ending, token.column);
     }
 
     int call(const Token& token) {
