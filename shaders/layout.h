@@ -310,7 +310,7 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     SCALARS(uint, loop_probe, /* always 2: the trip count of trace.comp's loop_limit_reached() probe */ \
             uint, mirror_plane, /* a flat mirror whose reflections of camera rays take DIRECTION_GRID_MIRROR, or NO_PRIMITIVE */ \
             uint, sky_colors, /* the sky's ramp: its first sky_colors of sky */                \
-            uint, reserved1)                                                                      \
+            uint, sky_pattern) /* SKY_HAS_PATTERN: the sky's pattern in patterns (its ramp there) */ \
     /* the primitives outside the BVH, sorted by shape type: family t is [family_end[t - 1], */     \
     /* family_end[t]) (t = 0 from primitive_count - unbounded_count), read as [t / 4][t % 4] */   \
     UVEC4S(family_end, SHAPE_QUADS)                                                               \
@@ -526,7 +526,8 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(PLACED_OBJECTS, 29, bool, placed_objects, false) /* some object has a transform: patterns in object coordinates (placement.glsl) */ \
     X(OBJECT_SPACE_SHAPES, 30, bool, object_space_shapes, false) /* ... and some shape is traced in them */ \
     X(SCENE_HAS_FOG, 31, bool, has_fog, true) /* [fog]: every ray's segments fogged (trace.comp) */ \
-    X(SCENE_HAS_SKY, 32, bool, has_sky, true) /* [sky]: rays that meet nothing see its ramp (trace.comp) */
+    X(SCENE_HAS_SKY, 32, bool, has_sky, true) /* [sky]: rays that meet nothing see its ramp (trace.comp) */ \
+    X(SKY_HAS_PATTERN, 33, bool, sky_has_pattern, true) /* ... or its pattern's colour at their direction */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

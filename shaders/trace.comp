@@ -23,6 +23,7 @@ const float CONTRACT_BROKEN = -3.0;
 #include "dielectric.glsl"
 #include "shade.glsl"
 #include "appearance.glsl"
+#include "sky.glsl"
 #include "microfacet_material.glsl"
 #include "photon_gather.glsl"
 
@@ -133,8 +134,7 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
         }
         bool goes_on = false;
         if (!found) {
-            // The sky's ramp at the direction's height, wrapped as POV-Ray's gradient y (Tracer::trace).
-            if (SCENE_HAS_SKY) color += b.weight * ramp_over(frame.sky, frame.sky_colors, fract(b.ray.dir.y));
+            if (SCENE_HAS_SKY) color += b.weight * sky_color(b.ray.dir);
             else color += b.weight * frame.background.rgb;
         } else {
             vec3 p = b.ray.origin + hit.t * b.ray.dir;

@@ -30,8 +30,12 @@ constexpr int kMaxShadowCrossings = 16;
 
 dvec3 mirror(const dvec3& d, const dvec3& n) { return d - 2.0 * glm::dot(d, n) * n; }
 
-// The sky in unit direction d: its ramp at d's height, wrapped as POV-Ray's gradient y.
-dvec3 sky_color(const Sky& sky, const dvec3& d) { return ramp_color(sky.colors, d.y - std::floor(d.y)); }
+// The sky in unit direction d: its pattern's colour at d, or its ramp at d's height, wrapped as
+// POV-Ray's gradient y.
+dvec3 sky_color(const Sky& sky, const dvec3& d) {
+    if (sky.pattern) return pattern_color(*sky.pattern, glm::normalize(d));
+    return ramp_color(sky.colors, d.y - std::floor(d.y));
+}
 
 }  // namespace
 

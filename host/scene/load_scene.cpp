@@ -227,7 +227,13 @@ Scene parse_scene(std::string_view text, const std::string& path, SceneTime time
 
     if (const toml::table* s = top.table("sky")) {
         TableReader t(*s, path, "[sky]");
-        scene.sky = Sky{read_ramp(t)};
+        scene.sky = Sky{read_ramp(t), std::nullopt};
+        if (const toml::table* p = t.table("pattern")) {
+            TableReader pattern(*p, path, "[sky] pattern");
+            scene.sky->pattern = read_pattern_shape(pattern);
+            scene.sky->pattern->colors = scene.sky->colors;
+            pattern.finish();
+        }
         t.finish();
     }
 

@@ -101,7 +101,8 @@ double default_turbulence(PatternType type) {
     }
 }
 
-// The keys a colour pattern and a bump share: type, placement and the turbulence sum.
+}  // namespace
+
 Pattern read_pattern_shape(TableReader& t) {
     Pattern p;
     const toml::node* type = t.node("type");
@@ -143,7 +144,6 @@ Pattern read_pattern_shape(TableReader& t) {
     return p;
 }
 
-}  // namespace
 
 std::vector<ColorStop> read_ramp(TableReader& t) {
     const toml::array* colors = t.array("colors");

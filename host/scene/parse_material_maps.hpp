@@ -33,6 +33,10 @@ private:
 // A colour ramp: `colors` (2 to kMaxPatternColors) and optional `stops` (ascending, in [0, 1]).
 std::vector<ColorStop> read_ramp(TableReader& t);
 
+// The keys a colour pattern, a bump and the sky's pattern share: type, placement and the
+// turbulence sum (the ramp is read apart).
+Pattern read_pattern_shape(TableReader& t);
+
 // Reads the material's optional `texture`, `pattern` and `bump` keys into `m`.
 void read_material_maps(TableReader& t, Material& m, TextureLibrary& textures);
 

@@ -402,11 +402,13 @@ struct Fog {
 // exp(-depth / fog.distance).
 double fog_depth(const Fog& fog, const dvec3& from, const dvec3& dir, double length);
 
-// POV-Ray's sky_sphere with `gradient y` (docs/scene-format.md, "[sky]"): what a ray that meets
-// nothing sees, the colour ramp at its direction's height, wrapped as POV-Ray's gradient is
-// (d.y - floor(d.y): from the horizon up, and again from below it).
+// POV-Ray's sky_sphere (docs/scene-format.md, "[sky]"): what a ray that meets nothing sees, the
+// colour ramp at its direction's height, wrapped as POV-Ray's gradient y is (d.y - floor(d.y):
+// from the horizon up, and again from below it); or, with a pattern, the pattern's colour at the
+// unit direction (POV-Ray's pigment on the sky sphere), its ramp these colours.
 struct Sky {
     std::vector<ColorStop> colors;
+    std::optional<Pattern> pattern;  // its colors are `colors`
 };
 struct Scene {
     std::string path;

@@ -5,8 +5,11 @@
 // and their keys refused where wrong.
 #include <cmath>
 
+#include <fmt/format.h>
+#include <glm/matrix.hpp>
 #include <gtest/gtest.h>
 
+#include "cpu/pattern.hpp"
 #include "scene/camera.hpp"
 #include "support/test_support.hpp"
 
@@ -145,10 +148,55 @@ TEST(Sky, TheGpuDrawsTheReferencesPicture) {
                               to_srgb8(test::render_on(test::Backend::Cpu, scene)));
 }
 
+// POV-Ray's sky_sphere { pigment { bozo ... } }: the pattern's colour at the ray's unit direction,
+// the sky's ramp its colours; looked at through a narrow camera in two directions.
+TEST(Sky, APatternIsSeenAtTheRaysDirection) {
+    for (const glm::dvec3 look : {glm::dvec3(0.3, 0.5, 1.0), glm::dvec3(-0.7, -0.2, 0.4)}) {
+        const Scene scene = test::scene_from_text(fmt::format(R"toml(
+[render]
+width = 9
+height = 9
+samples = 1
+[camera]
+eye = [0, 0, 0]
+fov = 0.1
+look_at = [{}, {}, {}]
+[sky]
+colors = [[0, 0, 0.2], [1, 0.9, 0.8]]
+pattern = {{ type = "turbulence", scale = 0.4, rotate = [0, 30, 0] }}
+)toml", look.x, look.y, look.z));
+        ASSERT_TRUE(scene.sky && scene.sky->pattern);
+        const Pattern& p = *scene.sky->pattern;
+        const glm::dvec3 q = glm::dvec3(glm::inverse(p.to_world) * glm::dvec4(glm::normalize(look), 1.0));
+        const double f = cpu::pattern_value(p, q).value;
+        const glm::dvec3 expected = glm::mix(glm::dvec3(0, 0, 0.2), glm::dvec3(1, 0.9, 0.8), f);
+        for (test::Backend backend : {test::Backend::Cpu, test::Backend::Gpu}) {
+            const FloatImage image = test::render_on(backend, scene);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(image.at(4, 4)[c], expected[c], 2e-3) << test::backend_name(backend);
+        }
+    }
+}
+
+TEST(Sky, TheGpuDrawsTheReferencesPatternedSky) {
+    Scene scene = test::shipped_scene("seed", 160, 90, 2);
+    Pattern clouds;
+    clouds.type = PatternType::Turbulence;
+    clouds.to_world = glm::dmat4(0.3);
+    clouds.to_world[3][3] = 1.0;
+    clouds.colors = {{0.0, {0.25, 0.45, 0.85}}, {1.0, {1.0, 1.0, 1.0}}};
+    scene.sky = Sky{clouds.colors, clouds};
+    test::expect_same_picture("sky_clouds_seed", to_srgb8(test::render_on(test::Backend::Gpu, scene)),
+                              to_srgb8(test::render_on(test::Backend::Cpu, scene)));
+}
+
 TEST(Sky, ItsKeysAreChecked) {
     const std::string camera = "[camera]\neye = [0, 0, -5]\nlook_at = [0, 0, 0]\n";
     test::expect_scene_error(camera + "[sky]\ncolors = [[1, 1, 1]]\n", 5, 10, "a pattern needs 2 to 8 colors, not 1");
     test::expect_scene_error(camera + "[sky]\ncolors = [[1, 1, 1], [0, 0, 1]]\nstops = [0.5, 0.2]\n", 6, 15, "stops must not decrease");
+    test::expect_scene_error(camera + "[sky]\ncolors = [[1, 1, 1], [0, 0, 1]]\npattern = { type = \"bozo\" }\n", 6, 20, "bozo");
+    test::expect_scene_error(camera + "[sky]\ncolors = [[1, 1, 1], [0, 0, 1]]\npattern = { type = \"noise\", colors = [] }\n", 6, 29,
+                             "unknown key 'colors'");
 }
 
 }  // namespace

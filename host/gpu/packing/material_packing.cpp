@@ -142,6 +142,7 @@ struct MapPacker {
 void pack_materials(const Scene& scene, const glm::dvec3& anchor, PackedScene& out) {
     MapPacker maps{out, {}, {}, anchor};
     for (const lancer::Material& m : scene.materials) out.materials.push_back(maps.material(m));
+    if (scene.sky && scene.sky->pattern) out.sky_pattern = maps.pattern(*scene.sky->pattern, 0.0);
     if (!out.patterns.empty()) out.permutation.assign(kPerlinPermutation.begin(), kPerlinPermutation.end());
 }
 

@@ -5,8 +5,8 @@
 
 namespace lancer::gpu {
 
-// The scene's materials with their images, patterns and energy tables, into `out`; solid
-// checkers are phased for the GPU's coordinates, relative to `anchor`.
+// The scene's materials with their images, patterns and energy tables, and the sky's pattern,
+// into `out`; solid checkers are phased for the GPU's coordinates, relative to `anchor`.
 void pack_materials(const Scene& scene, const glm::dvec3& anchor, PackedScene& out);
 
 Light pack_light(const lancer::Light& light);

@@ -101,6 +101,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     f.has_photons = scene.photons.has_value();
     f.has_fog = scene.fog.has_value();
     f.has_sky = scene.sky.has_value();
+    f.sky_has_pattern = scene.sky && scene.sky->pattern;
     f.spheres_by_near_points = spheres.by_near_points && f.has_shape(SHAPE_SPHERE);
     f.placed_objects = placed;
     f.object_space_shapes = object_space;
@@ -164,6 +165,7 @@ FrameParams pack_frame(const Scene& scene, const PackedScene& packed) {
     }
     if (scene.sky) {
         f.sky_colors = static_cast<uint>(scene.sky->colors.size());
+        f.sky_pattern = packed.sky_pattern;
         for (std::size_t i = 0; i < scene.sky->colors.size(); ++i) f.sky[i] = v4(scene.sky->colors[i].color, scene.sky->colors[i].position);
     }
     f.width = static_cast<uint>(r.width);

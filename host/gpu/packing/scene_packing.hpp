@@ -31,6 +31,8 @@ struct PackedScene {
     uint unbounded_count = 0;
     // The plane whose reflections of camera rays take the mirror's direction grid, or NO_PRIMITIVE.
     uint mirror_plane = NO_PRIMITIVE;
+    // The sky's pattern in `patterns` (over directions: never moved by the anchor), or NO_MAP.
+    uint sky_pattern = NO_MAP;
     // By shape type, the boxes around the families of cheap bounded shapes outside the BVH
     // (shape_is_boxable; the others have none: gpu/packing/family_boxes.hpp).
     std::array<FamilyBoxes, SHAPE_COUNT> families{};
