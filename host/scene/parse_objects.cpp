@@ -160,9 +160,13 @@ struct ObjectReading {
         }();
         if (range.x != std::floor(range.x) || range.y != std::floor(range.y))
             r.fail(index, fmt::format("a repeat's first and last are whole numbers, not {:g} and {:g}", range.x, range.y));
-        if (range.y - range.x + 1.0 > limits::kMaxObjects)
-            r.fail(index, fmt::format("repeat {} from {:g} to {:g}: more than the {} objects a scene may hold", index, range.x,
-                                      range.y, limits::kMaxObjects));
+        // A copy is a placement: a few nested lines must not make a million objects.
+        const double copies = std::max(0.0, range.y - range.x + 1.0);
+        if (copies + placements > limits::kMaxPlacements)
+            r.fail(index, fmt::format("repeat {} from {:g} to {:g}: {:g} copies, beyond the {} copies and placements a scene may "
+                                      "make ({} so far)",
+                                      index, range.x, range.y, copies, limits::kMaxPlacements, placements));
+        placements += static_cast<int>(copies);
         for (double i = range.x; i <= range.y; ++i) {
             values.bind(index, i);
             TableReader again(t.table(), t.file(), fmt::format("{} ({} = {:g})", t.what(), index, i));

@@ -112,7 +112,7 @@ TEST(SceneValues, ErrorsSayWhereAndWhy) {
     test::expect_scene_error(std::string(kCamera) + sphere + "radius = 1\nrepeat = { i = [0, 1], j = [0, 1] }\n", 8, 10,
                              "one index");
     test::expect_scene_error(std::string(kCamera) + sphere + "radius = 1\nrepeat = { i = [0, 10000000] }\n", 8, 16,
-                             "more than the");
+                             "beyond the 65536 copies and placements");
     test::expect_scene_error(std::string(kCamera) + "[define]\ni = 1\n" + sphere + "radius = 1\nrepeat = { i = [0, 1] }\n", 10,
                              16, "already a name");
 }
