@@ -260,7 +260,9 @@ Scene parse_scene(std::string_view text, const std::string& path, SceneTime time
         scene.materials.push_back(Material{"default"});
     }
 
-    const std::vector<std::size_t> entry_starts = read_objects(top, material_index, default_material, scene, textures);
+    const MaterialReader read_inline = [&](TableReader& m, const std::string& name) { return read_material(m, name, textures); };
+    const std::vector<std::size_t> entry_starts =
+        read_objects(top, material_index, read_inline, default_material, scene, textures);
     read_animation(top, root, scene, entry_starts);
     top.finish();
     if (scene.photons) check_photon_lights(scene);

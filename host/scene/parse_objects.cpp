@@ -21,20 +21,31 @@ namespace lancer {
 namespace {
 
 // The material an object or group names, or `inherited` (its group's, or the scene's default).
-std::uint32_t read_material_reference(TableReader& t, const MaterialIndex& materials, std::uint32_t inherited) {
+// A material given inline (a table: POV-Ray's texture { } on the object) is added to the
+// scene's, one per table read (a repeat's copies each get theirs, so their colours may differ).
+std::uint32_t read_material_reference(TableReader& t, const MaterialChoice& materials, std::uint32_t inherited) {
     if (!t.has("material")) {
         t.accept("material");
         return inherited;
     }
+    if (const toml::table* own = t.node("material")->as_table()) {
+        if (materials.scene.materials.size() >= static_cast<std::size_t>(limits::kMaxMaterials))
+            t.fail("material", fmt::format("too many materials with the objects' own (the limit is {})", limits::kMaxMaterials));
+        const SourceLocation at = t.location("material");
+        TableReader m(*own, t.file(), t.what() + "'s material");
+        materials.scene.materials.push_back(materials.read_inline(m, fmt::format("{}:{}:{}", at.file, at.line, at.column)));
+        return static_cast<std::uint32_t>(materials.scene.materials.size() - 1);
+    }
     std::string name = t.string("material", "");
-    auto found = materials.find(name);
-    if (found == materials.end()) t.fail("material", "unknown material '" + name + "'" + did_you_mean(name, names_of(materials)));
+    auto found = materials.named.find(name);
+    if (found == materials.named.end())
+        t.fail("material", "unknown material '" + name + "'" + did_you_mean(name, names_of(materials.named)));
     return found->second;
 }
 
 // One shape of an [[object]] entry (or of a group's `objects`), placed by `parent` (its groups'
 // transforms) and then its own.
-Object read_object(TableReader& t, const std::string& type, const MaterialIndex& materials, std::uint32_t inherited_material,
+Object read_object(TableReader& t, const std::string& type, const MaterialChoice& materials, std::uint32_t inherited_material,
                    const glm::dmat4& parent) {
     const auto& readers = shape_readers();
     auto reader = readers.find(type);
@@ -111,7 +122,7 @@ constexpr int kMaxGroupDepth = 64;
 // places its `objects` by its transform, gives them its material unless they name their own, and
 // its name (an animation moves the whole group).
 struct ObjectReading {
-    const MaterialIndex& materials;
+    const MaterialChoice& materials;
     SurfaceTotals totals;
     Scene& scene;
     TextureLibrary& textures;
@@ -146,7 +157,7 @@ struct ObjectReading {
     // from first to last, with i a name its numbers' expressions may use.
     void entry(TableReader& t, std::uint32_t material, const glm::dmat4& parent, int depth, const std::string& group = "") {
         const toml::table* repeat = t.table("repeat");
-        if (!repeat) return entry_once(t, material, parent, depth, group);
+        if (!repeat) return entry_with_defines(t, material, parent, depth, group);
         TableReader r(*repeat, t.file(), t.what() + " repeat");
         if (repeat->size() != 1) t.fail("repeat", "repeat takes one index: repeat = { i = [first, last] }");
         const std::string index(repeat->cbegin()->first.str());
@@ -171,10 +182,21 @@ struct ObjectReading {
             values.bind(index, i);
             TableReader again(t.table(), t.file(), fmt::format("{} ({} = {:g})", t.what(), index, i));
             again.accept("repeat");
-            entry_once(again, material, parent, depth, group);
+            entry_with_defines(again, material, parent, depth, group);
         }
         values.unbind(index);
         t.accept("repeat");
+    }
+
+    // POV-Ray's #declare inside a loop: `define = { y = "sin(i)" }` names values for this
+    // object's (and its members') numbers, read again for each copy of a repeat.
+    void entry_with_defines(TableReader& t, std::uint32_t material, const glm::dmat4& parent, int depth, const std::string& group) {
+        const toml::table* own = t.table("define");
+        if (!own) return entry_once(t, material, parent, depth, group);
+        SceneValues& values = *current_scene_values();
+        const std::vector<std::string> names = values.read_defines(*own, t.file(), t.what() + " define");
+        entry_once(t, material, parent, depth, group);
+        for (const std::string& name : names) values.unbind(name);
     }
 
     void entry_once(TableReader& t, std::uint32_t material, const glm::dmat4& parent, int depth, const std::string& group) {
@@ -332,8 +354,9 @@ struct ObjectReading {
 
 }  // namespace
 
-std::vector<std::size_t> read_objects(TableReader& top, const MaterialIndex& materials, std::uint32_t default_material,
-                                      Scene& scene, TextureLibrary& textures) {
+std::vector<std::size_t> read_objects(TableReader& top, const MaterialIndex& named, const MaterialReader& read_inline,
+                                      std::uint32_t default_material, Scene& scene, TextureLibrary& textures) {
+    const MaterialChoice materials{named, read_inline, scene};
     std::vector<std::size_t> entry_starts{0};
     const toml::table* declared = top.table("declare");
     const toml::array* objects = top.array("object");

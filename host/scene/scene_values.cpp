@@ -52,7 +52,8 @@ std::optional<dvec3> SceneValues::vector(std::string_view name) const {
     return std::nullopt;
 }
 
-void SceneValues::read_defines(const toml::table& defines, const std::string& file) {
+std::vector<std::string> SceneValues::read_defines(const toml::table& defines, const std::string& file, const std::string& where) {
+    std::vector<std::string> names;
     std::vector<std::pair<std::string_view, const toml::node*>> entries;
     for (auto&& [key, node] : defines) entries.emplace_back(key.str(), &node);
     // TOML keeps no order; the file's is the one a reader sees.
@@ -61,15 +62,19 @@ void SceneValues::read_defines(const toml::table& defines, const std::string& fi
         return pa.line != pb.line ? pa.line < pb.line : pa.column < pb.column;
     });
     for (const auto& [key, node] : entries) {
-        const std::string name(key), what = "define." + name;
+        const std::string name(key), what = where + "." + name;
         if (!is_name(name))
             throw SceneError(location_of(*node, file), fmt::format("{}: a name is a letter, then letters, digits or _", what));
         if (name == "clock" || name == "frame" || name == "pi" || name == "e" || surface::find_function(name))
             throw SceneError(location_of(*node, file), fmt::format("{}: '{}' is already a name in expressions", what, name));
-        if (is_bound(name)) throw SceneError(location_of(*node, file), fmt::format("{}: '{}' is defined twice", what, name));
+        if (is_bound(name))
+            throw SceneError(location_of(*node, file), fmt::format("{}: '{}' is already a name (a [define], a repeat's index, "
+                                                                   "or an enclosing object's define)", what, name));
         if (node->is_array()) vectors_[name] = node_vec3(*node, file, what);
         else numbers_[name] = node_number(*node, file, what);
+        names.push_back(name);
     }
+    return names;
 }
 
 void SceneValues::note_expression(const std::string& text) { uses_time_ = uses_time_ || names_time(text); }

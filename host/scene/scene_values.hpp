@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -33,12 +34,16 @@ public:
     // The vector a string names: a [define] vector, else a colors.inc colour.
     std::optional<dvec3> vector(std::string_view name) const;
 
-    // [define]: each entry in the file's order, so that one may use those above it.
-    void read_defines(const toml::table& defines, const std::string& file);
+    // [define], or an object's own `define` (read for each copy of a repeat): each entry in the
+    // file's order, so that one may use those above it. Returns the names, for unbind.
+    std::vector<std::string> read_defines(const toml::table& defines, const std::string& file, const std::string& where = "define");
 
     // A repeat's index, visible to the expressions read until it is taken away.
     void bind(const std::string& name, double value) { numbers_[name] = value; }
-    void unbind(const std::string& name) { numbers_.erase(name); }
+    void unbind(const std::string& name) {
+        numbers_.erase(name);
+        vectors_.erase(name);
+    }
     bool is_bound(std::string_view name) const { return numbers_.count(name) != 0 || vectors_.count(name) != 0; }
 
     // The named numbers (defines, clock, frame, indices), for surfaces' expressions as constants.

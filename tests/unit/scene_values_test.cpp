@@ -99,6 +99,49 @@ TEST(SceneValues, RepeatPlacesAnObjectForEachIndex) {
     EXPECT_NEAR(s.radius, 0.3, 1e-15);
 }
 
+// POV-Ray's texture { } on an object in a #while loop: each copy its own material, its colour
+// from the index.
+TEST(SceneValues, AnObjectsOwnMaterialFollowsItsRepeat) {
+    const Scene scene = test::scene_from_text(std::string(kCamera) + R"s(
+        [[object]]
+        type = "sphere"
+        repeat = { i = [0, 2] }
+        center = ["i", 0, 0]
+        radius = 0.4
+        material = { color = ["i/2", 0, "1 - i/2"], specular = 0 }
+    )s");
+    ASSERT_EQ(scene.objects.size(), 3u);
+    for (int i = 0; i < 3; ++i) {
+        const Material& m = scene.materials.at(scene.objects[i].material);
+        EXPECT_EQ(m.color, dvec3(i / 2.0, 0.0, 1.0 - i / 2.0));
+        EXPECT_EQ(m.specular, 0.0);
+    }
+    test::expect_scene_error(std::string(kCamera) + "[[object]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\nmaterial = { colour = [1, 0, 0] }\n", 8, 14,
+                             "did you mean 'color'");
+}
+
+// POV-Ray's #declare inside a #while: an object's own `define`, read again for each copy, seen by
+// its members too, and gone after it.
+TEST(SceneValues, AnObjectsOwnDefinesAreReadForEachCopy) {
+    const Scene scene = test::scene_from_text(std::string(kCamera) + R"s(
+        [[object]]
+        type = "group"
+        repeat = { j = [1, 2] }
+        define = { y = "10 * j" }
+        objects = [{ type = "sphere", repeat = { i = [0, 1] }, define = { x = "i + y" }, center = ["x", "y", 0], radius = 1 }]
+        [[object]]
+        type = "sphere"
+        center = [0, 0, 0]
+        radius = 1
+        define = { y = 5 }
+    )s");
+    ASSERT_EQ(scene.objects.size(), 5u);
+    EXPECT_EQ(std::get<Sphere>(scene.objects[3].shape).center, dvec3(21.0, 20.0, 0.0));  // j = 2, i = 1
+    test::expect_scene_error(std::string(kCamera) + "[define]\ny = 1\n[[object]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\n"
+                                                    "define = { y = 2 }\n",
+                             10, 16, "already a name");
+}
+
 TEST(SceneValues, ErrorsSayWhereAndWhy) {
     const std::string sphere = "[[object]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\n";  // lines 4-6
     test::expect_scene_error(std::string(kCamera) + sphere + "radius = \"1 + big\"\n", 7, 15, "big");
