@@ -142,6 +142,15 @@ TEST(SceneValues, AnObjectsOwnDefinesAreReadForEachCopy) {
                              10, 16, "already a name");
 }
 
+// bench/port_check.sh's ports of POV-Ray's examples use these words on real scenes: they load,
+// with the objects their originals make.
+TEST(SceneValues, ThePortsOfPovRaysExamplesLoad) {
+    EXPECT_EQ(load_scene(test::source_path("bench/port/perspective.toml")).objects.size(), 16u);  // floor, 14 boxes, sphere
+    const Scene sombrero = load_scene(test::source_path("bench/port/sombrero.toml"));
+    EXPECT_EQ(sombrero.objects.size(), 33u * 33u);
+    EXPECT_EQ(sombrero.materials.size(), 33u * 33u + 1u);  // each sphere's own, and the default
+}
+
 TEST(SceneValues, ErrorsSayWhereAndWhy) {
     const std::string sphere = "[[object]]\ntype = \"sphere\"\ncenter = [0, 0, 0]\n";  // lines 4-6
     test::expect_scene_error(std::string(kCamera) + sphere + "radius = \"1 + big\"\n", 7, 15, "big");
