@@ -1,6 +1,7 @@
 // Numbers by name and by rule (scene/scene_values.hpp; docs/scene-format.md, "Numbers, names and
 // loops"): [define] in the file's order, expressions of clock and frame, named vectors and
 // POV-Ray's colours, repeat; and their errors, at the exact place.
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -145,6 +146,10 @@ TEST(SceneValues, AnObjectsOwnDefinesAreReadForEachCopy) {
 // bench/port_check.sh's ports of POV-Ray's examples use these words on real scenes: they load,
 // with the objects their originals make.
 TEST(SceneValues, ThePortsOfPovRaysExamplesLoad) {
+    int ports = 0;
+    for (const auto& e : std::filesystem::directory_iterator(test::source_path("bench/port")))
+        if (e.path().extension() == ".toml") EXPECT_FALSE(load_scene(e.path().string()).objects.empty()) << e.path(), ++ports;
+    EXPECT_GE(ports, 6);
     EXPECT_EQ(load_scene(test::source_path("bench/port/perspective.toml")).objects.size(), 16u);  // floor, 14 boxes, sphere
     const Scene sombrero = load_scene(test::source_path("bench/port/sombrero.toml"));
     EXPECT_EQ(sombrero.objects.size(), 33u * 33u);
