@@ -148,7 +148,10 @@ TEST(SceneValues, AnObjectsOwnDefinesAreReadForEachCopy) {
 TEST(SceneValues, ThePortsOfPovRaysExamplesLoad) {
     int ports = 0;
     for (const auto& e : std::filesystem::directory_iterator(test::source_path("bench/port")))
-        if (e.path().extension() == ".toml") EXPECT_FALSE(load_scene(e.path().string()).objects.empty()) << e.path(), ++ports;
+        if (e.path().extension() == ".toml") {
+            EXPECT_FALSE(load_scene(e.path().string()).objects.empty()) << e.path();
+            ++ports;
+        }
     EXPECT_GE(ports, 6);
     EXPECT_EQ(load_scene(test::source_path("bench/port/perspective.toml")).objects.size(), 16u);  // floor, 14 boxes, sphere
     const Scene sombrero = load_scene(test::source_path("bench/port/sombrero.toml"));
