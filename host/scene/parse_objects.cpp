@@ -162,23 +162,20 @@ struct ObjectReading {
         if (repeat->size() != 1) t.fail("repeat", "repeat takes one index: repeat = { i = [first, last] }");
         const std::string index(repeat->cbegin()->first.str());
         SceneValues& values = *current_scene_values();
-        if (values.is_bound(index) || index == "pi" || index == "e" || index == "clock" || index == "frame")
-            r.fail(index, fmt::format("the index '{}' is already a name (a [define], or an outer repeat's index)", index));
-        const dvec3 range = [&] {
-            const toml::array* bounds = r.array(index);
-            if (!bounds || bounds->size() != 2) r.fail(index, fmt::format("repeat = {{ {} = [first, last] }}: two whole numbers", index));
-            return dvec3(node_number(*bounds->get(0), t.file(), index + "[0]"), node_number(*bounds->get(1), t.file(), index + "[1]"), 0.0);
-        }();
-        if (range.x != std::floor(range.x) || range.y != std::floor(range.y))
-            r.fail(index, fmt::format("a repeat's first and last are whole numbers, not {:g} and {:g}", range.x, range.y));
+        values.check_new_name(index, r.location(index), "repeat index");
+        const toml::array* bounds = r.array(index);
+        if (!bounds || bounds->size() != 2) r.fail(index, fmt::format("repeat = {{ {} = [first, last] }}: two whole numbers", index));
+        const double first = node_number(*bounds->get(0), t.file(), index + "[0]"), last = node_number(*bounds->get(1), t.file(), index + "[1]");
+        if (first != std::floor(first) || last != std::floor(last))
+            r.fail(index, fmt::format("a repeat's first and last are whole numbers, not {:g} and {:g}", first, last));
         // A copy is a placement: a few nested lines must not make a million objects.
-        const double copies = std::max(0.0, range.y - range.x + 1.0);
+        const double copies = std::max(0.0, last - first + 1.0);
         if (copies + placements > limits::kMaxPlacements)
             r.fail(index, fmt::format("repeat {} from {:g} to {:g}: {:g} copies, beyond the {} copies and placements a scene may "
                                       "make ({} so far)",
-                                      index, range.x, range.y, copies, limits::kMaxPlacements, placements));
+                                      index, first, last, copies, limits::kMaxPlacements, placements));
         placements += static_cast<int>(copies);
-        for (double i = range.x; i <= range.y; ++i) {
+        for (double i = first; i <= last; ++i) {
             values.bind(index, i);
             TableReader again(t.table(), t.file(), fmt::format("{} ({} = {:g})", t.what(), index, i));
             again.accept("repeat");

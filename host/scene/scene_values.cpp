@@ -63,18 +63,21 @@ std::vector<std::string> SceneValues::read_defines(const toml::table& defines, c
     });
     for (const auto& [key, node] : entries) {
         const std::string name(key), what = where + "." + name;
-        if (!is_name(name))
-            throw SceneError(location_of(*node, file), fmt::format("{}: a name is a letter, then letters, digits or _", what));
-        if (name == "clock" || name == "frame" || name == "pi" || name == "e" || surface::find_function(name))
-            throw SceneError(location_of(*node, file), fmt::format("{}: '{}' is already a name in expressions", what, name));
-        if (is_bound(name))
-            throw SceneError(location_of(*node, file), fmt::format("{}: '{}' is already a name (a [define], a repeat's index, "
-                                                                   "or an enclosing object's define)", what, name));
+        check_new_name(name, location_of(*node, file), what);
         if (node->is_array()) vectors_[name] = node_vec3(*node, file, what);
         else numbers_[name] = node_number(*node, file, what);
         names.push_back(name);
     }
     return names;
+}
+
+void SceneValues::check_new_name(const std::string& name, const SourceLocation& at, const std::string& what) const {
+    if (!is_name(name)) throw SceneError(at, fmt::format("{}: a name is a letter, then letters, digits or _", what));
+    if (name == "pi" || name == "e" || surface::find_function(name))
+        throw SceneError(at, fmt::format("{}: '{}' is already a name in expressions", what, name));
+    if (is_bound(name))  // clock and frame are bound from the start
+        throw SceneError(at, fmt::format("{}: '{}' is already a name (clock, frame, a [define], a repeat's index, or an "
+                                         "enclosing object's define)", what, name));
 }
 
 void SceneValues::note_expression(const std::string& text) { uses_time_ = uses_time_ || names_time(text); }

@@ -38,6 +38,9 @@ public:
     // file's order, so that one may use those above it. Returns the names, for unbind.
     std::vector<std::string> read_defines(const toml::table& defines, const std::string& file, const std::string& where = "define");
 
+    // Fails at `at` unless `name` may name a new value: a name, and none an expression knows yet
+    // (a function, pi, e, clock, frame, a [define], a repeat's index, an enclosing define).
+    void check_new_name(const std::string& name, const SourceLocation& at, const std::string& what) const;
     // A repeat's index, visible to the expressions read until it is taken away.
     void bind(const std::string& name, double value) { numbers_[name] = value; }
     void unbind(const std::string& name) {

@@ -53,13 +53,8 @@ Interval inside_along(const Object& leaf, const Ray& ray) {
 // stretches between consecutive roots whose middle is inside, adjacent ones joined (a ray
 // touching the surface from inside). Before the first root and after the last it is outside.
 std::vector<Interval> walked_inside(const Object& leaf, const Ray& ray) {
-    Ray r = ray;
-    double k = 1.0;  // t in the shape's coordinates over the world's
-    if (leaf.placement && leaf.placement->shape_in_object_space) {
-        const dvec3 d = leaf.placement->object_direction(ray.dir);
-        k = glm::length(d);
-        r = Ray{leaf.placement->object_point(ray.origin), d / k};
-    }
+    double k;  // t in the shape's coordinates over the world's
+    const Ray r = shape_ray(leaf, ray, k);
     auto walk = [&](const auto& shape) {
         const std::vector<double> roots = roots_on_line(shape, r);
         std::vector<Interval> spans;

@@ -6,19 +6,22 @@
 
 namespace lancer::cpu {
 
-std::optional<SurfaceHit> intersect(const Object& o, const Ray& ray, double t_min, double t_max) {
-    auto shape_hit = [&](const Ray& r, double lo, double hi) {
-        return std::visit([&](const auto& shape) { return intersect(shape, r, lo, hi); }, o.shape);
-    };
-    if (!o.placement || !o.placement->shape_in_object_space) return shape_hit(ray, t_min, t_max);
-    const Placement& placed = *o.placement;
+Ray shape_ray(const Object& o, const Ray& ray, double& k) {
+    k = 1.0;
+    if (!o.placement || !o.placement->shape_in_object_space) return ray;
     // The shapes take unit directions: t in the object's units is k times the world's.
-    const dvec3 d = placed.object_direction(ray.dir);
-    const double k = glm::length(d);
-    std::optional<SurfaceHit> h = shape_hit(Ray{placed.object_point(ray.origin), d / k}, t_min * k, t_max * k);
-    if (h) {
+    const dvec3 d = o.placement->object_direction(ray.dir);
+    k = glm::length(d);
+    return Ray{o.placement->object_point(ray.origin), d / k};
+}
+
+std::optional<SurfaceHit> intersect(const Object& o, const Ray& ray, double t_min, double t_max) {
+    double k;
+    const Ray r = shape_ray(o, ray, k);
+    std::optional<SurfaceHit> h = std::visit([&](const auto& shape) { return intersect(shape, r, t_min * k, t_max * k); }, o.shape);
+    if (h && o.placement && o.placement->shape_in_object_space) {
         h->t = std::min(h->t / k, t_max);
-        h->normal = placed.world_normal(h->normal);
+        h->normal = o.placement->world_normal(h->normal);
     }
     return h;
 }

@@ -79,6 +79,9 @@ dvec3 mesh_shading_normal(const Mesh& m, const Placement& placed, int triangle, 
 // The file's (u, v) interpolated; without any, the barycentric weights themselves.
 glm::dvec2 mesh_texture_uv(const Mesh& m, int triangle, const glm::dvec2& b);
 
+// The ray in which an object's shape is tested (placed.cpp): the world's, or its object's where
+// the shape keeps its own coordinates, with a unit direction; t there is k times the world's.
+Ray shape_ray(const Object& o, const Ray& ray, double& k);
 // An object's nearest hit: its shape's, carried through its placement where the shape keeps its
 // own coordinates (placed.cpp); the normal is the world's.
 std::optional<SurfaceHit> intersect(const Object& o, const Ray& ray, double t_min, double t_max);
