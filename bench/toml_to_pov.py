@@ -28,6 +28,7 @@ import ast
 import math
 import os
 import re
+import struct
 import sys
 import tomllib
 
@@ -59,6 +60,7 @@ TRANSLATED = {
     "superellipsoid": {"e", "n"},
     "blob": {"threshold", "spheres", "cylinders"},
     "mesh": {"file", "smooth", "transform"},
+    "spheres": {"file", "radius", "transform"},
 }
 OBJECT_KEYS = {"type", "material", "name", "transform"}
 # Groups and CSG: POV-Ray's union and its CSG words, with their operands in `objects`.
@@ -472,6 +474,56 @@ def mesh(o, base):
     return text
 
 
+PLY_TYPES = {"char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h", "int16": "h", "ushort": "H",
+             "uint16": "H", "int": "i", "int32": "i", "uint": "I", "uint32": "I", "float": "f", "float32": "f",
+             "double": "d", "float64": "d"}
+
+
+def read_ply_points(path):
+    """The vertex element's scalar properties of a PLY file, as one dict per point (ASCII or binary;
+    lists are refused: a point set has none)."""
+    data = open(path, "rb").read()
+    end = data.index(b"end_header") + len(b"end_header")
+    end = data.index(b"\n", end) + 1
+    fmt, elements = "ascii", []
+    for line in data[:end].decode().splitlines():
+        words = line.split()
+        if words[:1] == ["format"]:
+            fmt = words[1]
+        elif words[:1] == ["element"]:
+            elements.append((words[1], int(words[2]), []))
+        elif words[:1] == ["property"]:
+            if words[1] == "list":
+                sys.exit(f"toml_to_pov: point set {path}: list properties are not translated")
+            elements[-1][2].append((words[2], words[1]))
+    points, body = [], data[end:]
+    if fmt == "ascii":
+        numbers = iter(body.split())
+    else:
+        order = "<" if fmt == "binary_little_endian" else ">"
+        offset = 0
+    for name, count, props in elements:
+        for _ in range(count):
+            if fmt == "ascii":
+                values = [float(next(numbers)) for _ in props]
+            else:
+                layout = order + "".join(PLY_TYPES[t] for _, t in props)
+                values = struct.unpack_from(layout, body, offset)
+                offset += struct.calcsize(layout)
+            if name == "vertex":
+                points.append(dict(zip((n for n, _ in props), values)))
+    return points
+
+
+def sphere_set(o, base):
+    """POV-Ray's union of the point set's spheres (colours are not translated)."""
+    points = read_ply_points(os.path.join(base, o["file"]))
+    if points and "red" in points[0]:
+        sys.exit(f"toml_to_pov: point set {o['file']}: per-point colours are not translated")
+    return "union {\n" + "".join(
+        f"  sphere {{ {vec([p['x'], p['y'], p['z']])}, {p.get('radius', o.get('radius', 0)):.9g} }}\n" for p in points)
+
+
 def shape_body(o, base, torus_as, implicit_as, accuracy):
     t = o["type"]
     if t == "sphere":
@@ -509,6 +561,8 @@ def shape_body(o, base, torus_as, implicit_as, accuracy):
         return implicit(o, implicit_as, accuracy)
     if t == "mesh":
         return mesh(o, base)
+    if t == "spheres":
+        return sphere_set(o, base)
     if t == "superellipsoid":  # the same parameters and meaning
         return f"superellipsoid {{ <{o['e']:.9g}, {o['n']:.9g}>\n"
     if t == "blob":  # the same components; POV-Ray's cylinders have the same round ends

@@ -175,13 +175,14 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // A CSG object (shaders/shapes/csg.glsl): its leaves are the primitives [first_leaf, first_leaf +
 // leaf_count), stored after every primitive the tracer traverses; its program the CSG_* ops
 // csg_ops[first_op, first_op + op_count) (shapes.h).
-// A triangle mesh on the GPU (shapes/mesh.glsl), once however many objects place it (each
-// placement is a primitive whose data is the mesh's index): its tree (MESH_NODES, children and
-// triangle ranges as absolute indices) over its triangles (MESH_TRIANGLES, in leaf order), in
-// the file's coordinates; where placements take the file's own materials, each triangle's
-// (MESH_MATERIALS from first_material, in the same order; else NO_MAP).
+// A triangle mesh or a sphere set on the GPU (shapes/mesh.glsl, shapes/spheres.glsl), once
+// however many objects place it (each placement is a primitive whose data is its index): its tree
+// (MESH_NODES, children and element ranges as absolute indices; shapes/element_tree.glsl) over
+// its elements (MESH_TRIANGLES or SET_SPHERES, in leaf order), in the file's coordinates; where
+// placements take the file's own materials, each element's (MESH_MATERIALS from first_material,
+// in the same order; else NO_MAP).
 #define LANCER_ROWS_MeshInfo(VEC4, VEC4S, SCALARS, UVEC4S) \
-    SCALARS(uint, first_node, uint, first_triangle, uint, triangle_count, uint, first_material)
+    SCALARS(uint, first_node, uint, first_element, uint, element_count, uint, first_material)
 // A node of a mesh's tree: as the scene's BvhNode (a type of its own: each array has one).
 #define LANCER_ROWS_MeshNode(VEC4, VEC4S, SCALARS, UVEC4S) \
     VEC4(lo) /* xyz */                              \
@@ -191,6 +192,9 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // without texture coordinates has each vertex's barycentric corner, (0, 0), (1, 0), (0, 1).
 #define LANCER_ROWS_MeshTriangle(VEC4, VEC4S, SCALARS, UVEC4S) \
     VEC4(v0) VEC4(v1) VEC4(v2) VEC4(n0) VEC4(n1) VEC4(n2)
+
+// A sphere of a sphere set: (centre, radius), the file's floats.
+#define LANCER_ROWS_SetSphere(VEC4, VEC4S, SCALARS, UVEC4S) VEC4(sphere)
 
 #define LANCER_ROWS_CsgNode(VEC4, VEC4S, SCALARS, UVEC4S) \
     SCALARS(uint, first_leaf, uint, leaf_count, uint, first_op, uint, op_count)
@@ -394,6 +398,7 @@ LANCER_STRUCT(CsgNode)
 LANCER_STRUCT(MeshInfo)
 LANCER_STRUCT(MeshNode)
 LANCER_STRUCT(MeshTriangle)
+LANCER_STRUCT(SetSphere)
 LANCER_STRUCT(BvhNode)
 LANCER_STRUCT(Material)
 LANCER_STRUCT(TextureInfo)
@@ -453,7 +458,8 @@ LANCER_CONST RESOURCE_INT = 4;
     X(MESHES, 37, RESOURCE_ROWS, MeshInfo, meshes, mesh_at, "meshes")                                 \
     X(MESH_NODES, 38, RESOURCE_ROWS, MeshNode, mesh_nodes, mesh_node_at, "mesh tree nodes")            \
     X(MESH_TRIANGLES, 39, RESOURCE_ROWS, MeshTriangle, mesh_triangles, mesh_triangle_at, "mesh triangles") \
-    X(MESH_MATERIALS, 40, RESOURCE_UINT, uint, mesh_materials, mesh_material_at, "mesh triangles' materials") \
+    X(MESH_MATERIALS, 40, RESOURCE_UINT, uint, mesh_materials, mesh_material_at, "mesh triangles' and set spheres' materials") \
+    X(SET_SPHERES, 41, RESOURCE_ROWS, SetSphere, set_spheres, set_sphere_at, "sphere set spheres")     \
     X(GRIDS, 31, RESOURCE_ROWS, DirectionGrid, grids, grid_at, "direction grids")                        \
     X(GRID_CELLS, 32, RESOURCE_UINT, uint, grid_cells, grid_cell_at, "direction grid cells")             \
     X(GRID_ENTRIES, 33, RESOURCE_UINT, uint, grid_entries, grid_entry_at, "direction grid entries") /* pairs: primitive, float bits of its nearest distance */
@@ -541,6 +547,7 @@ LANCER_ASSERT_SIZE(CsgNode)
 LANCER_ASSERT_SIZE(MeshInfo)
 LANCER_ASSERT_SIZE(MeshNode)
 LANCER_ASSERT_SIZE(MeshTriangle)
+LANCER_ASSERT_SIZE(SetSphere)
 LANCER_ASSERT_SIZE(BvhNode)
 LANCER_ASSERT_SIZE(Material)
 LANCER_ASSERT_SIZE(TextureInfo)

@@ -15,7 +15,9 @@
 #include "shapes/cone.glsl"
 #include "shapes/torus.glsl"
 #include "shapes/box.glsl"
+#include "shapes/element_tree.glsl"
 #include "shapes/mesh.glsl"
+#include "shapes/spheres.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)
 #include "shapes/parametric.glsl"
@@ -440,10 +442,10 @@ bool closest_hit(Ray ray, float t_min, uint grid, out Hit hit) {
 }
 
 // The material at a hit on primitive `prim` with parameters uv (Hit.uv): its primitive's, or a
-// mesh triangle's own.
+// mesh triangle's or a set sphere's own.
 uint hit_material(uint prim, vec2 uv) {
     Primitive p = primitive_at(prim);
-    if (SCENE_HAS_MESH && p.type == SHAPE_MESH) return mesh_hit_material(p, uv);
+    if ((SCENE_HAS_MESH && p.type == SHAPE_MESH) || (SCENE_HAS_SPHERES && p.type == SHAPE_SPHERES)) return element_hit_material(p, uv);
     return p.material;
 }
 

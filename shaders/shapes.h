@@ -36,7 +36,8 @@
     X(CONE, cone, Cone, 8, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SOLID)                                    \
     X(TORUS, torus, Torus, 9, SHAPE_BOUNDED | SHAPE_CLOSED)                                              \
     X(CSG, csg, Csg, 10, SHAPE_BOUNDED)                                                                  \
-    X(MESH, mesh, Mesh, 11, SHAPE_BOUNDED)
+    X(MESH, mesh, Mesh, 11, SHAPE_BOUNDED)                                                               \
+    X(SPHERES, spheres, SphereSet, 12, SHAPE_BOUNDED)
 
 #ifdef __cplusplus
 #include <cstdint>

@@ -1,7 +1,9 @@
 #include "accel/bvh.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <array>
+#include <optional>
+#include <thread>
 
 namespace lancer {
 namespace {
@@ -14,118 +16,160 @@ constexpr int kSahDepth = 40;
 constexpr double kIntersectCost = 2.0;
 constexpr double kTraversalCost = 1.0;
 
+// A subtree of at least this many primitives may be built on a thread of its own.
+constexpr std::uint32_t kParallelRange = 1u << 15;
+constexpr int kMaxBins = 64;
+
+// A primitive's box and index, moved along as ranges are partitioned: each pass over a range
+// then reads memory in order, not through an index.
+struct PrimitiveRef {
+    Aabb box;
+    std::uint32_t index;
+};
+
 struct Builder {
-    std::span<const Aabb> boxes;
+    std::span<PrimitiveRef> refs;  // all of them; each builder owns the ranges it is given
     const BvhOptions& options;
-    Bvh bvh;
+    int thread_depth;  // subtrees above this depth may go to threads of their own
+    std::vector<BvhNode> nodes;
 
     Aabb bounds(std::uint32_t begin, std::uint32_t end) const {
         Aabb b;
-        for (std::uint32_t i = begin; i < end; ++i) b.extend(boxes[bvh.order[i]]);
+        for (std::uint32_t i = begin; i < end; ++i) b.extend(refs[i].box);
         return b;
     }
 
-    // Binned SAH over centroids: returns the split position in `order` (begin < mid < end), or
-    // `end` when keeping the range as one leaf is cheaper.
-    std::uint32_t split(std::uint32_t begin, std::uint32_t end, const Aabb& node_box, int depth) {
-        std::uint32_t n = end - begin;
+    struct Split {
+        std::uint32_t mid;  // begin < mid < end, or end: keep the range as one leaf
+        std::optional<std::array<Aabb, 2>> boxes;  // the halves' boxes, where the binning gave them
+    };
+
+    std::uint32_t median(std::uint32_t begin, std::uint32_t end, int axis) {
+        const std::uint32_t mid = begin + (end - begin) / 2;
+        std::nth_element(refs.begin() + begin, refs.begin() + mid, refs.begin() + end,
+                         [&](const PrimitiveRef& a, const PrimitiveRef& b) { return a.box.center()[axis] < b.box.center()[axis]; });
+        return mid;
+    }
+
+    // Binned SAH over centroids.
+    Split split(std::uint32_t begin, std::uint32_t end, const Aabb& node_box, int depth) {
+        const std::uint32_t n = end - begin;
+        if (n <= options.min_leaf_size) return {end, {}};
         Aabb centroids;
-        for (std::uint32_t i = begin; i < end; ++i) centroids.extend(boxes[bvh.order[i]].center());
-        glm::dvec3 extent = centroids.extent();
-        int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-        if (depth >= kSahDepth) {
-            if (n <= options.max_leaf_size) return end;
-            std::uint32_t mid = begin + n / 2;
-            std::nth_element(bvh.order.begin() + begin, bvh.order.begin() + mid, bvh.order.begin() + end,
-                             [&](std::uint32_t a, std::uint32_t b) {
-                                 return boxes[a].center()[axis] < boxes[b].center()[axis];
-                             });
-            return mid;
-        }
-        if (!(extent[axis] > 0.0)) {
-            // All centroids coincide: SAH cannot separate them; halve by count if too many.
-            return n > options.max_leaf_size ? begin + n / 2 : end;
-        }
-        const int bins = options.bins;
+        for (std::uint32_t i = begin; i < end; ++i) centroids.extend(refs[i].box.center());
+        const glm::dvec3 extent = centroids.extent();
+        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+        if (depth >= kSahDepth) return {n <= options.max_leaf_size ? end : median(begin, end, axis), {}};
+        // All centroids coincide: SAH cannot separate them; halve by count if too many.
+        if (!(extent[axis] > 0.0)) return {n > options.max_leaf_size ? begin + n / 2 : end, {}};
+        const int bins = std::clamp(options.bins, 2, kMaxBins);
         struct Bin {
             Aabb box;
             std::uint32_t count = 0;
         };
-        std::vector<Bin> bin(bins);
-        auto bin_of = [&](std::uint32_t prim) {
-            double c = boxes[prim].center()[axis];
-            int b = static_cast<int>(bins * (c - centroids.lo[axis]) / extent[axis]);
-            return std::clamp(b, 0, bins - 1);
+        std::array<Bin, kMaxBins> bin{};
+        const double lo = centroids.lo[axis], scale = bins / extent[axis];
+        auto bin_of = [&](const PrimitiveRef& r) {
+            return std::clamp(static_cast<int>(scale * (r.box.center()[axis] - lo)), 0, bins - 1);
         };
         for (std::uint32_t i = begin; i < end; ++i) {
-            Bin& b = bin[bin_of(bvh.order[i])];
-            b.box.extend(boxes[bvh.order[i]]);
+            Bin& b = bin[bin_of(refs[i])];
+            b.box.extend(refs[i].box);
             ++b.count;
         }
         // Sweep from the right, then from the left, to cost every split between bins.
-        std::vector<double> right_cost(bins, 0.0);
+        std::array<double, kMaxBins> right_cost{};
+        std::array<Aabb, kMaxBins> right_box{};
         Aabb right;
         std::uint32_t right_count = 0;
         for (int i = bins - 1; i > 0; --i) {
             right.extend(bin[i].box);
             right_count += bin[i].count;
             right_cost[i] = right.surface_area() * right_count;
+            right_box[i] = right;
         }
         double best = std::numeric_limits<double>::infinity();
         int best_bin = -1;
-        Aabb left;
+        Aabb left, best_left;
         std::uint32_t left_count = 0;
         for (int i = 0; i < bins - 1; ++i) {
             left.extend(bin[i].box);
             left_count += bin[i].count;
             if (left_count == 0 || left_count == n) continue;
-            double cost = left.surface_area() * left_count + right_cost[i + 1];
+            const double cost = left.surface_area() * left_count + right_cost[i + 1];
             if (cost < best) {
                 best = cost;
                 best_bin = i;
+                best_left = left;
             }
         }
-        double area = node_box.surface_area();
-        double leaf_cost = kIntersectCost * n;
-        double split_cost = kTraversalCost + (area > 0.0 ? kIntersectCost * best / area : leaf_cost);
-        if (best_bin < 0 || (split_cost >= leaf_cost && n <= options.max_leaf_size)) {
-            return n > options.max_leaf_size ? begin + n / 2 : end;
-        }
-        auto mid = std::partition(bvh.order.begin() + begin, bvh.order.begin() + end,
-                                  [&](std::uint32_t prim) { return bin_of(prim) <= best_bin; });
-        return static_cast<std::uint32_t>(mid - bvh.order.begin());
+        const double area = node_box.surface_area();
+        const double leaf_cost = kIntersectCost * n;
+        const double split_cost = kTraversalCost + (area > 0.0 ? kIntersectCost * best / area : leaf_cost);
+        if (best_bin < 0 || (split_cost >= leaf_cost && n <= options.max_leaf_size))
+            return {n > options.max_leaf_size ? begin + n / 2 : end, {}};
+        auto mid = std::partition(refs.begin() + begin, refs.begin() + end, [&](const PrimitiveRef& r) { return bin_of(r) <= best_bin; });
+        return {static_cast<std::uint32_t>(mid - refs.begin()), std::array<Aabb, 2>{best_left, right_box[best_bin + 1]}};
     }
 
-    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth) {
-        Aabb box = bounds(begin, end);
-        bvh.nodes[node].box = box;
-        std::uint32_t mid = end - begin > 1 ? split(begin, end, box, depth) : end;
-        if (mid == end || mid == begin) {
-            bvh.nodes[node].first = begin;
-            bvh.nodes[node].count = end - begin;
+    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, const Aabb& box, int depth) {
+        nodes[node].box = box;
+        const Split s = end - begin > 1 ? split(begin, end, box, depth) : Split{end, {}};
+        if (s.mid == end || s.mid == begin) {
+            nodes[node].first = begin;
+            nodes[node].count = end - begin;
             return;
         }
-        auto left = static_cast<std::uint32_t>(bvh.nodes.size());
-        bvh.nodes.emplace_back();
-        bvh.nodes.emplace_back();
-        bvh.nodes[node].first = left;
-        bvh.nodes[node].count = 0;
-        build(left, begin, mid, depth + 1);
-        build(left + 1, mid, end, depth + 1);
+        const auto left = static_cast<std::uint32_t>(nodes.size());
+        nodes.emplace_back();
+        nodes.emplace_back();
+        nodes[node].first = left;
+        nodes[node].count = 0;
+        const Aabb left_box = s.boxes ? (*s.boxes)[0] : bounds(begin, s.mid);
+        const Aabb right_box = s.boxes ? (*s.boxes)[1] : bounds(s.mid, end);
+        if (depth >= thread_depth || std::min(s.mid - begin, end - s.mid) < kParallelRange) {
+            build(left, begin, s.mid, left_box, depth + 1);
+            build(left + 1, s.mid, end, right_box, depth + 1);
+            return;
+        }
+        // The right subtree on a thread of its own, into its own nodes, then appended to ours.
+        Builder right{refs, options, thread_depth, {}};
+        right.nodes.reserve(2 * (end - s.mid) / std::max(1u, options.min_leaf_size));
+        right.nodes.emplace_back();
+        std::thread worker([&] { right.build(0, s.mid, end, right_box, depth + 1); });
+        build(left, begin, s.mid, left_box, depth + 1);
+        worker.join();
+        const auto base = static_cast<std::uint32_t>(nodes.size()) - 1;  // right's node k >= 1 goes to base + k
+        auto moved = [&](BvhNode n) {
+            if (!n.leaf()) n.first += base;
+            return n;
+        };
+        nodes[left + 1] = moved(right.nodes[0]);
+        for (std::size_t k = 1; k < right.nodes.size(); ++k) nodes.push_back(moved(right.nodes[k]));
     }
 };
 
 }  // namespace
 
 Bvh build_bvh(std::span<const Aabb> boxes, const BvhOptions& options) {
-    Builder b{boxes, options, {}};
     if (boxes.empty()) return {};
-    b.bvh.order.resize(boxes.size());
-    std::iota(b.bvh.order.begin(), b.bvh.order.end(), 0u);
-    b.bvh.nodes.reserve(2 * boxes.size());
-    b.bvh.nodes.emplace_back();
-    b.build(0, 0, static_cast<std::uint32_t>(boxes.size()), 0);
-    return std::move(b.bvh);
+    std::vector<PrimitiveRef> refs(boxes.size());
+    Aabb all;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        refs[i] = {boxes[i], static_cast<std::uint32_t>(i)};
+        all.extend(boxes[i]);
+    }
+    int thread_depth = 0;
+    for (unsigned threads = std::thread::hardware_concurrency(); threads > 1; threads /= 2) ++thread_depth;
+    Builder b{refs, options, thread_depth, {}};
+    b.nodes.reserve(2 * boxes.size() / std::max(1u, options.min_leaf_size));
+    b.nodes.emplace_back();
+    b.build(0, 0, static_cast<std::uint32_t>(boxes.size()), all, 0);
+    Bvh bvh;
+    bvh.nodes = std::move(b.nodes);
+    bvh.order.resize(refs.size());
+    for (std::size_t i = 0; i < refs.size(); ++i) bvh.order[i] = refs[i].index;
+    return bvh;
 }
 
 const Bvh& BvhCache::build(std::span<const Aabb> boxes) {

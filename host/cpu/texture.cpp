@@ -28,6 +28,7 @@ glm::dvec2 texture_uv(const Hit& hit, const dvec3& world_point) {
         glm::dvec2 operator()(const Cone& c) const { return cpu::texture_uv(c, p, int(hit.uv.x)); }  // uv.x: the part
         glm::dvec2 operator()(const Torus& o) const { return cpu::texture_uv(o, p); }
         glm::dvec2 operator()(const Mesh& m) const { return cpu::mesh_texture_uv(m, hit.part, hit.uv); }  // uv: barycentric
+        glm::dvec2 operator()(const SphereSet& s) const { return cpu::sphere_set_texture_uv(s, hit.part, p); }
         glm::dvec2 operator()(const Csg&) const { return hit.uv; }  // never: a CSG hit is its leaf's (Tracer)
         glm::dvec2 operator()(const BezierSurface&) const { return hit.uv; }     // each patch's (u, v)
         glm::dvec2 operator()(const ParametricObject& o) const {                  // the domain, as [0, 1]^2

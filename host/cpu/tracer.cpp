@@ -137,8 +137,7 @@ bool Tracer::closest_hit(const Ray& ray, double t_min, double t_max, Hit& hit) c
             // A CSG hit is its leaf's: shaded with the leaf's material, placement and texture.
             const auto* csg = std::get_if<Csg>(&object.shape);
             hit.object = csg ? &csg->leaves[static_cast<std::size_t>(h->part)] : &object;
-            const auto* mesh = std::get_if<Mesh>(&object.shape);
-            hit.material = mesh ? mesh->material_of(static_cast<std::size_t>(h->part), object.material) : hit.object->material;
+            hit.material = csg ? hit.object->material : part_material(object, h->part);
         }
         return true;
     });

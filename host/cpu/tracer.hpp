@@ -23,7 +23,7 @@ struct Hit {
     glm::dvec2 uv;
     int part;  // patch index within a Bezier surface, triangle of a mesh, else -1
     const Object* object;
-    std::uint32_t material;  // the object's, or a mesh triangle's own (Mesh::material_of)
+    std::uint32_t material;  // the object's, or a mesh triangle's or a set sphere's own (part_material)
 };
 
 class Tracer {

@@ -40,76 +40,7 @@ void compute_normals(TriangleMesh& m) {
     }
 }
 
-// Tree building: median split of the triangles' centres along the widest axis of their spread,
-// down to leaves of at most this many triangles.
-constexpr std::uint32_t kLeafSize = 4;
-
-struct TreeBuilder {
-    const TriangleMesh& mesh;
-    std::vector<dvec3> centres;
-    MeshTree& tree;
-
-    void bound(MeshTree::Node& node) const {
-        node.lo = dvec3(std::numeric_limits<double>::infinity());
-        node.hi = -node.lo;
-        for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
-            for (std::uint32_t v : mesh.triangles[tree.order[i]]) {
-                node.lo = glm::min(node.lo, mesh.positions[v]);
-                node.hi = glm::max(node.hi, mesh.positions[v]);
-            }
-    }
-
-    // Splits node `index` (whose range is [first, first + count)) until its leaves are small.
-    void split(std::uint32_t index) {
-        std::vector<std::uint32_t> pending{index};
-        while (!pending.empty()) {
-            const std::uint32_t n = pending.back();
-            pending.pop_back();
-            MeshTree::Node node = tree.nodes[n];
-            if (node.count <= kLeafSize) continue;
-            dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-            for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                lo = glm::min(lo, centres[tree.order[i]]);
-                hi = glm::max(hi, centres[tree.order[i]]);
-            }
-            const dvec3 spread = hi - lo;
-            const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
-            const std::uint32_t half = node.count / 2;
-            auto begin = tree.order.begin() + node.first;
-            std::nth_element(begin, begin + half, begin + node.count,
-                             [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
-            const auto left = static_cast<std::uint32_t>(tree.nodes.size());
-            MeshTree::Node l{{}, {}, node.first, half}, r{{}, {}, node.first + half, node.count - half};
-            bound(l);
-            bound(r);
-            tree.nodes.push_back(l);
-            tree.nodes.push_back(r);
-            tree.nodes[n].first = left;
-            tree.nodes[n].count = 0;
-            pending.push_back(left);
-            pending.push_back(left + 1);
-        }
-    }
-};
-
 }  // namespace
-
-MeshTree build_mesh_tree(const TriangleMesh& mesh) {
-    MeshTree tree;
-    if (mesh.triangles.empty()) return tree;
-    tree.order.resize(mesh.triangles.size());
-    std::iota(tree.order.begin(), tree.order.end(), 0u);
-    TreeBuilder builder{mesh, {}, tree};
-    builder.centres.reserve(mesh.triangles.size());
-    for (const auto& t : mesh.triangles)
-        builder.centres.push_back((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0);
-    tree.nodes.reserve(2 * mesh.triangles.size() / kLeafSize + 1);
-    MeshTree::Node root{{}, {}, 0, static_cast<std::uint32_t>(mesh.triangles.size())};
-    builder.bound(root);
-    tree.nodes.push_back(root);
-    builder.split(0);
-    return tree;
-}
 
 MeshGeometry::MeshGeometry(TriangleMesh mesh) : mesh_(std::move(mesh)) {
     file_normals_ = !mesh_.normals.empty();
@@ -123,8 +54,16 @@ MeshGeometry::MeshGeometry(TriangleMesh mesh) : mesh_(std::move(mesh)) {
         }
 }
 
-const MeshTree& MeshGeometry::tree() const {
-    std::call_once(tree_built_, [this] { tree_ = build_mesh_tree(mesh_); });
+const ElementTree& MeshGeometry::tree() const {
+    std::call_once(tree_built_, [this] {
+        tree_ = build_element_tree(static_cast<std::uint32_t>(mesh_.triangles.size()),
+                                   [this](std::uint32_t i, dvec3& lo, dvec3& hi) {
+                                       for (std::uint32_t v : mesh_.triangles[i]) {
+                                           lo = glm::min(lo, mesh_.positions[v]);
+                                           hi = glm::max(hi, mesh_.positions[v]);
+                                       }
+                                   });
+    });
     return tree_;
 }
 

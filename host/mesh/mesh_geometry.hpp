@@ -7,23 +7,10 @@
 #include <mutex>
 #include <vector>
 
+#include "mesh/element_tree.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace lancer {
-
-// A bounding volume hierarchy over a mesh's triangles, in double: each node's box holds its
-// triangles exactly; children of an inner node are adjacent (first, first + 1); a leaf refers to
-// `count` entries of `order` from `first`.
-struct MeshTree {
-    struct Node {
-        glm::dvec3 lo, hi;
-        std::uint32_t first = 0;
-        std::uint32_t count = 0;  // 0: inner node
-    };
-    std::vector<Node> nodes;           // nodes[0] is the root
-    std::vector<std::uint32_t> order;  // triangle indices in leaf order
-};
-MeshTree build_mesh_tree(const TriangleMesh& mesh);
 
 class MeshGeometry {
 public:
@@ -37,14 +24,14 @@ public:
     glm::dvec3 lo() const { return lo_; }
     glm::dvec3 hi() const { return hi_; }
     // Built on the first call (thread-safe): only the CPU reference traverses it.
-    const MeshTree& tree() const;
+    const ElementTree& tree() const;
 
 private:
     TriangleMesh mesh_;
     bool file_normals_ = false;
     glm::dvec3 lo_{0.0}, hi_{0.0};
     mutable std::once_flag tree_built_;
-    mutable MeshTree tree_;
+    mutable ElementTree tree_;
 };
 
 }  // namespace lancer

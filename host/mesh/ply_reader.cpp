@@ -48,7 +48,7 @@ public:
             else if (e.name == "face" || e.name == "tristrips")
                 read_polygons(e, e.name == "tristrips");
             else
-                skip_element(e);
+                values_.skip_element(e);
         }
         values_.require_end();
         require_triangles(mesh_, file_);
@@ -121,7 +121,7 @@ private:
             for (std::size_t i = 0; i < e.properties.size(); ++i) {
                 const PlyProperty& p = e.properties[i];
                 if (p.is_list) {
-                    skip_list(p);
+                    values_.skip_list(p);
                     continue;
                 }
                 if (layout.slot[i] == kNoSlot) {
@@ -161,20 +161,6 @@ private:
         return *found;
     }
 
-    std::uint64_t list_length(const PlyProperty& p) {
-        const std::int64_t n = values_.integer(p.count_type);
-        if (n < 0) values_.fail(fmt::format("a list of {} entries", n));
-        // Each entry takes at least a byte: a length beyond the bytes left is a truncated file, not a reason to wait.
-        if (static_cast<std::uint64_t>(n) > values_.bytes_left())
-            values_.fail(fmt::format("a list of {} entries, but only {} bytes are left in the file", n, values_.bytes_left()));
-        return static_cast<std::uint64_t>(n);
-    }
-
-    void skip_list(const PlyProperty& p) {
-        const std::uint64_t n = list_length(p);
-        for (std::uint64_t i = 0; i < n; ++i) values_.skip(p.type);
-    }
-
     std::uint32_t vertex_index(std::int64_t i, const char* element, std::uint64_t k) {
         if (i < 0 || static_cast<std::uint64_t>(i) >= mesh_.positions.size())
             values_.fail(fmt::format("{} {}: vertex index {} is out of range: the file has {} vertices", element, k, i,
@@ -192,10 +178,10 @@ private:
             values_.set_item(e.name, k, e.count);
             for (const PlyProperty& p : e.properties) {
                 if (&p != &indices) {
-                    p.is_list ? skip_list(p) : values_.skip(p.type);
+                    p.is_list ? values_.skip_list(p) : values_.skip(p.type);
                     continue;
                 }
-                const std::uint64_t n = list_length(p);
+                const std::uint64_t n = values_.list_length(p);
                 if (strips) {
                     read_strip(p, n, k, fan);
                     continue;
@@ -229,14 +215,6 @@ private:
             odd = !odd;
             last[0] = last[1];
             last[1] = c;
-        }
-    }
-
-    void skip_element(const PlyElement& e) {
-        if (e.properties.empty()) return;  // its items hold nothing: any count of them takes no bytes, and no time
-        for (std::uint64_t k = 0; k < e.count; ++k) {
-            values_.set_item(e.name, k, e.count);
-            for (const PlyProperty& p : e.properties) p.is_list ? skip_list(p) : values_.skip(p.type);
         }
     }
 

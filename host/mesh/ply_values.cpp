@@ -126,6 +126,27 @@ void PlyValues::skip(PlyScalar t) {
         next_token();
 }
 
+std::uint64_t PlyValues::list_length(const PlyProperty& p) {
+    const std::int64_t n = integer(p.count_type);
+    if (n < 0) fail(fmt::format("a list of {} entries", n));
+    if (static_cast<std::uint64_t>(n) > bytes_left())
+        fail(fmt::format("a list of {} entries, but only {} bytes are left in the file", n, bytes_left()));
+    return static_cast<std::uint64_t>(n);
+}
+
+void PlyValues::skip_list(const PlyProperty& p) {
+    const std::uint64_t n = list_length(p);
+    for (std::uint64_t i = 0; i < n; ++i) skip(p.type);
+}
+
+void PlyValues::skip_element(const PlyElement& e) {
+    if (e.properties.empty()) return;  // its items hold nothing: any count of them takes no bytes, and no time
+    for (std::uint64_t k = 0; k < e.count; ++k) {
+        set_item(e.name, k, e.count);
+        for (const PlyProperty& p : e.properties) p.is_list ? skip_list(p) : skip(p.type);
+    }
+}
+
 void PlyValues::require_end() {
     if (binary()) {
         value_start_ = pos_;

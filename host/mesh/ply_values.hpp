@@ -22,6 +22,12 @@ public:
     // A whole number (list lengths, indices); for ascii the text must be one.
     std::int64_t integer(PlyScalar t);
     void skip(PlyScalar t);
+    // A list's length, refused where negative or longer than the bytes left (each entry takes at
+    // least one: a length beyond them is a truncated file, not a reason to wait).
+    std::uint64_t list_length(const PlyProperty& p);
+    void skip_list(const PlyProperty& p);
+    // Every item of an element the reader does not use.
+    void skip_element(const PlyElement& e);
 
     bool binary() const { return format_ != PlyFormat::ascii; }
     std::size_t bytes_left() const { return bytes_.size() - pos_; }

@@ -35,6 +35,7 @@ void translate(Shape& shape, const dvec3& offset) {
         void operator()(Mesh&) const {  // moved by its placement (place() always gives it one)
             throw std::logic_error("a mesh is moved by its placement, not by its shape");
         }
+        void operator()(SphereSet&) const { throw std::logic_error("a sphere set is moved by its placement, not by its shape"); }
         void operator()(Csg& c) const {
             for (Object& leaf : c.leaves) translate(leaf, d);
             c.lo += d;

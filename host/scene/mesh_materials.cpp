@@ -36,4 +36,18 @@ std::vector<std::uint32_t> add_mesh_materials(const MeshGeometry& geometry, cons
     return indices;
 }
 
+std::vector<std::uint32_t> add_point_colors(const SphereCloud& cloud, std::uint32_t base, const TableReader& t, Scene& scene) {
+    std::vector<std::uint32_t> indices;
+    for (const dvec3& color : cloud.palette()) {
+        Material m = scene.materials.at(base);
+        m.color = color;
+        m.checker.reset();
+        if (scene.materials.size() >= static_cast<std::size_t>(limits::kMaxMaterials))
+            t.fail("file", fmt::format("too many materials with the point sets' colours (the limit is {})", limits::kMaxMaterials));
+        indices.push_back(static_cast<std::uint32_t>(scene.materials.size()));
+        scene.materials.push_back(std::move(m));
+    }
+    return indices;
+}
+
 }  // namespace lancer

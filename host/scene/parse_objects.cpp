@@ -75,7 +75,9 @@ struct SurfaceTotals {
     int operations = 0;
     long long patches = 0;
     long long triangles = 0;
+    long long set_spheres = 0;
     std::set<const MeshGeometry*> meshes;  // counted once however often placed
+    std::set<const SphereCloud*> clouds;
 
     void before(TableReader& t, const std::optional<std::string>& type) {
         if (type == "parametric" && ++parametric > limits::kMaxParametricSurfaces)
@@ -102,6 +104,11 @@ struct SurfaceTotals {
             (triangles += static_cast<long long>(mesh->geometry->mesh().triangles.size())) > limits::kMaxMeshTriangles)
             t.fail("file", fmt::format("too many mesh triangles: {} so far in the scene's mesh files (the limit is {})",
                                        triangles, limits::kMaxMeshTriangles));
+        const auto* set = std::get_if<SphereSet>(&o.shape);
+        if (set && clouds.insert(set->cloud.get()).second &&
+            (set_spheres += static_cast<long long>(set->cloud->spheres().size())) > limits::kMaxSetSpheres)
+            t.fail("file", fmt::format("too many spheres in sphere sets: {} so far in the scene's point sets (the limit is {})",
+                                       set_spheres, limits::kMaxSetSpheres));
         const auto* b = std::get_if<BezierSurface>(&o.shape);
         if (b && (patches += static_cast<long long>(b->patches.size())) > limits::kMaxPatches)
             t.fail("type", fmt::format("too many Bezier patches: {} so far (the limit is {} per scene)", patches,
@@ -129,7 +136,9 @@ struct ObjectReading {
     std::uint32_t default_material;
     const toml::table* declared = nullptr;
     std::map<const MeshGeometry*, std::vector<std::uint32_t>> mesh_materials;  // each file's, added once
-    std::set<std::string> mesh_files;  // in scene.dependencies once, however often placed  // [declare.NAME]: objects declared once, placed by `type = "object"`
+    // A point set's colours as materials, for each material its objects have (added once).
+    std::map<std::pair<const SphereCloud*, std::uint32_t>, std::vector<std::uint32_t>> set_materials;
+    std::set<std::string> mesh_files;  // in scene.dependencies once, however often placed
 
     // POV-Ray's object { Name ... }: the object declared as [declare.NAME] that `of` names, read
     // again for this placement (its `transform` after the declared one's; its `material` for the
@@ -247,6 +256,11 @@ struct ObjectReading {
                 if (added) found->second = add_mesh_materials(*mesh->geometry, t, scene, textures);
                 mesh->part_materials = found->second;
             }
+            if (auto* set = std::get_if<SphereSet>(&o.shape); set && !set->cloud->palette().empty()) {
+                auto [found, added] = set_materials.try_emplace({set->cloud.get(), o.material});
+                if (added) found->second = add_point_colors(*set->cloud, o.material, t, scene);
+                set->part_materials = found->second;
+            }
             if (depth > 0) o.name = group;
             totals.after(t, o);
             if (scene.objects.size() > static_cast<std::size_t>(limits::kMaxObjects))
@@ -259,6 +273,8 @@ struct ObjectReading {
                 scene.dependencies.push_back(m->source_file);
                 for (const std::string& file : m->geometry->mesh().companion_files) scene.dependencies.push_back(file);
             }
+            if (auto* s = std::get_if<SphereSet>(&o.shape); s && mesh_files.insert(s->source_file).second)
+                scene.dependencies.push_back(s->source_file);
             return;
         }
         if (depth == kMaxGroupDepth) t.fail("type", fmt::format("groups nest at most {} deep", kMaxGroupDepth));

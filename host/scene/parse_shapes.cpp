@@ -171,6 +171,7 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"cone", read_cone},
         {"torus", read_torus},
         {"mesh", read_mesh},
+        {"spheres", read_spheres},
     };
     return readers;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // Readers of the surface object types: "bezier" (patch sets, inline or from a patch file),
-// "parametric" (equations in u and v), "implicit" (an equation f(x, y, z) = 0) and "mesh" (a
-// triangle mesh file). Registered in
+// "parametric" (equations in u and v), "implicit" (an equation f(x, y, z) = 0), "mesh" (a
+// triangle mesh file) and "spheres" (a PLY point set). Registered in
 // shape_readers() (parse_shapes.cpp).
 #include <functional>
 #include <string>
@@ -17,6 +17,7 @@ Shape read_bezier(TableReader& t, const glm::dmat4& to_world);
 Shape read_parametric(TableReader& t, const glm::dmat4& to_world);
 Shape read_implicit(TableReader& t, const glm::dmat4& to_world);
 Shape read_mesh(TableReader& t, const glm::dmat4& to_world);  // parse_mesh.cpp
+Shape read_spheres(TableReader& t, const glm::dmat4& to_world);  // parse_spheres.cpp: a sphere set
 // POV-Ray's superellipsoid and blob, as the implicit surfaces they are (parse_implicit_solids.cpp).
 Shape read_superellipsoid(TableReader& t, const glm::dmat4& to_world);
 Shape read_blob(TableReader& t, const glm::dmat4& to_world);

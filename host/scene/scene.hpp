@@ -17,6 +17,7 @@
 #include "image/tone.hpp"
 #include "optics/metals.hpp"
 #include "mesh/mesh_geometry.hpp"
+#include "mesh/sphere_cloud.hpp"
 #include "scene/material_maps.hpp"
 #include "shapes.h"  // the shape registry
 #include "surface/bezier_patch.hpp"
@@ -314,6 +315,23 @@ struct Mesh {
     }
 };
 
+// POV-Ray users' many spheres (docs/scene-format.md, "Sphere sets"): a PLY point set's spheres,
+// in its own coordinates, shared by every object placed from the same file, traced through its
+// own tree as a mesh's triangles are. Always placed, as a mesh. Each sphere's (u, v) is a
+// sphere's, about its centre along the set's axes.
+struct SphereSet {
+    std::shared_ptr<const SphereCloud> cloud;
+    std::string source_file;
+    // Where the file has colours: the scene material of each palette colour (the object's, its
+    // colour the point's); else empty.
+    std::vector<std::uint32_t> part_materials;
+
+    std::uint32_t material_of(std::size_t sphere, std::uint32_t object_material) const {
+        if (part_materials.empty()) return object_material;
+        return part_materials[cloud->colors()[sphere]];
+    }
+};
+
 struct Object;
 
 // Constructive solid geometry: POV-Ray's intersection, difference and merge (docs/scene-format.md,
@@ -328,7 +346,8 @@ struct Csg {
     dvec3 lo{0.0}, hi{0.0};  // the world box the combination lies in
 };
 
-using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus, Csg, Mesh>;
+using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus, Csg, Mesh,
+                           SphereSet>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \
@@ -361,6 +380,14 @@ struct Object {
     SourceLocation where;        // the [[object]] table, for messages
     std::string name;            // optional, for [animation] to refer to it
 };
+
+// The material of a hit on `o` whose SurfaceHit::part is `part`: a mesh triangle's or a sphere
+// set's sphere's own where the file's apply, else the object's.
+inline std::uint32_t part_material(const Object& o, int part) {
+    if (const auto* m = std::get_if<Mesh>(&o.shape)) return m->material_of(static_cast<std::size_t>(part), o.material);
+    if (const auto* s = std::get_if<SphereSet>(&o.shape)) return s->material_of(static_cast<std::size_t>(part), o.material);
+    return o.material;
+}
 
 // Calls visit(object) for each object and, after a CSG object, for each of its leaves: the
 // order the GPU packs them in (the generated surface functions are numbered in it).

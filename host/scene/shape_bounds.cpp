@@ -49,6 +49,7 @@ struct BoundsOf {
     }
     std::optional<Aabb> operator()(const Csg& c) const { return Aabb{c.lo, c.hi}; }
     std::optional<Aabb> operator()(const Mesh& m) const { return Aabb{m.geometry->lo(), m.geometry->hi()}; }  // the file's
+    std::optional<Aabb> operator()(const SphereSet& s) const { return Aabb{s.cloud->lo(), s.cloud->hi()}; }
     std::optional<Aabb> operator()(const ParametricObject& p) const { return Aabb{p.bounds_lo, p.bounds_hi}; }
     std::optional<Aabb> operator()(const ImplicitObject& o) const {
         Aabb b;

@@ -9,15 +9,13 @@
 // inside), never neither. uv.x = which triangle of the mesh (a whole number: exact in float
 // below 2^24, limits.hpp's kMaxMeshTriangles), for the normal, the shading and the texture.
 
-const int MESH_STACK_SIZE = 64;  // host/accel/bvh.cpp bounds a tree's depth by 60
-
 // The ray sheared so that it runs along +z from the origin (the paper's kx, ky, kz and S).
 struct ShearedRay {
     ivec3 k;
     vec3 s;
 };
 
-ShearedRay shear(vec3 d) {
+void shear_axes(vec3 d, out ivec3 k, out vec3 s) {
     vec3 ad = abs(d);
     int kz = ad.x >= ad.y && ad.x >= ad.z ? 0 : (ad.y >= ad.z ? 1 : 2);
     int kx = kz == 2 ? 0 : kz + 1;
@@ -27,7 +25,8 @@ ShearedRay shear(vec3 d) {
         kx = ky;
         ky = swap;
     }
-    return ShearedRay(ivec3(kx, ky, kz), vec3(d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]));
+    k = ivec3(kx, ky, kz);
+    s = vec3(d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]);
 }
 
 // Triangle (a, b, c) relative to the ray's origin: its t in (t_min, t_max), or -1.
@@ -47,71 +46,22 @@ float triangle_hit(ShearedRay r, vec3 a, vec3 b, vec3 c, float t_min, float t_ma
     return t > t_min && t < t_max ? t : -1.0;
 }
 
+float mesh_element_hit(uint triangle, vec3 origin, ivec3 k, vec3 s, float t_min, float t_max) {
+    MeshTriangle tr = mesh_triangle_at(triangle);
+    return triangle_hit(ShearedRay(k, s), tr.v0.xyz - origin, tr.v1.xyz - origin, tr.v2.xyz - origin, t_min, t_max);
+}
+
 bool mesh_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     MeshInfo info = mesh_at(p.data);
-    vec3 inv_dir = safe_inverse(ray.dir);
-    ShearedRay r = shear(ray.dir);
     float best = t_max;
-    uint best_triangle = NO_PRIMITIVE;
-    uint stack[MESH_STACK_SIZE];
-    float stack_t[MESH_STACK_SIZE];
-    int sp = 0;
-    uint node = info.first_node;
-    if (box_entry(mesh_node_at(node).lo.xyz, mesh_node_at(node).hi.xyz, ray.origin, inv_dir, best) == INFINITY) return false;
-    for (;;) {
-        MeshNode n = mesh_node_at(node);
-        if (n.count > 0u) {
-            for (uint i = n.first; i < n.first + n.count; ++i) {
-                MeshTriangle tr = mesh_triangle_at(i);
-                float t = triangle_hit(r, tr.v0.xyz - ray.origin, tr.v1.xyz - ray.origin, tr.v2.xyz - ray.origin, t_min, best);
-                if (t >= 0.0) {
-                    best = t;
-                    best_triangle = i;
-                }
-            }
-        } else {
-            uint near_child = n.first, far_child = n.first + 1u;
-            MeshNode a = mesh_node_at(near_child), b = mesh_node_at(far_child);
-            float t_near = box_entry(a.lo.xyz, a.hi.xyz, ray.origin, inv_dir, best);
-            float t_far = box_entry(b.lo.xyz, b.hi.xyz, ray.origin, inv_dir, best);
-            if (t_far < t_near) {
-                uint c = near_child; near_child = far_child; far_child = c;
-                float f = t_near; t_near = t_far; t_far = f;
-            }
-            if (t_near != INFINITY) {
-                if (t_far != INFINITY && sp < MESH_STACK_SIZE) {
-                    stack[sp] = far_child;
-                    stack_t[sp] = t_far;
-                    ++sp;
-                }
-                node = near_child;
-                continue;
-            }
-        }
-        // The next subtree that may still hold something nearer than the best hit.
-        bool found = false;
-        while (sp > 0) {
-            --sp;
-            if (stack_t[sp] <= best) {
-                node = stack[sp];
-                found = true;
-                break;
-            }
-        }
-        if (!found) break;
-    }
-    if (best_triangle == NO_PRIMITIVE) return false;
+    uint triangle = element_tree_nearest(info, false, ray, t_min, best);
+    if (triangle == NO_PRIMITIVE) return false;
     t_hit = best;
-    uv = vec2(float(best_triangle - info.first_triangle), 0.0);
+    uv = vec2(float(triangle - info.first_element), 0.0);
     return true;
 }
 
-// The material of a hit on p: a triangle's own where the placement takes the file's.
-uint mesh_hit_material(Primitive p, vec2 uv) {
-    return p.p0.y != 0.0 ? mesh_material_at(mesh_at(p.data).first_material + uint(uv.x)) : p.material;
-}
-
-MeshTriangle mesh_hit_triangle(Primitive p, vec2 uv) { return mesh_triangle_at(mesh_at(p.data).first_triangle + uint(uv.x)); }
+MeshTriangle mesh_hit_triangle(Primitive p, vec2 uv) { return mesh_triangle_at(mesh_at(p.data).first_element + uint(uv.x)); }
 
 // The hit's error (Hit.error): t comes from the vertices relative to the origin, each rounded a
 // few times in the shear and the edge functions, as a plane's from its point (plane.glsl), so

@@ -14,6 +14,19 @@
 // (e', n' across the ray) hold only terms of the picture's scale, or squares.
 vec3 sphere_near_normal(Primitive s) { return vec3(s.p1.w, s.p2.w, uintBitsToFloat(s.data)); }
 
+// The nearer root in (t_min, t_max) of t^2 + 2 b t + c = 0 whose discriminant b^2 - c the caller
+// computed without cancellation (disc >= 0), if any (CSG asks from t_min = -infinity). The larger
+// root in magnitude, q, comes without cancellation; the other is c / q.
+bool sphere_root(float b, float disc, float c, float t_min, float t_max, out float t) {
+    float q = -b - sign(b) * sqrt(disc);
+    if (b == 0.0) q = -sqrt(disc);
+    float t0 = c / q;
+    float t1 = q;
+    if (t0 > t1) { float tmp = t0; t0 = t1; t1 = tmp; }
+    t = t0 > t_min && t0 < t_max ? t0 : t1;
+    return t > t_min && t < t_max;
+}
+
 bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     float r = s.p0.w;
     float b, disc, c;
@@ -31,15 +44,7 @@ bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float 
         disc = r * r - dot(perp, perp);
         c = dot(f, f) - r * r;
     }
-    if (disc < 0.0) return false;
-    float q = -b - sign(b) * sqrt(disc);
-    if (b == 0.0) q = -sqrt(disc);
-    float t0 = c / q;
-    float t1 = q;
-    if (t0 > t1) { float tmp = t0; t0 = t1; t1 = tmp; }
-    if (t0 > t_min && t0 < t_max) { t_hit = t0; return true; }
-    if (t1 > t_min && t1 < t_max) { t_hit = t1; return true; }
-    return false;
+    return disc >= 0.0 && sphere_root(b, disc, c, t_min, t_max, t_hit);
 }
 
 // The hit's error (Hit.error): f = o - c and perp carry rounding errors of a few |f| ulps; near
@@ -63,12 +68,16 @@ vec3 sphere_hit_normal(Primitive s, Ray ray, float t, vec3 p, vec2 uv, inout flo
     return sphere_direction(s, p);
 }
 
+// Longitude and latitude of the unit direction d in the sphere's own frame.
+vec2 sphere_direction_uv(vec3 d) {
+    const float PI = 3.14159265358979;
+    float longitude = (d.x == 0.0 && d.z == 0.0) ? 0.0 : atan(d.x, -d.z);  // atan(0, 0) is undefined in GLSL
+    return vec2(0.5 + longitude / (2.0 * PI), 0.5 + asin(clamp(d.y, -1.0, 1.0)) / PI);
+}
+
 // Texture (u, v): longitude and latitude in the sphere's own frame (p1, p2 = its x and y axes):
 // u = 0.5 faces -z and grows toward +x; v runs from 0 at the south pole to 1 at the north pole.
 vec2 sphere_texture_uv(Primitive s, Hit hit, vec3 p) {
     vec3 w = sphere_direction(s, p);
-    vec3 d = vec3(dot(w, s.p1.xyz), dot(w, s.p2.xyz), dot(w, cross(s.p1.xyz, s.p2.xyz)));
-    const float PI = 3.14159265358979;
-    float longitude = (d.x == 0.0 && d.z == 0.0) ? 0.0 : atan(d.x, -d.z);  // atan(0, 0) is undefined in GLSL
-    return vec2(0.5 + longitude / (2.0 * PI), 0.5 + asin(clamp(d.y, -1.0, 1.0)) / PI);
+    return sphere_direction_uv(vec3(dot(w, s.p1.xyz), dot(w, s.p2.xyz), dot(w, cross(s.p1.xyz, s.p2.xyz))));
 }

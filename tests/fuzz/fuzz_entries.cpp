@@ -159,6 +159,16 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     for (const dvec3& p : m.positions) require_finite(p, when, ": mesh vertex");
                     require(m.normals.size() == m.positions.size(), when, ": mesh normals");
                     require(o.placement && o.placement->shape_in_object_space, when, ": a mesh is always placed");
+                } else if constexpr (std::is_same_v<T, SphereSet>) {
+                    require(s.cloud && !s.cloud->spheres().empty(), when, ": sphere set without spheres");
+                    for (const glm::vec4& e : s.cloud->spheres())
+                        require(std::isfinite(e.x) && std::isfinite(e.y) && std::isfinite(e.z) && e.w > 0.0f && std::isfinite(e.w),
+                                when, ": set sphere");
+                    require(s.cloud->colors().empty() || s.cloud->colors().size() == s.cloud->spheres().size(), when,
+                            ": set colours");
+                    for (std::uint32_t c : s.cloud->colors()) require(c < s.cloud->palette().size(), when, ": set colour index");
+                    for (std::uint32_t m : s.part_materials) require(m < scene.materials.size(), when, ": set material");
+                    require(o.placement && o.placement->shape_in_object_space, when, ": a sphere set is always placed");
                 } else if constexpr (std::is_same_v<T, Box>) {
                     require_finite(s.min, when, ": box");
                     require_finite(s.max, when, ": box");
@@ -603,7 +613,31 @@ void obj_entry(const std::uint8_t* data, std::size_t size) {
     check_mesh_invariants(mesh);
 }
 
+namespace {
+
+// The same bytes as a sphere set's point set too (with and without the object's radius): every
+// sphere finite with a radius above 0, every colour in the palette.
+void check_point_set(std::string_view text, std::optional<double> radius) {
+    std::shared_ptr<const SphereCloud> cloud;
+    try {
+        cloud = mesh::read_sphere_ply(text, "fuzz.ply", radius);
+    } catch (const UserError&) {
+        return;
+    }
+    require(!cloud->spheres().empty(), "ply points", ": no spheres");
+    for (const glm::vec4& e : cloud->spheres())
+        require(std::isfinite(e.x) && std::isfinite(e.y) && std::isfinite(e.z) && std::isfinite(e.w) && e.w > 0.0f, "ply points",
+                ": sphere");
+    require(cloud->palette().size() <= mesh::kMaxSphereColors, "ply points", ": palette");
+    require(cloud->colors().empty() || cloud->colors().size() == cloud->spheres().size(), "ply points", ": colours");
+    for (std::uint32_t c : cloud->colors()) require(c < cloud->palette().size(), "ply points", ": colour index");
+}
+
+}  // namespace
+
 void ply_entry(const std::uint8_t* data, std::size_t size) {
+    check_point_set(as_text(data, size), std::nullopt);
+    check_point_set(as_text(data, size), 0.5);
     TriangleMesh mesh;
     try {
         mesh = mesh::read_ply(as_text(data, size), "fuzz.ply");

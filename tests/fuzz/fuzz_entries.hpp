@@ -70,7 +70,9 @@ void check_mesh_invariants(const TriangleMesh& mesh);
 // mtllib gets (without it, an mtllib is a missing file); a texture exists when its name ends in .png.
 void obj_entry(const std::uint8_t* data, std::size_t size);
 
-// A PLY file (any of its three formats) -> TriangleMesh (mesh::read_ply).
+// A PLY file (any of its three formats) -> TriangleMesh (mesh::read_ply), and -> a sphere set's
+// points (mesh::read_sphere_ply), with and without the object's radius: finite spheres of radius
+// above 0, colours within their palette.
 void ply_entry(const std::uint8_t* data, std::size_t size);
 
 }  // namespace lancer::fuzz

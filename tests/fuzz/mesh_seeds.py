@@ -78,6 +78,12 @@ PLY = {
         + b"".join(struct.pack("<dhB", *p) for p in [(0, 0, 0), (1, 0, 0), (0, 1, 0)]) + struct.pack("<B3i", 3, 0, 1, 2),
     "no-end-header": b"ply\nformat ascii 1.0\nelement vertex 3\n",
     "header-only": b"ply\nformat ascii 1.0\nend_header\n",
+    "points-ascii": b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        b"property float radius\nproperty uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n"
+        b"0 0 0 0.5 255 0 0\n1 0 0 0.25 0 255 0\n0 1 0 1 255 0 0\n",
+    "points-le": b"ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+        b"property float radius\nproperty float red\nproperty float green\nproperty float blue\nend_header\n"
+        + b"".join(struct.pack("<7f", *p) for p in [(0, 0, 0, 0.5, 1, 0, 0), (1, 2, 3, 0.1, 0.2, 0.4, 0.6)]),
     "face-first": b"ply\nformat ascii 1.0\nelement face 0\nproperty list uchar int vertex_indices\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\nend_header\n",
 }
 

@@ -180,6 +180,22 @@ Scene mesh(TriangleMesh triangles) {
     return scene;
 }
 
+// A sphere set: spheres of several sizes apart (the judge measures a hit's distance from the
+// surface along its normal, which at the crease of two overlapping spheres would meet the other
+// one; overlaps are the unit and render tests'), turned, scaled and moved by its placement.
+Scene sphere_set() {
+    Scene scene = analytic("type = \"sphere\"\ncenter = [0, 0, 0]\nradius = 1\n");
+    std::vector<glm::vec4> spheres{{0, 0, 0, 0.6f}, {2.1f, 0.1f, 0, 0.35f}, {-1.9f, 0.4f, 0.3f, 0.45f}, {0.1f, -2.2f, 0.2f, 0.3f},
+                                   {0.2f, 0.3f, -2.0f, 0.25f}, {-0.3f, 2.0f, -0.5f, 0.2f}, {0.1f, 0.2f, 2.3f, 0.15f}};
+    SphereSet set;
+    set.cloud = std::make_shared<const SphereCloud>(std::move(spheres), std::vector<std::uint32_t>{}, std::vector<dvec3>{});
+    const glm::dmat4 to_world = glm::translate(glm::dmat4(1.0), dvec3(0.2, 1.0, 0.3)) *
+                                glm::rotate(glm::dmat4(1.0), 0.6, dvec3(1, 2, 3)) * glm::scale(glm::dmat4(1.0), dvec3(1.3));
+    scene.objects[0].shape = set;
+    scene.objects[0].placement = Placement{to_world, glm::inverse(to_world), true};
+    return scene;
+}
+
 std::vector<surface::BezierPatch> rational_sphere(const dvec3& centre, double radius) {
     std::vector<surface::BezierPatch> out;
     for (int k : {0, 3})
@@ -254,6 +270,8 @@ const Case kCases[] = {
     {"mesh_icosphere", [] { return mesh(test::icosphere(3)); }},
     {"mesh_icosphere_far_from_origin", [] { return moved_far(mesh(test::icosphere(3))); }},
     {"mesh_icosahedron", [] { return mesh(test::icosphere(0)); }},
+    {"sphere_set", [] { return sphere_set(); }},
+    {"sphere_set_far_from_origin", [] { return moved_far(sphere_set()); }},
     {"bezier_teapot", [] { return only_object(test::shipped_scene("teapot", 64, 36), 1); }},
     {"bezier_teapot_far_from_origin", [] { return moved_far(only_object(test::shipped_scene("teapot", 64, 36), 1)); }},
     {"bezier_rational_sphere", [] { return bezier(rational_sphere(dvec3(0.2, 1.0, 0.3), 1.2)); }},

@@ -150,7 +150,7 @@ TEST(Mesh, VertexNormalsAreComputedWhereTheFileHasNone) {
 
 TEST(Mesh, TheTreeHoldsEveryTriangleOnce) {
     const MeshGeometry g(test::uv_sphere(40));
-    const MeshTree& tree = g.tree();
+    const ElementTree& tree = g.tree();
     std::vector<int> seen(g.mesh().triangles.size(), 0);
     for (const auto& node : tree.nodes) {
         if (node.count == 0) continue;

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "cpu/shapes/element_walk.hpp"
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
@@ -63,25 +64,6 @@ std::optional<TriangleHit> hit_triangle(const ShearedRay& r, const dvec3& v0, co
     return TriangleHit{t, v / det, w / det};
 }
 
-// Entry distance of the ray into [lo, hi] before t_max, or nothing. The boxes hold their
-// triangles exactly, so a ray through a vertex passes through a box's corner, where the slabs'
-// distances are equal but rounded apart: each exit is widened by its rounding (pbrt's
-// 1 + 2 gamma(3), Ize 2013), so that such a ray is not turned away.
-std::optional<double> box_entry(const dvec3& lo, const dvec3& hi, const Ray& r, const dvec3& inv, double t_max) {
-    constexpr double kWiden = 1.0 + 8.0 * 0x1p-53;
-    double enter = 0.0, leave = t_max;
-    for (int k = 0; k < 3; ++k) {
-        double t0 = (lo[k] - r.origin[k]) * inv[k], t1 = (hi[k] - r.origin[k]) * inv[k];
-        if (std::isnan(t0) || std::isnan(t1)) continue;  // on a slab plane, parallel to it
-        if (t0 > t1) std::swap(t0, t1);
-        t1 *= kWiden;
-        enter = std::max(enter, t0);
-        leave = std::min(leave, t1);
-    }
-    if (enter > leave) return std::nullopt;
-    return enter;
-}
-
 dvec3 object_normal(const TriangleMesh& mesh, std::uint32_t triangle) {
     const auto& t = mesh.triangles[triangle];
     return glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
@@ -91,43 +73,18 @@ dvec3 object_normal(const TriangleMesh& mesh, std::uint32_t triangle) {
 
 std::optional<SurfaceHit> intersect(const Mesh& m, const Ray& ray, double t_min, double t_max) {
     const TriangleMesh& mesh = m.geometry->mesh();
-    const MeshTree& tree = m.geometry->tree();
-    if (tree.nodes.empty()) return std::nullopt;
     const ShearedRay sheared(ray);
-    const dvec3 inv = 1.0 / ray.dir;
     std::optional<TriangleHit> best;
     std::uint32_t best_triangle = 0;
-    std::array<std::pair<std::uint32_t, double>, 64> stack;
-    std::size_t depth = 0;
-    if (box_entry(tree.nodes[0].lo, tree.nodes[0].hi, ray, inv, t_max)) stack[depth++] = {0u, 0.0};
-    while (depth > 0) {
-        auto [index, entry] = stack[--depth];
-        const double reach = best ? best->t : t_max;
-        if (entry > reach) continue;
-        const MeshTree::Node& node = tree.nodes[index];
-        if (node.count > 0) {
-            for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                const auto& tri = mesh.triangles[tree.order[i]];
-                auto h = hit_triangle(sheared, mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]], t_min,
-                                      best ? best->t : t_max);
-                if (h) {
-                    best = h;
-                    best_triangle = tree.order[i];
-                }
-            }
-            continue;
-        }
-        const MeshTree::Node &l = tree.nodes[node.first], &r = tree.nodes[node.first + 1];
-        auto near_t = box_entry(l.lo, l.hi, ray, inv, reach), far_t = box_entry(r.lo, r.hi, ray, inv, reach);
-        std::uint32_t near_child = node.first, far_child = node.first + 1;
-        if (far_t && (!near_t || *far_t < *near_t)) {
-            std::swap(near_t, far_t);
-            std::swap(near_child, far_child);
-        }
-        // The median split's depth is about log2(triangles / 4) + 1: far below the stack's size.
-        if (far_t) stack[depth++] = {far_child, *far_t};
-        if (near_t) stack[depth++] = {near_child, *near_t};
-    }
+    double reach = t_max;
+    walk_element_tree(m.geometry->tree(), ray, reach, [&](std::uint32_t i, double& reach) {
+        const auto& tri = mesh.triangles[i];
+        auto h = hit_triangle(sheared, mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]], t_min, reach);
+        if (!h) return;
+        best = h;
+        best_triangle = i;
+        reach = h->t;
+    });
     if (!best) return std::nullopt;
     return SurfaceHit{best->t, glm::normalize(object_normal(mesh, best_triangle)), {best->b1, best->b2},
                       static_cast<int>(best_triangle)};

@@ -23,6 +23,8 @@ struct SurfaceHit {
 };
 
 std::optional<SurfaceHit> intersect(const Sphere& s, const Ray& ray, double t_min, double t_max);
+// The nearest t in (t_min, t_max) where a ray with a unit direction meets the sphere (sphere.cpp).
+std::optional<double> sphere_hit_t(const dvec3& center, double radius, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Plane& p, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Rectangle& r, const Ray& ray, double t_min, double t_max);
 std::optional<SurfaceHit> intersect(const Box& b, const Ray& ray, double t_min, double t_max);
@@ -78,6 +80,13 @@ std::optional<SurfaceHit> intersect(const Mesh& m, const Ray& ray, double t_min,
 dvec3 mesh_shading_normal(const Mesh& m, const Placement& placed, int triangle, const glm::dvec2& b, const dvec3& facing);
 // The file's (u, v) interpolated; without any, the barycentric weights themselves.
 glm::dvec2 mesh_texture_uv(const Mesh& m, int triangle, const glm::dvec2& b);
+
+// Sphere sets (spheres.cpp), in the set's coordinates (its placement carries rays there): the
+// nearest sphere through the set's own tree (SphereCloud::tree); `part` the sphere. The ray's
+// direction must be unit.
+std::optional<SurfaceHit> intersect(const SphereSet& s, const Ray& ray, double t_min, double t_max);
+// Sphere `sphere`'s texture (u, v) at p (the set's coordinates): a sphere's, in the set's axes.
+glm::dvec2 sphere_set_texture_uv(const SphereSet& s, int sphere, const dvec3& p);
 
 // The ray in which an object's shape is tested (placed.cpp): the world's, or its object's where
 // the shape keeps its own coordinates, with a unit direction; t there is k times the world's.

@@ -134,12 +134,26 @@ struct PrimitivePacker {
         MeshInfo& info = out.meshes[found->second];
         if (!m.part_materials.empty() && info.first_material == NO_MAP) {
             info.first_material = static_cast<uint>(out.mesh_materials.size());
-            for (std::uint32_t k = 0; k < info.triangle_count; ++k)
-                out.mesh_materials.push_back(m.material_of(out.mesh_order[info.first_triangle + k], material));
+            for (std::uint32_t k = 0; k < info.element_count; ++k)
+                out.mesh_materials.push_back(m.material_of(out.mesh_order[info.first_element + k], material));
         }
         add({SHAPE_MESH, material, found->second, object,
              vec4(m.smooth ? 1.0f : 0.0f, m.part_materials.empty() ? 0.0f : 1.0f, 0.0f, 0.0f), {}, {}},
             shape_bounds(m));
+    }
+    // The elements' tree, its leaves' ranges from `first_element` (the elements themselves are
+    // the caller's to store, in bvh.order).
+    MeshInfo pack_element_tree(const Bvh& bvh, uint first_element, uint count) {
+        const MeshInfo info{static_cast<uint>(out.mesh_nodes.size()), first_element, count, NO_MAP};
+        out.mesh_nodes.reserve(out.mesh_nodes.size() + bvh.nodes.size());
+        for (const lancer::BvhNode& n : bvh.nodes) {
+            MeshNode g{};
+            pack_box(n.box, g.lo, g.hi);
+            g.first = n.count > 0 ? info.first_element + n.first : info.first_node + n.first;
+            g.count = n.count;
+            out.mesh_nodes.push_back(g);
+        }
+        return info;
     }
     void pack_mesh(const MeshGeometry& geometry) {
         const TriangleMesh& mesh = geometry.mesh();
@@ -151,15 +165,7 @@ struct PrimitivePacker {
             boxes.push_back(box);
         }
         const Bvh bvh = build_bvh(boxes);
-        const MeshInfo info{static_cast<uint>(out.mesh_nodes.size()), static_cast<uint>(out.mesh_triangles.size()),
-                            static_cast<uint>(mesh.triangles.size()), NO_MAP};
-        for (const lancer::BvhNode& n : bvh.nodes) {
-            MeshNode g{};
-            pack_box(n.box, g.lo, g.hi);
-            g.first = n.count > 0 ? info.first_triangle + n.first : info.first_node + n.first;
-            g.count = n.count;
-            out.mesh_nodes.push_back(g);
-        }
+        const MeshInfo info = pack_element_tree(bvh, static_cast<uint>(out.mesh_triangles.size()), static_cast<uint>(mesh.triangles.size()));
         constexpr glm::dvec2 kCorners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
         out.mesh_triangles.reserve(out.mesh_triangles.size() + mesh.triangles.size());
         for (std::uint32_t index : bvh.order) {
@@ -176,6 +182,37 @@ struct PrimitivePacker {
             out.mesh_triangles.push_back(tr);
         }
         out.meshes.push_back(info);
+    }
+    // As a mesh: one primitive per placement, p0.y = 1 where it takes the file's colours; the set
+    // itself once, its spheres in its own BVH's leaf order.
+    void operator()(const SphereSet& s) {
+        const auto [found, added] = out.mesh_indices.try_emplace(s.cloud.get(), static_cast<uint>(out.meshes.size()));
+        if (added) pack_sphere_set(*s.cloud);
+        MeshInfo& info = out.meshes[found->second];
+        if (!s.part_materials.empty() && info.first_material == NO_MAP) {
+            info.first_material = static_cast<uint>(out.mesh_materials.size());
+            for (std::uint32_t k = 0; k < info.element_count; ++k)
+                out.mesh_materials.push_back(s.material_of(out.set_order[info.first_element + k], material));
+        }
+        add({SHAPE_SPHERES, material, found->second, object, vec4(0.0f, s.part_materials.empty() ? 0.0f : 1.0f, 0.0f, 0.0f), {}, {}},
+            shape_bounds(s));
+    }
+    void pack_sphere_set(const SphereCloud& cloud) {
+        const auto& spheres = cloud.spheres();
+        std::vector<Aabb> boxes;
+        boxes.reserve(spheres.size());
+        for (const glm::vec4& e : spheres) boxes.push_back(Aabb{dvec3(e) - double(e.w), dvec3(e) + double(e.w)});
+        // Leaves of up to 4 whatever the SAH says: half the nodes, and faster on lavapipe (a sphere's
+        // test costs about a box's; docs/performance.md).
+        const Bvh bvh = build_bvh(boxes, BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
+        boxes = {};
+        out.meshes.push_back(pack_element_tree(bvh, static_cast<uint>(out.set_spheres.size()), static_cast<uint>(spheres.size())));
+        out.set_spheres.reserve(out.set_spheres.size() + spheres.size());
+        out.set_order.reserve(out.set_order.size() + spheres.size());
+        for (std::uint32_t index : bvh.order) {
+            out.set_order.push_back(index);
+            out.set_spheres.push_back(SetSphere{spheres[index]});
+        }
     }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 

@@ -46,10 +46,10 @@ struct PackedScene {
     std::vector<Primitive> csg_leaves;
     uint csg_leaf_frames = 0;
     std::size_t csg_leaf_count = 0;
-    // Each mesh's index in `meshes`: packed once however many objects place it; and for each of
-    // mesh_triangles, its triangle in the file.
-    std::map<const MeshGeometry*, uint> mesh_indices;
-    std::vector<std::uint32_t> mesh_order;
+    // Each mesh's and sphere set's index in `meshes`: packed once however many objects place it;
+    // and for each of mesh_triangles and set_spheres, its triangle or sphere in the file.
+    std::map<const void*, uint> mesh_indices;
+    std::vector<std::uint32_t> mesh_order, set_order;
     // The scene's shape families and shading features: scene_shapes, has_bvh, has_textures, ...
     // (output_hits and check_loop_limit are the renderer's to set).
     ShaderFeatures features;

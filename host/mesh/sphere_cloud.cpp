@@ -1,0 +1,161 @@
+#include "mesh/sphere_cloud.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <unordered_map>
+
+#include <fmt/format.h>
+#include <glm/common.hpp>
+
+#include "core/error.hpp"
+#include "image/image.hpp"
+#include "mesh/mesh_assembly.hpp"
+#include "mesh/ply_header.hpp"
+#include "mesh/ply_values.hpp"
+
+namespace lancer {
+
+SphereCloud::SphereCloud(std::vector<glm::vec4> spheres, std::vector<std::uint32_t> colors, std::vector<glm::dvec3> palette)
+    : spheres_(std::move(spheres)), colors_(std::move(colors)), palette_(std::move(palette)) {
+    lo_ = glm::dvec3(std::numeric_limits<double>::infinity());
+    hi_ = -lo_;
+    for (const glm::vec4& s : spheres_) {
+        lo_ = glm::min(lo_, glm::dvec3(s) - double(s.w));
+        hi_ = glm::max(hi_, glm::dvec3(s) + double(s.w));
+    }
+}
+
+const ElementTree& SphereCloud::tree() const {
+    std::call_once(tree_built_, [this] {
+        tree_ = build_element_tree(static_cast<std::uint32_t>(spheres_.size()),
+                                   [this](std::uint32_t i, glm::dvec3& lo, glm::dvec3& hi) {
+                                       const glm::vec4& s = spheres_[i];
+                                       lo = glm::min(lo, glm::dvec3(s) - double(s.w));
+                                       hi = glm::max(hi, glm::dvec3(s) + double(s.w));
+                                   });
+    });
+    return tree_;
+}
+
+namespace mesh {
+namespace {
+
+constexpr int kNone = -1;
+
+int find_scalar(const PlyElement& e, std::string_view name) {
+    for (std::size_t i = 0; i < e.properties.size(); ++i)
+        if (e.properties[i].name == name && !e.properties[i].is_list) return static_cast<int>(i);
+    return kNone;
+}
+
+struct ColorKey {
+    std::size_t operator()(const std::array<double, 3>& c) const {
+        std::uint64_t bits[3];
+        std::memcpy(bits, c.data(), sizeof bits);
+        return std::hash<std::uint64_t>()(bits[0] * 0x9E3779B97F4A7C15ull ^ bits[1] * 0xC2B2AE3D27D4EB4Full ^ bits[2]);
+    }
+};
+
+class PointReader {
+public:
+    PointReader(std::string_view bytes, const std::string& name, std::optional<double> radius)
+        : file_(name), header_(read_ply_header(bytes, name)), values_(bytes, header_, name), radius_(radius) {}
+
+    std::shared_ptr<const SphereCloud> read() {
+        bool seen = false;
+        for (const PlyElement& e : header_.elements) {
+            if (e.name != "vertex" || seen) {
+                values_.skip_element(e);
+                continue;
+            }
+            seen = true;
+            read_points(e);
+        }
+        values_.require_end();
+        if (spheres_.empty()) throw SceneError({file_, 0, 0}, "the file has no points (a vertex element with x y z): a sphere set needs at least one");
+        return std::make_shared<const SphereCloud>(std::move(spheres_), std::move(colors_), std::move(palette_));
+    }
+
+private:
+    [[noreturn]] void fail_in_header(int line, const std::string& message) const { throw SceneError({file_, line, 0}, message); }
+
+    void read_points(const PlyElement& e) {
+        int slot[7];  // x y z radius red green blue
+        const char* names[7] = {"x", "y", "z", "radius", "red", "green", "blue"};
+        for (int i = 0; i < 7; ++i) slot[i] = find_scalar(e, names[i]);
+        for (int i = 0; i < 3; ++i)
+            if (slot[i] == kNone) fail_in_header(e.line, fmt::format("the vertex element has no scalar property {}", names[i]));
+        const bool own_radius = slot[3] != kNone;
+        if (own_radius == radius_.has_value())
+            throw UserError(own_radius ? "the file gives each point's radius (the vertex property `radius`): leave out the object's `radius`"
+                                       : "the file gives no radius (a vertex property `radius`): the object needs `radius`, every sphere's");
+        const int colors = (slot[4] != kNone) + (slot[5] != kNone) + (slot[6] != kNone);
+        if (colors != 0 && colors != 3) fail_in_header(e.line, "the vertex element has some of red green blue but not all three");
+        const bool bytes = colors == 3 && is_integer(e.properties[slot[4]].type);
+        if (colors == 3)
+            for (int i = 4; i < 7; ++i)
+                if (is_integer(e.properties[slot[i]].type) != bytes || (bytes && e.properties[slot[i]].type != PlyScalar::uint8))
+                    fail_in_header(e.properties[slot[i]].line, "red green blue must be all uchar (8-bit sRGB codes) or all floats (linear RGB)");
+        std::vector<int> role(e.properties.size(), kNone);
+        for (int i = 0; i < 7; ++i)
+            if (slot[i] != kNone) role[slot[i]] = i;
+        const std::uint64_t least = std::max<std::uint64_t>(1, e.properties.size());
+        spheres_.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(e.count, values_.bytes_left() / least + 1)));
+        std::unordered_map<std::array<double, 3>, std::uint32_t, ColorKey> palette_index;
+        double v[7] = {0.0, 0.0, 0.0, radius_.value_or(0.0), 0.0, 0.0, 0.0};
+        for (std::uint64_t k = 0; k < e.count; ++k) {
+            values_.set_item("vertex", k, e.count);
+            for (std::size_t i = 0; i < e.properties.size(); ++i) {
+                const PlyProperty& p = e.properties[i];
+                if (p.is_list) {
+                    values_.skip_list(p);
+                    continue;
+                }
+                if (role[i] == kNone) {
+                    values_.skip(p.type);
+                    continue;
+                }
+                v[role[i]] = values_.number(p.type);
+                if (role[i] < 4)
+                    if (auto problem = coordinate_problem(v[role[i]])) values_.fail(fmt::format("point {}: {} {}", k, p.name, *problem));
+            }
+            const glm::vec4 sphere{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]), static_cast<float>(v[3])};
+            if (!(sphere.w > 0.0f)) values_.fail(fmt::format("point {}: the radius {} is not above 0 (in float)", k, v[3]));
+            spheres_.push_back(sphere);
+            if (colors != 3) continue;
+            std::array<double, 3> c{v[4], v[5], v[6]};
+            for (double& x : c) {
+                if (bytes) x = decode_srgb8(static_cast<std::uint8_t>(x));
+                else if (!(x >= 0.0 && x <= 1e6)) values_.fail(fmt::format("point {}: a colour channel {} is not a number from 0 up", k, x));
+            }
+            auto [found, added] = palette_index.try_emplace(c, static_cast<std::uint32_t>(palette_.size()));
+            if (added) {
+                if (palette_.size() == kMaxSphereColors)
+                    values_.fail(fmt::format("point {}: more than {} distinct colours (each becomes a material): give the points fewer", k,
+                                             kMaxSphereColors));
+                palette_.emplace_back(c[0], c[1], c[2]);
+            }
+            colors_.push_back(found->second);
+        }
+    }
+
+    std::string file_;
+    PlyHeader header_;
+    PlyValues values_;
+    std::optional<double> radius_;
+    std::vector<glm::vec4> spheres_;
+    std::vector<std::uint32_t> colors_;
+    std::vector<glm::dvec3> palette_;
+};
+
+}  // namespace
+
+std::shared_ptr<const SphereCloud> read_sphere_ply(std::string_view bytes, const std::string& name, std::optional<double> radius) {
+    return PointReader(bytes, name, radius).read();
+}
+
+}  // namespace mesh
+}  // namespace lancer

@@ -1,0 +1,73 @@
+// The walk through the tree of a placed set of elements (MeshInfo): a mesh's triangles
+// (shapes/mesh.glsl) or a sphere set's spheres (shapes/spheres.glsl), nearest boxes first, in the
+// file's coordinates. Twin of host/cpu/shapes/element_walk.hpp (which walks its own tree).
+
+const int ELEMENT_STACK_SIZE = 64;  // host/accel/bvh.cpp bounds a tree's depth by 60
+
+// The element tests, each in its shape's file: t in (t_min, t_max), or -1. A triangle's takes the
+// ray sheared along +z (its axes k, its factors s: shapes/mesh.glsl's ShearedRay).
+void shear_axes(vec3 d, out ivec3 k, out vec3 s);
+float mesh_element_hit(uint triangle, vec3 origin, ivec3 k, vec3 s, float t_min, float t_max);
+float spheres_element_hit(uint sphere, Ray ray, float t_min, float t_max);
+
+// The nearest element hit in (t_min, best), best lowered to it; NO_PRIMITIVE if none.
+uint element_tree_nearest(MeshInfo info, bool spheres, Ray ray, float t_min, inout float best) {
+    vec3 inv_dir = safe_inverse(ray.dir);
+    ivec3 k = ivec3(0);
+    vec3 s = vec3(0.0);
+    if (!spheres) shear_axes(ray.dir, k, s);
+    uint best_element = NO_PRIMITIVE;
+    uint stack[ELEMENT_STACK_SIZE];
+    float stack_t[ELEMENT_STACK_SIZE];
+    int sp = 0;
+    uint node = info.first_node;
+    if (box_entry(mesh_node_at(node).lo.xyz, mesh_node_at(node).hi.xyz, ray.origin, inv_dir, best) == INFINITY) return NO_PRIMITIVE;
+    for (;;) {
+        MeshNode n = mesh_node_at(node);
+        if (n.count > 0u) {
+            for (uint i = n.first; i < n.first + n.count; ++i) {
+                float t = spheres ? spheres_element_hit(i, ray, t_min, best) : mesh_element_hit(i, ray.origin, k, s, t_min, best);
+                if (t >= 0.0) {
+                    best = t;
+                    best_element = i;
+                }
+            }
+        } else {
+            uint near_child = n.first, far_child = n.first + 1u;
+            MeshNode a = mesh_node_at(near_child), b = mesh_node_at(far_child);
+            float t_near = box_entry(a.lo.xyz, a.hi.xyz, ray.origin, inv_dir, best);
+            float t_far = box_entry(b.lo.xyz, b.hi.xyz, ray.origin, inv_dir, best);
+            if (t_far < t_near) {
+                uint c = near_child; near_child = far_child; far_child = c;
+                float f = t_near; t_near = t_far; t_far = f;
+            }
+            if (t_near != INFINITY) {
+                if (t_far != INFINITY && sp < ELEMENT_STACK_SIZE) {
+                    stack[sp] = far_child;
+                    stack_t[sp] = t_far;
+                    ++sp;
+                }
+                node = near_child;
+                continue;
+            }
+        }
+        // The next subtree that may still hold something nearer than the best hit.
+        bool found = false;
+        while (sp > 0) {
+            --sp;
+            if (stack_t[sp] <= best) {
+                node = stack[sp];
+                found = true;
+                break;
+            }
+        }
+        if (!found) break;
+    }
+    return best_element;
+}
+
+// The material of a hit on p (uv.x: which element of its set): the element's own where the
+// placement takes the file's (p.p0.y = 1), else the primitive's.
+uint element_hit_material(Primitive p, vec2 uv) {
+    return p.p0.y != 0.0 ? mesh_material_at(mesh_at(p.data).first_material + uint(uv.x)) : p.material;
+}
