@@ -30,7 +30,7 @@ out, n, r = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 data = open(f"{out}/points.ply", "rb").read()
 body = data[data.index(b"end_header\n") + 11:]
 with open(f"{out}/objects.toml", "w") as f:
-    f.write("".join('[[object]]\ntype = "sphere"\nmaterial = "ball"\ncenter = [%r, %r, %r]\nradius = %s\n\n'
+    f.write("".join('[[object]]\ntype = "sphere"\nmaterial = "ball"\ncenter = [%.9g, %.9g, %.9g]\nradius = %s\n\n'
                     % (*struct.unpack_from("<fff", body, 12 * i), r) for i in range(n)))
 PY
 python3 bench/toml_to_pov.py "$out/set.toml" > "$out/scene.pov"
@@ -38,7 +38,7 @@ python3 bench/toml_to_pov.py "$out/set.toml" > "$out/scene.pov"
 
 measure() {  # label, command...: "label wall_s rss_MiB"
   local label=$1; shift
-  /usr/bin/time -f "%e %M" -o "$out/time" "$@" >/dev/null 2>&1 || { echo "$label failed"; return; }
+  /usr/bin/time -f "%e %M" -o "$out/time" "$@" >/dev/null 2>"$out/err" || { echo "$label failed: $(grep -v 'Command exited' "$out/err" | tail -n 1)"; return; }
   read -r wall rss < "$out/time"
   printf '%-10s %8.2f s %8d MiB\n' "$label" "$wall" $((rss / 1024))
 }

@@ -5,6 +5,8 @@
 #include <optional>
 #include <thread>
 
+#include "core/huge_pages.hpp"
+
 namespace lancer {
 namespace {
 
@@ -33,15 +35,22 @@ struct Builder {
     int thread_depth;  // subtrees above this depth may go to threads of their own
     std::vector<BvhNode> nodes;
 
-    Aabb bounds(std::uint32_t begin, std::uint32_t end) const {
-        Aabb b;
-        for (std::uint32_t i = begin; i < end; ++i) b.extend(refs[i].box);
+    // A range's box, and the box of its boxes' centres.
+    struct Bounds {
+        Aabb box, centres;
+    };
+    Bounds bounds(std::uint32_t begin, std::uint32_t end) const {
+        Bounds b;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            b.box.extend(refs[i].box);
+            b.centres.extend(refs[i].box.center());
+        }
         return b;
     }
 
     struct Split {
         std::uint32_t mid;  // begin < mid < end, or end: keep the range as one leaf
-        std::optional<std::array<Aabb, 2>> boxes;  // the halves' boxes, where the binning gave them
+        std::optional<std::array<Bounds, 2>> halves;  // the halves' bounds, where the binning gave them
     };
 
     std::uint32_t median(std::uint32_t begin, std::uint32_t end, int axis) {
@@ -52,11 +61,10 @@ struct Builder {
     }
 
     // Binned SAH over centroids.
-    Split split(std::uint32_t begin, std::uint32_t end, const Aabb& node_box, int depth) {
+    Split split(std::uint32_t begin, std::uint32_t end, const Bounds& node, int depth) {
         const std::uint32_t n = end - begin;
         if (n <= options.min_leaf_size) return {end, {}};
-        Aabb centroids;
-        for (std::uint32_t i = begin; i < end; ++i) centroids.extend(refs[i].box.center());
+        const Aabb& centroids = node.centres;
         const glm::dvec3 extent = centroids.extent();
         const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
         if (depth >= kSahDepth) return {n <= options.max_leaf_size ? end : median(begin, end, axis), {}};
@@ -64,7 +72,7 @@ struct Builder {
         if (!(extent[axis] > 0.0)) return {n > options.max_leaf_size ? begin + n / 2 : end, {}};
         const int bins = std::clamp(options.bins, 2, kMaxBins);
         struct Bin {
-            Aabb box;
+            Aabb box, centres;
             std::uint32_t count = 0;
         };
         std::array<Bin, kMaxBins> bin{};
@@ -75,46 +83,49 @@ struct Builder {
         for (std::uint32_t i = begin; i < end; ++i) {
             Bin& b = bin[bin_of(refs[i])];
             b.box.extend(refs[i].box);
+            b.centres.extend(refs[i].box.center());
             ++b.count;
         }
         // Sweep from the right, then from the left, to cost every split between bins.
         std::array<double, kMaxBins> right_cost{};
-        std::array<Aabb, kMaxBins> right_box{};
-        Aabb right;
+        std::array<Bounds, kMaxBins> right_bounds{};
+        Bounds right;
         std::uint32_t right_count = 0;
         for (int i = bins - 1; i > 0; --i) {
-            right.extend(bin[i].box);
+            right.box.extend(bin[i].box);
+            right.centres.extend(bin[i].centres);
             right_count += bin[i].count;
-            right_cost[i] = right.surface_area() * right_count;
-            right_box[i] = right;
+            right_cost[i] = right.box.surface_area() * right_count;
+            right_bounds[i] = right;
         }
         double best = std::numeric_limits<double>::infinity();
         int best_bin = -1;
-        Aabb left, best_left;
+        Bounds left, best_left;
         std::uint32_t left_count = 0;
         for (int i = 0; i < bins - 1; ++i) {
-            left.extend(bin[i].box);
+            left.box.extend(bin[i].box);
+            left.centres.extend(bin[i].centres);
             left_count += bin[i].count;
             if (left_count == 0 || left_count == n) continue;
-            const double cost = left.surface_area() * left_count + right_cost[i + 1];
+            const double cost = left.box.surface_area() * left_count + right_cost[i + 1];
             if (cost < best) {
                 best = cost;
                 best_bin = i;
                 best_left = left;
             }
         }
-        const double area = node_box.surface_area();
+        const double area = node.box.surface_area();
         const double leaf_cost = kIntersectCost * n;
         const double split_cost = kTraversalCost + (area > 0.0 ? kIntersectCost * best / area : leaf_cost);
         if (best_bin < 0 || (split_cost >= leaf_cost && n <= options.max_leaf_size))
             return {n > options.max_leaf_size ? begin + n / 2 : end, {}};
         auto mid = std::partition(refs.begin() + begin, refs.begin() + end, [&](const PrimitiveRef& r) { return bin_of(r) <= best_bin; });
-        return {static_cast<std::uint32_t>(mid - refs.begin()), std::array<Aabb, 2>{best_left, right_box[best_bin + 1]}};
+        return {static_cast<std::uint32_t>(mid - refs.begin()), std::array<Bounds, 2>{best_left, right_bounds[best_bin + 1]}};
     }
 
-    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, const Aabb& box, int depth) {
-        nodes[node].box = box;
-        const Split s = end - begin > 1 ? split(begin, end, box, depth) : Split{end, {}};
+    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, const Bounds& bounds_of_range, int depth) {
+        nodes[node].box = bounds_of_range.box;
+        const Split s = end - begin > 1 ? split(begin, end, bounds_of_range, depth) : Split{end, {}};
         if (s.mid == end || s.mid == begin) {
             nodes[node].first = begin;
             nodes[node].count = end - begin;
@@ -125,8 +136,8 @@ struct Builder {
         nodes.emplace_back();
         nodes[node].first = left;
         nodes[node].count = 0;
-        const Aabb left_box = s.boxes ? (*s.boxes)[0] : bounds(begin, s.mid);
-        const Aabb right_box = s.boxes ? (*s.boxes)[1] : bounds(s.mid, end);
+        const Bounds left_box = s.halves ? (*s.halves)[0] : bounds(begin, s.mid);
+        const Bounds right_box = s.halves ? (*s.halves)[1] : bounds(s.mid, end);
         if (depth >= thread_depth || std::min(s.mid - begin, end - s.mid) < kParallelRange) {
             build(left, begin, s.mid, left_box, depth + 1);
             build(left + 1, s.mid, end, right_box, depth + 1);
@@ -134,7 +145,7 @@ struct Builder {
         }
         // The right subtree on a thread of its own, into its own nodes, then appended to ours.
         Builder right{refs, options, thread_depth, {}};
-        right.nodes.reserve(2 * (end - s.mid) / std::max(1u, options.min_leaf_size));
+        reserve_huge(right.nodes, 2 * (end - s.mid) / std::max(1u, options.min_leaf_size));
         right.nodes.emplace_back();
         std::thread worker([&] { right.build(0, s.mid, end, right_box, depth + 1); });
         build(left, begin, s.mid, left_box, depth + 1);
@@ -153,20 +164,18 @@ struct Builder {
 
 Bvh build_bvh(std::span<const Aabb> boxes, const BvhOptions& options) {
     if (boxes.empty()) return {};
-    std::vector<PrimitiveRef> refs(boxes.size());
-    Aabb all;
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        refs[i] = {boxes[i], static_cast<std::uint32_t>(i)};
-        all.extend(boxes[i]);
-    }
+    std::vector<PrimitiveRef> refs;
+    reserve_huge(refs, boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) refs.push_back({boxes[i], static_cast<std::uint32_t>(i)});
     int thread_depth = 0;
     for (unsigned threads = std::thread::hardware_concurrency(); threads > 1; threads /= 2) ++thread_depth;
     Builder b{refs, options, thread_depth, {}};
-    b.nodes.reserve(2 * boxes.size() / std::max(1u, options.min_leaf_size));
+    reserve_huge(b.nodes, 2 * boxes.size() / std::max(1u, options.min_leaf_size));
     b.nodes.emplace_back();
-    b.build(0, 0, static_cast<std::uint32_t>(boxes.size()), all, 0);
+    b.build(0, 0, static_cast<std::uint32_t>(boxes.size()), b.bounds(0, static_cast<std::uint32_t>(boxes.size())), 0);
     Bvh bvh;
     bvh.nodes = std::move(b.nodes);
+    reserve_huge(bvh.order, refs.size());
     bvh.order.resize(refs.size());
     for (std::size_t i = 0; i < refs.size(); ++i) bvh.order[i] = refs[i].index;
     return bvh;

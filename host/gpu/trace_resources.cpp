@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "gpu/vulkan/resource_kinds.hpp"
+#include "core/huge_pages.hpp"
 #include "gpu/vulkan/vk_check.hpp"
 
 namespace lancer::gpu {
@@ -77,6 +78,7 @@ void TraceResources::upload(const PackedScene& packed, const FrameParams& frame)
             last_upload_.bytes_skipped += bytes.size() - (end - first);
         }
         last_upload_.bytes_written += end - first;
+        reserve_huge(held, bytes.size());
         held.assign(bytes.begin(), bytes.end());
     }
     reserve(BINDING_FRAME, sizeof(frame));

@@ -6,6 +6,8 @@
 
 #include <glm/common.hpp>
 
+#include "core/huge_pages.hpp"
+
 namespace lancer {
 namespace {
 
@@ -62,16 +64,17 @@ struct TreeBuilder {
 ElementTree build_element_tree(std::uint32_t count, const ElementExtent& extend) {
     ElementTree tree;
     if (count == 0) return tree;
+    reserve_huge(tree.order, count);
     tree.order.resize(count);
     std::iota(tree.order.begin(), tree.order.end(), 0u);
     TreeBuilder builder{extend, {}, tree};
-    builder.centres.reserve(count);
+    reserve_huge(builder.centres, count);
     for (std::uint32_t i = 0; i < count; ++i) {
         dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
         extend(i, lo, hi);
         builder.centres.push_back(0.5 * (lo + hi));
     }
-    tree.nodes.reserve(2 * count / kLeafSize + 1);
+    reserve_huge(tree.nodes, 2 * count / kLeafSize + 1);
     ElementTree::Node root{{}, {}, 0, count};
     builder.bound(root);
     tree.nodes.push_back(root);

@@ -11,6 +11,7 @@
 #include <glm/common.hpp>
 
 #include "core/error.hpp"
+#include "core/huge_pages.hpp"
 #include "image/image.hpp"
 #include "mesh/mesh_assembly.hpp"
 #include "mesh/ply_header.hpp"
@@ -103,7 +104,7 @@ private:
         for (int i = 0; i < 7; ++i)
             if (slot[i] != kNone) role[slot[i]] = i;
         const std::uint64_t least = std::max<std::uint64_t>(1, e.properties.size());
-        spheres_.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(e.count, values_.bytes_left() / least + 1)));
+        reserve_huge(spheres_, static_cast<std::size_t>(std::min<std::uint64_t>(e.count, values_.bytes_left() / least + 1)));
         std::unordered_map<std::array<double, 3>, std::uint32_t, ColorKey> palette_index;
         double v[7] = {0.0, 0.0, 0.0, radius_.value_or(0.0), 0.0, 0.0, 0.0};
         for (std::uint64_t k = 0; k < e.count; ++k) {

@@ -11,6 +11,7 @@
 
 #include "scene/shape_bounds.hpp"
 #include "core/finite.hpp"
+#include "core/huge_pages.hpp"
 #include "gpu/packing/float_bounds.hpp"
 #include "accel/bvh.hpp"
 #include "surface/parametric_cells.hpp"
@@ -145,7 +146,7 @@ struct PrimitivePacker {
     // the caller's to store, in bvh.order).
     MeshInfo pack_element_tree(const Bvh& bvh, uint first_element, uint count) {
         const MeshInfo info{static_cast<uint>(out.mesh_nodes.size()), first_element, count, NO_MAP};
-        out.mesh_nodes.reserve(out.mesh_nodes.size() + bvh.nodes.size());
+        reserve_huge(out.mesh_nodes, out.mesh_nodes.size() + bvh.nodes.size());
         for (const lancer::BvhNode& n : bvh.nodes) {
             MeshNode g{};
             pack_box(n.box, g.lo, g.hi);
@@ -158,7 +159,7 @@ struct PrimitivePacker {
     void pack_mesh(const MeshGeometry& geometry) {
         const TriangleMesh& mesh = geometry.mesh();
         std::vector<Aabb> boxes;
-        boxes.reserve(mesh.triangles.size());
+        reserve_huge(boxes, mesh.triangles.size());
         for (const auto& t : mesh.triangles) {
             Aabb box;
             for (std::uint32_t v : t) box.extend(dvec3(glm::vec3(mesh.positions[v])));  // the float vertex
@@ -167,7 +168,8 @@ struct PrimitivePacker {
         const Bvh bvh = build_bvh(boxes);
         const MeshInfo info = pack_element_tree(bvh, static_cast<uint>(out.mesh_triangles.size()), static_cast<uint>(mesh.triangles.size()));
         constexpr glm::dvec2 kCorners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
-        out.mesh_triangles.reserve(out.mesh_triangles.size() + mesh.triangles.size());
+        reserve_huge(out.mesh_triangles, out.mesh_triangles.size() + mesh.triangles.size());
+        reserve_huge(out.mesh_order, out.mesh_order.size() + mesh.triangles.size());
         for (std::uint32_t index : bvh.order) {
             out.mesh_order.push_back(index);
             const auto& t = mesh.triangles[index];
@@ -200,15 +202,15 @@ struct PrimitivePacker {
     void pack_sphere_set(const SphereCloud& cloud) {
         const auto& spheres = cloud.spheres();
         std::vector<Aabb> boxes;
-        boxes.reserve(spheres.size());
+        reserve_huge(boxes, spheres.size());
         for (const glm::vec4& e : spheres) boxes.push_back(Aabb{dvec3(e) - double(e.w), dvec3(e) + double(e.w)});
         // Leaves of up to 4 whatever the SAH says: half the nodes, and faster on lavapipe (a sphere's
         // test costs about a box's; docs/performance.md).
         const Bvh bvh = build_bvh(boxes, BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
         boxes = {};
         out.meshes.push_back(pack_element_tree(bvh, static_cast<uint>(out.set_spheres.size()), static_cast<uint>(spheres.size())));
-        out.set_spheres.reserve(out.set_spheres.size() + spheres.size());
-        out.set_order.reserve(out.set_order.size() + spheres.size());
+        reserve_huge(out.set_spheres, out.set_spheres.size() + spheres.size());
+        reserve_huge(out.set_order, out.set_order.size() + spheres.size());
         for (std::uint32_t index : bvh.order) {
             out.set_order.push_back(index);
             out.set_spheres.push_back(SetSphere{spheres[index]});

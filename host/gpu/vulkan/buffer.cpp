@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "core/huge_pages.hpp"
 #include "gpu/vulkan/vk_check.hpp"
 
 namespace lancer::gpu {
@@ -39,6 +40,8 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
         VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
         VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
         VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+        // lavapipe's memory is the process's own: a large buffer is filled faster in huge pages.
+        if (size >= kHugeArrayBytes) advise_huge_pages(mapped_, size);
         context.set_name(VK_OBJECT_TYPE_BUFFER, buffer_, name);
         context.set_name(VK_OBJECT_TYPE_DEVICE_MEMORY, memory_, name);
         if (view_format != VK_FORMAT_UNDEFINED) {
