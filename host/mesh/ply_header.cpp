@@ -41,6 +41,13 @@ std::size_t size_of(PlyScalar t) {
     return 8;
 }
 
+int find_scalar(const PlyElement& e, std::initializer_list<std::string_view> names) {
+    for (std::size_t i = 0; i < e.properties.size(); ++i)
+        for (std::string_view n : names)
+            if (e.properties[i].name == n && !e.properties[i].is_list) return static_cast<int>(i);
+    return kNoProperty;
+}
+
 bool is_integer(PlyScalar t) { return t != PlyScalar::float32 && t != PlyScalar::float64; }
 
 const char* name_of(PlyScalar t) {

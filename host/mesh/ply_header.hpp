@@ -3,6 +3,7 @@
 // byte where the data begins. Errors are at file:line of the header.
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,6 +38,11 @@ struct PlyHeader {
     std::size_t data_offset = 0;  // the byte after end_header's line
     int data_line = 0;            // its line, for ascii
 };
+
+// The index in e.properties of the first scalar property with one of these names, or
+// kNoProperty.
+constexpr int kNoProperty = -1;
+int find_scalar(const PlyElement& e, std::initializer_list<std::string_view> names);
 
 PlyHeader read_ply_header(std::string_view bytes, const std::string& file);
 

@@ -17,20 +17,13 @@
 namespace lancer::mesh {
 namespace {
 
-constexpr int kNoSlot = -1;
+constexpr int kNoSlot = kNoProperty;
 
 // Where each vertex property goes: 0-2 position, 3-5 normal, 6-7 texture coordinate.
 struct VertexLayout {
     std::vector<int> slot;  // per property
     bool normals = false, uvs = false;
 };
-
-int find(const PlyElement& e, std::initializer_list<std::string_view> names) {
-    for (std::size_t i = 0; i < e.properties.size(); ++i)
-        for (std::string_view n : names)
-            if (e.properties[i].name == n && !e.properties[i].is_list) return static_cast<int>(i);
-    return kNoSlot;
-}
 
 class PlyReader {
 public:
@@ -84,19 +77,19 @@ private:
     VertexLayout vertex_layout(const PlyElement& e) const {
         VertexLayout layout;
         layout.slot.assign(e.properties.size(), kNoSlot);
-        const int xyz[3] = {find(e, {"x"}), find(e, {"y"}), find(e, {"z"})};
+        const int xyz[3] = {find_scalar(e, {"x"}), find_scalar(e, {"y"}), find_scalar(e, {"z"})};
         for (int i = 0; i < 3; ++i) {
             if (xyz[i] == kNoSlot)
                 fail_in_header(e.line, fmt::format("the vertex element has no scalar property {}", "xyz"[i]));
             layout.slot[xyz[i]] = i;
         }
-        const int n[3] = {find(e, {"nx"}), find(e, {"ny"}), find(e, {"nz"})};
+        const int n[3] = {find_scalar(e, {"nx"}), find_scalar(e, {"ny"}), find_scalar(e, {"nz"})};
         const int normals = (n[0] != kNoSlot) + (n[1] != kNoSlot) + (n[2] != kNoSlot);
         if (normals != 0 && normals != 3) fail_in_header(e.line, "the vertex element has some of nx ny nz but not all three");
         layout.normals = normals == 3;
         if (layout.normals)
             for (int i = 0; i < 3; ++i) layout.slot[n[i]] = 3 + i;
-        const int u = find(e, {"u", "s", "texture_u", "texture_s"}), v = find(e, {"v", "t", "texture_v", "texture_t"});
+        const int u = find_scalar(e, {"u", "s", "texture_u", "texture_s"}), v = find_scalar(e, {"v", "t", "texture_v", "texture_t"});
         if ((u == kNoSlot) != (v == kNoSlot))
             fail_in_header(e.line, "the vertex element has only one texture coordinate (u v, s t or texture_u texture_v)");
         layout.uvs = u != kNoSlot;

@@ -44,14 +44,6 @@ const ElementTree& SphereCloud::tree() const {
 namespace mesh {
 namespace {
 
-constexpr int kNone = -1;
-
-int find_scalar(const PlyElement& e, std::string_view name) {
-    for (std::size_t i = 0; i < e.properties.size(); ++i)
-        if (e.properties[i].name == name && !e.properties[i].is_list) return static_cast<int>(i);
-    return kNone;
-}
-
 struct ColorKey {
     std::size_t operator()(const std::array<double, 3>& c) const {
         std::uint64_t bits[3];
@@ -86,23 +78,23 @@ private:
     void read_points(const PlyElement& e) {
         int slot[7];  // x y z radius red green blue
         const char* names[7] = {"x", "y", "z", "radius", "red", "green", "blue"};
-        for (int i = 0; i < 7; ++i) slot[i] = find_scalar(e, names[i]);
+        for (int i = 0; i < 7; ++i) slot[i] = find_scalar(e, {names[i]});
         for (int i = 0; i < 3; ++i)
-            if (slot[i] == kNone) fail_in_header(e.line, fmt::format("the vertex element has no scalar property {}", names[i]));
-        const bool own_radius = slot[3] != kNone;
+            if (slot[i] == kNoProperty) fail_in_header(e.line, fmt::format("the vertex element has no scalar property {}", names[i]));
+        const bool own_radius = slot[3] != kNoProperty;
         if (own_radius == radius_.has_value())
             throw UserError(own_radius ? "the file gives each point's radius (the vertex property `radius`): leave out the object's `radius`"
                                        : "the file gives no radius (a vertex property `radius`): the object needs `radius`, every sphere's");
-        const int colors = (slot[4] != kNone) + (slot[5] != kNone) + (slot[6] != kNone);
+        const int colors = (slot[4] != kNoProperty) + (slot[5] != kNoProperty) + (slot[6] != kNoProperty);
         if (colors != 0 && colors != 3) fail_in_header(e.line, "the vertex element has some of red green blue but not all three");
         const bool bytes = colors == 3 && is_integer(e.properties[slot[4]].type);
         if (colors == 3)
             for (int i = 4; i < 7; ++i)
                 if (is_integer(e.properties[slot[i]].type) != bytes || (bytes && e.properties[slot[i]].type != PlyScalar::uint8))
                     fail_in_header(e.properties[slot[i]].line, "red green blue must be all uchar (8-bit sRGB codes) or all floats (linear RGB)");
-        std::vector<int> role(e.properties.size(), kNone);
+        std::vector<int> role(e.properties.size(), kNoProperty);
         for (int i = 0; i < 7; ++i)
-            if (slot[i] != kNone) role[slot[i]] = i;
+            if (slot[i] != kNoProperty) role[slot[i]] = i;
         const std::uint64_t least = std::max<std::uint64_t>(1, e.properties.size());
         reserve_huge(spheres_, static_cast<std::size_t>(std::min<std::uint64_t>(e.count, values_.bytes_left() / least + 1)));
         std::unordered_map<std::array<double, 3>, std::uint32_t, ColorKey> palette_index;
@@ -115,7 +107,7 @@ private:
                     values_.skip_list(p);
                     continue;
                 }
-                if (role[i] == kNone) {
+                if (role[i] == kNoProperty) {
                     values_.skip(p.type);
                     continue;
                 }
@@ -130,7 +122,7 @@ private:
             std::array<double, 3> c{v[4], v[5], v[6]};
             for (double& x : c) {
                 if (bytes) x = decode_srgb8(static_cast<std::uint8_t>(x));
-                else if (!(x >= 0.0 && x <= 1e6)) values_.fail(fmt::format("point {}: a colour channel {} is not a number from 0 up", k, x));
+                else if (!(x >= 0.0) || !std::isfinite(x)) values_.fail(fmt::format("point {}: a colour channel {} is not a finite number from 0 up", k, x));
             }
             auto [found, added] = palette_index.try_emplace(c, static_cast<std::uint32_t>(palette_.size()));
             if (added) {
