@@ -111,19 +111,22 @@ private:
                     values_.skip(p.type);
                     continue;
                 }
-                v[role[i]] = values_.number(p.type);
-                if (role[i] < 4)
-                    if (auto problem = coordinate_problem(v[role[i]])) values_.fail(fmt::format("point {}: {} {}", k, p.name, *problem));
+                const double x = values_.number(p.type);
+                if (role[i] < 4) {
+                    if (auto problem = coordinate_problem(x)) values_.fail(fmt::format("point {}: {} {}", k, p.name, *problem));
+                } else if (bytes ? !(x >= 0.0 && x <= 255.0 && x == std::floor(x)) : !(x >= 0.0 && std::isfinite(x))) {
+                    values_.fail(fmt::format("point {}: {} {} is not {}", k, p.name, x,
+                                             bytes ? "a whole number from 0 to 255 (an 8-bit code)" : "a finite number from 0 up"));
+                }
+                v[role[i]] = x;
             }
             const glm::vec4 sphere{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]), static_cast<float>(v[3])};
             if (!(sphere.w > 0.0f)) values_.fail(fmt::format("point {}: the radius {} is not above 0 (in float)", k, v[3]));
             spheres_.push_back(sphere);
             if (colors != 3) continue;
             std::array<double, 3> c{v[4], v[5], v[6]};
-            for (double& x : c) {
-                if (bytes) x = decode_srgb8(static_cast<std::uint8_t>(x));
-                else if (!(x >= 0.0) || !std::isfinite(x)) values_.fail(fmt::format("point {}: a colour channel {} is not a finite number from 0 up", k, x));
-            }
+            if (bytes)
+                for (double& x : c) x = decode_srgb8(static_cast<std::uint8_t>(x));
             auto [found, added] = palette_index.try_emplace(c, static_cast<std::uint32_t>(palette_.size()));
             if (added) {
                 if (palette_.size() == kMaxSphereColors)

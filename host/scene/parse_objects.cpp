@@ -351,7 +351,7 @@ struct ObjectReading {
                        fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, torus, "
                                    "implicit surfaces closed in their box, plane as the half-space behind its normal) and "
                                    "CSG objects and groups of them",
-                                   cone ? "an open " : "a ", type));
+                                   cone ? "an open " : "a ", type == "spheres" ? "sphere set" : type));
             if (const auto* implicit = std::get_if<ImplicitObject>(&leaf.shape))
                 if (auto point = surface::not_proved_positive_on_faces(implicit->surface))
                     t.fail("type", fmt::format("this {} is not proved closed in its box: CSG takes f < 0 as its inside, "

@@ -71,6 +71,10 @@ TEST(SphereSet, RefusesWhatCannotBeASphereAtItsPlace) {
                    "some of red green blue but not all three");
     expect_refused(ply(kXyz + "property uchar red\nproperty uchar green\nproperty float blue\n", 1, "0 0 0 1 1 1\n"), 1.0, 9,
                    "all uchar");
+    expect_refused(ply(kXyz + "property uchar red\nproperty uchar green\nproperty uchar blue\n", 1, "0 0 0 655 0 0\n"), 1.0, 11,
+                   "red 655 is not a whole number from 0 to 255");
+    expect_refused(ply(kXyz + "property float red\nproperty float green\nproperty float blue\n", 1, "0 0 0 0.5 -1 0\n"), 1.0, 11,
+                   "green -1 is not a finite number from 0 up");
     expect_refused(ply(kXyz, 0, ""), 1.0, 0, "no points");
     std::string many;
     for (int i = 0; i <= static_cast<int>(mesh::kMaxSphereColors); ++i) many += fmt::format("0 0 0 {} {} 0\n", i % 256, i / 256);
@@ -133,6 +137,16 @@ TEST(SphereSet, EachColourIsTheObjectsMaterialInThatColour) {
     } catch (const SceneError& e) {
         EXPECT_EQ(e.where().line, 11) << e.what();
         EXPECT_NE(std::string(e.what()).find("the object needs `radius`"), std::string::npos) << e.what();
+    }
+    test::write_file(dir + "/csg.toml", stage + "[[object]]\ntype = \"intersection\"\nobjects = [\n"
+                                                "  { type = \"spheres\", file = \"p.ply\", radius = 1 },\n"
+                                                "  { type = \"sphere\", center = [0, 0, 0], radius = 2 },\n]\n");
+    try {
+        load_scene(dir + "/csg.toml");
+        ADD_FAILURE() << "loaded";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.where().line, 12) << e.what();
+        EXPECT_NE(std::string(e.what()).find("a sphere set has no inside"), std::string::npos) << e.what();
     }
     test::write_file(dir + "/xyz.toml", stage + "[[object]]\ntype = \"spheres\"\nfile = \"p.xyz\"\nradius = 1\n");
     try {
