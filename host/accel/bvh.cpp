@@ -76,9 +76,9 @@ struct Builder {
             std::uint32_t count = 0;
         };
         std::array<Bin, kMaxBins> bin{};
-        const double lo = centroids.lo[axis], scale = bins / extent[axis];
+        const double lo = centroids.lo[axis], width = extent[axis];
         auto bin_of = [&](const PrimitiveRef& r) {
-            return std::clamp(static_cast<int>(scale * (r.box.center()[axis] - lo)), 0, bins - 1);
+            return std::clamp(static_cast<int>(bins * (r.box.center()[axis] - lo) / width), 0, bins - 1);
         };
         for (std::uint32_t i = begin; i < end; ++i) {
             Bin& b = bin[bin_of(refs[i])];
