@@ -1,6 +1,7 @@
 #include "mesh/mesh_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -13,6 +14,13 @@
 
 namespace lancer {
 namespace mesh {
+
+std::string lower_extension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
 
 std::string read_mesh_bytes(const std::string& path) {
     FileText file = read_file(path, kMaxMeshFileBytes);
@@ -34,9 +42,7 @@ std::string read_mesh_file_bytes(const std::string& path) {
 }  // namespace mesh
 
 TriangleMesh read_mesh_file(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = mesh::lower_extension(path);
     if (extension == ".obj") return mesh::read_obj_file(path);
     if (extension == ".ply") return mesh::read_ply(mesh::read_mesh_file_bytes(path), path);
     throw SceneError({path, 0, 0}, fmt::format("lancer reads meshes from .obj and .ply files (by the name's extension), not {}",

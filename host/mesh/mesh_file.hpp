@@ -12,6 +12,8 @@ namespace lancer {
 TriangleMesh read_mesh_file(const std::string& path);
 
 namespace mesh {
+// The file name's extension in lower case (".ply"), by which the readers are chosen.
+std::string lower_extension(const std::string& path);
 
 // The file's bytes, at most kMaxMeshFileBytes. Throws UserError with the reason ("No such file or
 // directory", "it is larger than..."); the caller says which file and who named it.

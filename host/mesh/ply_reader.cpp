@@ -35,7 +35,7 @@ public:
             if (e.name == "vertex" && e.count > kMaxMeshVertices)
                 fail_in_header(e.line, fmt::format("{} vertices are more than lancer's limit of {} (32-bit indices)", e.count,
                                                    kMaxMeshVertices));
-            refuse_what_cannot_fit(e);
+            values_.refuse_what_cannot_fit(e);
             if (e.name == "vertex")
                 read_vertices(e);
             else if (e.name == "face" || e.name == "tristrips")
@@ -50,29 +50,6 @@ public:
 
 private:
     [[noreturn]] void fail_in_header(int line, const std::string& message) const { throw SceneError({file_, line, 0}, message); }
-
-    // Each item of an element takes at least this many bytes: its scalars, its lists' lengths.
-    std::size_t least_bytes_per_item(const PlyElement& e) const {
-        std::size_t n = 0;
-        for (const PlyProperty& p : e.properties)
-            n += values_.binary() ? size_of(p.is_list ? p.count_type : p.type) : 2;  // ascii: a digit and a blank
-        return n;
-    }
-
-    // A header may declare any count; the items must still fit in what is left of the file.
-    void refuse_what_cannot_fit(const PlyElement& e) {
-        const std::size_t least = least_bytes_per_item(e);
-        if (least == 0 || e.count == 0) return;
-        const std::size_t left = values_.bytes_left() + (values_.binary() ? 0 : 1);  // ascii: no blank after the last
-        if (e.count > left / least)
-            fail_in_header(e.line, fmt::format("the header declares {} {} items of at least {} bytes each, but only {} "
-                                               "bytes of data follow it (the file is truncated, or the count is wrong)",
-                                               e.count, e.name, least, values_.bytes_left()));
-    }
-
-    std::size_t capacity_for(const PlyElement& e) const {
-        return static_cast<std::size_t>(std::min<std::uint64_t>(e.count, values_.bytes_left() / std::max<std::size_t>(1, least_bytes_per_item(e)) + 1));
-    }
 
     VertexLayout vertex_layout(const PlyElement& e) const {
         VertexLayout layout;
@@ -104,32 +81,21 @@ private:
         if (seen_vertices_) fail_in_header(e.line, "a second vertex element");
         seen_vertices_ = true;
         const VertexLayout layout = vertex_layout(e);
-        const std::size_t capacity = capacity_for(e);
+        const std::size_t capacity = values_.capacity_for(e);
         mesh_.positions.reserve(capacity);
         if (layout.normals) mesh_.normals.reserve(capacity);
         if (layout.uvs) mesh_.uvs.reserve(capacity);
         double slots[8] = {};
         for (std::uint64_t k = 0; k < e.count; ++k) {
-            values_.set_item("vertex", k, e.count);
-            for (std::size_t i = 0; i < e.properties.size(); ++i) {
-                const PlyProperty& p = e.properties[i];
-                if (p.is_list) {
-                    values_.skip_list(p);
-                    continue;
-                }
-                if (layout.slot[i] == kNoSlot) {
-                    values_.skip(p.type);
-                    continue;
-                }
-                const double x = values_.number(p.type);
+            values_.read_scalars(e, k, layout.slot, [&](int slot, const PlyProperty& p, double x) {
                 // Normals are scaled to unit length; only positions and texture coordinates need lancer's range.
-                if (layout.slot[i] < 3 || layout.slot[i] >= 6) {
+                if (slot < 3 || slot >= 6) {
                     if (auto problem = coordinate_problem(x)) values_.fail(fmt::format("vertex {}: {} {}", k, p.name, *problem));
                 } else if (!std::isfinite(x)) {
                     values_.fail(fmt::format("vertex {}: {} is not a finite number", k, p.name));
                 }
-                slots[layout.slot[i]] = x;
-            }
+                slots[slot] = x;
+            });
             mesh_.positions.emplace_back(slots[0], slots[1], slots[2]);
             if (layout.normals) {
                 const auto unit = unit_normal({slots[3], slots[4], slots[5]});
@@ -164,7 +130,7 @@ private:
     void read_polygons(const PlyElement& e, bool strips) {
         const PlyProperty& indices = index_list(e);
         if (!seen_vertices_) fail_in_header(e.line, fmt::format("the {} element comes before the vertex element", e.name));
-        mesh_.triangles.reserve(mesh_.triangles.size() + capacity_for(e));
+        mesh_.triangles.reserve(mesh_.triangles.size() + values_.capacity_for(e));
         TriangleFan fan(mesh_);
         const char* what = strips ? "strip" : "face";
         for (std::uint64_t k = 0; k < e.count; ++k) {

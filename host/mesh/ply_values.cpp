@@ -1,5 +1,6 @@
 #include "mesh/ply_values.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 
@@ -145,6 +146,26 @@ void PlyValues::skip_element(const PlyElement& e) {
         set_item(e.name, k, e.count);
         for (const PlyProperty& p : e.properties) p.is_list ? skip_list(p) : skip(p.type);
     }
+}
+
+std::size_t PlyValues::least_bytes_per_item(const PlyElement& e) const {
+    std::size_t n = 0;
+    for (const PlyProperty& p : e.properties) n += binary() ? size_of(p.is_list ? p.count_type : p.type) : 2;  // ascii: a digit and a blank
+    return n;
+}
+
+void PlyValues::refuse_what_cannot_fit(const PlyElement& e) const {
+    const std::size_t least = least_bytes_per_item(e);
+    if (least == 0 || e.count == 0) return;
+    const std::size_t left = bytes_left() + (binary() ? 0 : 1);  // ascii: no blank after the last
+    if (e.count > left / least)
+        throw SceneError({file_, e.line, 0}, fmt::format("the header declares {} {} items of at least {} bytes each, but only {} "
+                                                         "bytes of data follow it (the file is truncated, or the count is wrong)",
+                                                         e.count, e.name, least, bytes_left()));
+}
+
+std::size_t PlyValues::capacity_for(const PlyElement& e) const {
+    return static_cast<std::size_t>(std::min<std::uint64_t>(e.count, bytes_left() / std::max<std::size_t>(1, least_bytes_per_item(e)) + 1));
 }
 
 void PlyValues::require_end() {

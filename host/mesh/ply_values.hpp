@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "mesh/ply_header.hpp"
 
@@ -28,6 +29,26 @@ public:
     void skip_list(const PlyProperty& p);
     // Every item of an element the reader does not use.
     void skip_element(const PlyElement& e);
+    // Item k of element e: each scalar property i with slot[i] >= 0 is read and handed to
+    // take(slot[i], property, value); the others, and lists, are read past.
+    template <class Take>
+    void read_scalars(const PlyElement& e, std::uint64_t k, const std::vector<int>& slot, Take&& take) {
+        set_item(e.name, k, e.count);
+        for (std::size_t i = 0; i < e.properties.size(); ++i) {
+            const PlyProperty& p = e.properties[i];
+            if (p.is_list) skip_list(p);
+            else if (slot[i] < 0) skip(p.type);
+            else take(slot[i], p, number(p.type));
+        }
+    }
+
+    // Each item of an element takes at least this many bytes: its scalars, its lists' lengths.
+    std::size_t least_bytes_per_item(const PlyElement& e) const;
+    // A header may declare any count; the items must still fit in what is left of the file:
+    // a SceneError at the element's header line where they cannot.
+    void refuse_what_cannot_fit(const PlyElement& e) const;
+    // How many of e's items to make room for: its count, at most what the bytes left can hold.
+    std::size_t capacity_for(const PlyElement& e) const;
 
     bool binary() const { return format_ != PlyFormat::ascii; }
     std::size_t bytes_left() const { return bytes_.size() - pos_; }

@@ -23,20 +23,13 @@ SphereCloud::SphereCloud(std::vector<glm::vec4> spheres, std::vector<std::uint32
     : spheres_(std::move(spheres)), colors_(std::move(colors)), palette_(std::move(palette)) {
     lo_ = glm::dvec3(std::numeric_limits<double>::infinity());
     hi_ = -lo_;
-    for (const glm::vec4& s : spheres_) {
-        lo_ = glm::min(lo_, glm::dvec3(s) - double(s.w));
-        hi_ = glm::max(hi_, glm::dvec3(s) + double(s.w));
-    }
+    for (std::uint32_t i = 0; i < spheres_.size(); ++i) extend(i, lo_, hi_);
 }
 
 const ElementTree& SphereCloud::tree() const {
     std::call_once(tree_built_, [this] {
         tree_ = build_element_tree(static_cast<std::uint32_t>(spheres_.size()),
-                                   [this](std::uint32_t i, glm::dvec3& lo, glm::dvec3& hi) {
-                                       const glm::vec4& s = spheres_[i];
-                                       lo = glm::min(lo, glm::dvec3(s) - double(s.w));
-                                       hi = glm::max(hi, glm::dvec3(s) + double(s.w));
-                                   });
+                                   [this](std::uint32_t i, glm::dvec3& lo, glm::dvec3& hi) { extend(i, lo, hi); });
     });
     return tree_;
 }
@@ -95,31 +88,20 @@ private:
         std::vector<int> role(e.properties.size(), kNoProperty);
         for (int i = 0; i < 7; ++i)
             if (slot[i] != kNoProperty) role[slot[i]] = i;
-        const std::uint64_t least = std::max<std::uint64_t>(1, e.properties.size());
-        reserve_huge(spheres_, static_cast<std::size_t>(std::min<std::uint64_t>(e.count, values_.bytes_left() / least + 1)));
+        values_.refuse_what_cannot_fit(e);
+        reserve_huge(spheres_, values_.capacity_for(e));
         std::unordered_map<std::array<double, 3>, std::uint32_t, ColorKey> palette_index;
         double v[7] = {0.0, 0.0, 0.0, radius_.value_or(0.0), 0.0, 0.0, 0.0};
         for (std::uint64_t k = 0; k < e.count; ++k) {
-            values_.set_item("vertex", k, e.count);
-            for (std::size_t i = 0; i < e.properties.size(); ++i) {
-                const PlyProperty& p = e.properties[i];
-                if (p.is_list) {
-                    values_.skip_list(p);
-                    continue;
-                }
-                if (role[i] == kNoProperty) {
-                    values_.skip(p.type);
-                    continue;
-                }
-                const double x = values_.number(p.type);
-                if (role[i] < 4) {
+            values_.read_scalars(e, k, role, [&](int r, const PlyProperty& p, double x) {
+                if (r < 4) {
                     if (auto problem = coordinate_problem(x)) values_.fail(fmt::format("point {}: {} {}", k, p.name, *problem));
                 } else if (bytes ? !(x >= 0.0 && x <= 255.0 && x == std::floor(x)) : !(x >= 0.0 && std::isfinite(x))) {
                     values_.fail(fmt::format("point {}: {} {} is not {}", k, p.name, x,
                                              bytes ? "a whole number from 0 to 255 (an 8-bit code)" : "a finite number from 0 up"));
                 }
-                v[role[i]] = x;
-            }
+                v[r] = x;
+            });
             const glm::vec4 sphere{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]), static_cast<float>(v[3])};
             if (!(sphere.w > 0.0f)) values_.fail(fmt::format("point {}: the radius {} is not above 0 (in float)", k, v[3]));
             spheres_.push_back(sphere);

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -26,6 +27,12 @@ public:
     // Per sphere, its colour's index in palette(); empty where the file has no colours.
     const std::vector<std::uint32_t>& colors() const { return colors_; }
     const std::vector<glm::dvec3>& palette() const { return palette_; }  // linear RGB
+    // Widens [lo, hi] to hold sphere i (exactly: its float centre plus and minus its radius).
+    void extend(std::uint32_t i, glm::dvec3& lo, glm::dvec3& hi) const {
+        const glm::dvec3 c(spheres_[i]);
+        lo = glm::min(lo, c - double(spheres_[i].w));
+        hi = glm::max(hi, c + double(spheres_[i].w));
+    }
     glm::dvec3 lo() const { return lo_; }
     glm::dvec3 hi() const { return hi_; }
     // Built on the first call (thread-safe): only the CPU reference traverses it.

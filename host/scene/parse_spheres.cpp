@@ -24,7 +24,7 @@ Shape read_spheres(TableReader& t, const glm::dmat4& to_world) {  // placed by p
         radius = t.number("radius", 0.0);
         if (!(*radius > 0.0)) t.fail("radius", "radius must be > 0");
     }
-    if (path.extension() != ".ply" && path.extension() != ".PLY")
+    if (mesh::lower_extension(path.string()) != ".ply")
         t.fail("file", fmt::format("a sphere set is read from a PLY point set (a .ply file), not '{}'", name));
     try {
         set.cloud = shared_from_file<SphereCloud>(path, radius ? fmt::format("{}", *radius) : "", [&] {

@@ -66,6 +66,18 @@ uint element_tree_nearest(MeshInfo info, bool spheres, Ray ray, float t_min, ino
     return best_element;
 }
 
+// A shape's <name>_intersect for a placement p of a mesh or sphere set (p.data: its MeshInfo):
+// uv.x = which element of its set was hit (a whole number: exact in float below 2^24).
+bool element_set_intersect(Primitive p, bool spheres, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv) {
+    MeshInfo info = mesh_at(p.data);
+    float best = t_max;
+    uint element = element_tree_nearest(info, spheres, ray, t_min, best);
+    if (element == NO_PRIMITIVE) return false;
+    t_hit = best;
+    uv = vec2(float(element - info.first_element), 0.0);
+    return true;
+}
+
 // The material of a hit on p (uv.x: which element of its set): the element's own where the
 // placement takes the file's (p.p0.y = 1), else the primitive's.
 uint element_hit_material(Primitive p, vec2 uv) {

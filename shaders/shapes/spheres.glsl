@@ -18,13 +18,7 @@ float spheres_element_hit(uint sphere, Ray ray, float t_min, float t_max) {
 }
 
 bool spheres_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
-    MeshInfo info = mesh_at(p.data);
-    float best = t_max;
-    uint sphere = element_tree_nearest(info, true, ray, t_min, best);
-    if (sphere == NO_PRIMITIVE) return false;
-    t_hit = best;
-    uv = vec2(float(sphere - info.first_element), 0.0);
-    return true;
+    return element_set_intersect(p, true, ray, t_min, t_max, t_hit, uv);
 }
 
 vec4 spheres_hit_sphere(Primitive p, vec2 uv) { return set_sphere_at(mesh_at(p.data).first_element + uint(uv.x)).sphere; }

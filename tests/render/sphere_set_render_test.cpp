@@ -1,5 +1,5 @@
-// Sphere sets on both backends: a PLY point set's spheres, coloured by the file, placed by a
-// transform, are the same picture as the same spheres written one object each (on each backend),
+// Sphere sets on both backends: a PLY point set's glass spheres (overlapping: nested media),
+// coloured by the file, placed by a transform, are the same picture as the same spheres written one object each (on each backend),
 // and the backends agree.
 #include <random>
 #include <string>
@@ -54,6 +54,8 @@ checker = { colors = [[0.9, 0.9, 0.9], [0.2, 0.2, 0.25]], size = 0.5 }
 specular = 0.6
 shininess = 40
 reflection = 0.25
+transmission = [0.5, 0.5, 0.5]
+ior = 1.4
 
 [[object]]
 type = "plane"
@@ -63,7 +65,8 @@ material = "floor"
 )";
     // The point colours as the loader decodes them (sRGB codes), on the ball material.
     for (int c = 0; c < 4; ++c)
-        stage += fmt::format("[material.c{}]\ncolor = [{}, {}, {}]\nspecular = 0.6\nshininess = 40\nreflection = 0.25\n", c,
+        stage += fmt::format("[material.c{}]\ncolor = [{}, {}, {}]\nspecular = 0.6\nshininess = 40\nreflection = 0.25\n"
+                             "transmission = [0.5, 0.5, 0.5]\nior = 1.4\n", c,
                              decode_srgb8(static_cast<std::uint8_t>(60 * c)), decode_srgb8(static_cast<std::uint8_t>(255 - 60 * c)),
                              decode_srgb8(128));
     test::write_file(dir + "/set.toml", stage + "[[object]]\ntype = \"spheres\"\nfile = \"points.ply\"\nmaterial = \"ball\"\n" + transform);

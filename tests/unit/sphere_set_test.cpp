@@ -130,32 +130,22 @@ TEST(SphereSet, EachColourIsTheObjectsMaterialInThatColour) {
     EXPECT_EQ(green.reflection, 0.3);
     EXPECT_EQ(scene.dependencies, std::vector<std::string>{dir + "/p.ply"});
 
-    test::write_file(dir + "/bad.toml", stage + "[[object]]\ntype = \"spheres\"\nfile = \"p.ply\"\n");
-    try {
-        load_scene(dir + "/bad.toml");
-        ADD_FAILURE() << "loaded";
-    } catch (const SceneError& e) {
-        EXPECT_EQ(e.where().line, 11) << e.what();
-        EXPECT_NE(std::string(e.what()).find("the object needs `radius`"), std::string::npos) << e.what();
-    }
-    test::write_file(dir + "/csg.toml", stage + "[[object]]\ntype = \"intersection\"\nobjects = [\n"
-                                                "  { type = \"spheres\", file = \"p.ply\", radius = 1 },\n"
-                                                "  { type = \"sphere\", center = [0, 0, 0], radius = 2 },\n]\n");
-    try {
-        load_scene(dir + "/csg.toml");
-        ADD_FAILURE() << "loaded";
-    } catch (const SceneError& e) {
-        EXPECT_EQ(e.where().line, 12) << e.what();
-        EXPECT_NE(std::string(e.what()).find("a sphere set has no inside"), std::string::npos) << e.what();
-    }
-    test::write_file(dir + "/xyz.toml", stage + "[[object]]\ntype = \"spheres\"\nfile = \"p.xyz\"\nradius = 1\n");
-    try {
-        load_scene(dir + "/xyz.toml");
-        ADD_FAILURE() << "loaded";
-    } catch (const SceneError& e) {
-        EXPECT_EQ(e.where().line, 11) << e.what();
-        EXPECT_NE(std::string(e.what()).find("PLY point set"), std::string::npos) << e.what();
-    }
+    // Each refusal at its line of the scene, beside the point set.
+    auto expect_refused_scene = [&](const std::string& objects, int line, const std::string& message) {
+        test::write_file(dir + "/bad.toml", stage + objects);
+        try {
+            load_scene(dir + "/bad.toml");
+            ADD_FAILURE() << "loaded:\n" << objects;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.where().line, line) << e.what();
+            EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+        }
+    };
+    expect_refused_scene("[[object]]\ntype = \"spheres\"\nfile = \"p.ply\"\n", 11, "the object needs `radius`");
+    expect_refused_scene("[[object]]\ntype = \"intersection\"\nobjects = [\n  { type = \"spheres\", file = \"p.ply\", radius = 1 },\n"
+                         "  { type = \"sphere\", center = [0, 0, 0], radius = 2 },\n]\n",
+                         12, "a sphere set has no inside");
+    expect_refused_scene("[[object]]\ntype = \"spheres\"\nfile = \"p.xyz\"\nradius = 1\n", 11, "PLY point set");
 }
 
 }  // namespace

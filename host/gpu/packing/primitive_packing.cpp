@@ -132,15 +132,19 @@ struct PrimitivePacker {
     void operator()(const Mesh& m) {
         const auto [found, added] = out.mesh_indices.try_emplace(m.geometry.get(), static_cast<uint>(out.meshes.size()));
         if (added) pack_mesh(*m.geometry);
-        MeshInfo& info = out.meshes[found->second];
-        if (!m.part_materials.empty() && info.first_material == NO_MAP) {
-            info.first_material = static_cast<uint>(out.mesh_materials.size());
-            for (std::uint32_t k = 0; k < info.element_count; ++k)
-                out.mesh_materials.push_back(m.material_of(out.mesh_order[info.first_element + k], material));
-        }
+        pack_element_materials(out.meshes[found->second], m, out.mesh_order);
         add({SHAPE_MESH, material, found->second, object,
              vec4(m.smooth ? 1.0f : 0.0f, m.part_materials.empty() ? 0.0f : 1.0f, 0.0f, 0.0f), {}, {}},
             shape_bounds(m));
+    }
+    // Each element's material, once per mesh or set, where a placement takes the file's (the same
+    // for every such placement); `order` maps the packed elements to the file's.
+    template <class Set>
+    void pack_element_materials(MeshInfo& info, const Set& set, const std::vector<std::uint32_t>& order) {
+        if (set.part_materials.empty() || info.first_material != NO_MAP) return;
+        info.first_material = static_cast<uint>(out.mesh_materials.size());
+        for (std::uint32_t k = 0; k < info.element_count; ++k)
+            out.mesh_materials.push_back(set.material_of(order[info.first_element + k], material));
     }
     // The elements' tree, its leaves' ranges from `first_element` (the elements themselves are
     // the caller's to store, in bvh.order).
@@ -190,12 +194,7 @@ struct PrimitivePacker {
     void operator()(const SphereSet& s) {
         const auto [found, added] = out.mesh_indices.try_emplace(s.cloud.get(), static_cast<uint>(out.meshes.size()));
         if (added) pack_sphere_set(*s.cloud);
-        MeshInfo& info = out.meshes[found->second];
-        if (!s.part_materials.empty() && info.first_material == NO_MAP) {
-            info.first_material = static_cast<uint>(out.mesh_materials.size());
-            for (std::uint32_t k = 0; k < info.element_count; ++k)
-                out.mesh_materials.push_back(s.material_of(out.set_order[info.first_element + k], material));
-        }
+        pack_element_materials(out.meshes[found->second], s, out.set_order);
         add({SHAPE_SPHERES, material, found->second, object, vec4(0.0f, s.part_materials.empty() ? 0.0f : 1.0f, 0.0f, 0.0f), {}, {}},
             shape_bounds(s));
     }
@@ -203,7 +202,10 @@ struct PrimitivePacker {
         const auto& spheres = cloud.spheres();
         std::vector<Aabb> boxes;
         reserve_huge(boxes, spheres.size());
-        for (const glm::vec4& e : spheres) boxes.push_back(Aabb{dvec3(e) - double(e.w), dvec3(e) + double(e.w)});
+        for (std::uint32_t i = 0; i < spheres.size(); ++i) {
+            Aabb& box = boxes.emplace_back();
+            cloud.extend(i, box.lo, box.hi);
+        }
         // Leaves of up to 4 whatever the SAH says: half the nodes, and faster on lavapipe (a sphere's
         // test costs about a box's; docs/performance.md).
         const Bvh bvh = build_bvh(boxes, BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
