@@ -128,6 +128,16 @@ Shape read_bezier(TableReader& t, const glm::dmat4& to_world) {
         hi = glm::max(hi, box.max);
     }
     check_world_extent(t, t.has("transform") ? "transform" : file ? "file" : control_points ? "control_points" : "patches", lo, hi);
+    if (t.boolean("closed", false)) {
+        constexpr int n = 8;
+        std::vector<surface::SampledPatch> grids;
+        for (const surface::BezierPatch& p : surface.patches) {
+            surface::SampledPatch& grid = grids.emplace_back(surface::SampledPatch{n, {}});
+            for (int i = 0; i <= n; ++i)
+                for (int j = 0; j <= n; ++j) grid.points.push_back(surface::evaluate(p, double(i) / n, double(j) / n));
+        }
+        surface.outward = outward_side_of_declared(t, grids);
+    }
     return surface;
 }
 

@@ -346,10 +346,17 @@ struct ObjectReading {
             totals.after(t, leaf);
             const auto* cone = std::get_if<Cone>(&leaf.shape);
             const std::uint32_t kind = shape_type(leaf.shape);
-            if (!(shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED)) || (cone && cone->open))
+            if (shape_has(kind, SHAPE_ORIENTED) && outward_side(leaf.shape) == 0)
+                t.fail("type", fmt::format("this {} is not declared closed: CSG takes a parametric or Bezier surface as a "
+                                           "solid only where it encloses one; if it does, say `closed = true` (lancer checks "
+                                           "that its patches meet edge to edge)",
+                                           type));
+            if (!(shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED) || shape_has(kind, SHAPE_ORIENTED)) ||
+                (cone && cone->open))
                 t.fail(cone ? "open" : "type",
                        fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, torus, "
-                                   "implicit surfaces closed in their box, plane as the half-space behind its normal) and "
+                                   "implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, plane as the "
+                                   "half-space behind its normal) and "
                                    "CSG objects and groups of them",
                                    cone ? "an open " : "a ", type == "spheres" ? "sphere set" : type));
             if (const auto* implicit = std::get_if<ImplicitObject>(&leaf.shape))

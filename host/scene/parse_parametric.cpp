@@ -117,7 +117,23 @@ Shape read_parametric(TableReader& t, const glm::dmat4& to_world) {
     check_world_extent(t, t.has("transform") ? "transform" : "x", lo, hi);
     object.bounds_lo = lo;
     object.bounds_hi = hi;
+    if (t.boolean("closed", false)) {
+        constexpr int n = 32;
+        surface::SampledPatch grid{n, {}};
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j)
+                grid.points.push_back(surface::evaluate_surface(s, s.u0 + (s.u1 - s.u0) * i / n, s.v0 + (s.v1 - s.v0) * j / n).P);
+        object.outward = outward_side_of_declared(t, {grid});
+    }
     return object;
+}
+
+int outward_side_of_declared(TableReader& t, const std::vector<surface::SampledPatch>& samples) {
+    try {
+        return surface::outward_side(samples);
+    } catch (const UserError& e) {
+        t.fail("closed", fmt::format("{}: declared closed, but {}", t.what(), e.what()));
+    }
 }
 
 void check_world_extent(TableReader& t, std::string_view key, const dvec3& lo, const dvec3& hi) {

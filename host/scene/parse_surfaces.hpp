@@ -5,11 +5,13 @@
 // shape_readers() (parse_shapes.cpp).
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 
 #include "scene/scene.hpp"
 #include "scene/toml_reader.hpp"
+#include "surface/closed_surface.hpp"
 
 namespace lancer {
 
@@ -37,5 +39,9 @@ bool is_implicit_type(std::string_view type);
 // Fails at `key` unless every coordinate of [lo, hi] is within kMaxMagnitude: geometry built by
 // transforms and equations must stay as representable as the numbers it came from.
 void check_world_extent(TableReader& t, std::string_view key, const dvec3& lo, const dvec3& hi);
+
+// A surface declared `closed = true`: the side its normals face (surface::outward_side), or a
+// failure at `closed` saying why the samples show no solid.
+int outward_side_of_declared(TableReader& t, const std::vector<surface::SampledPatch>& samples);
 
 }  // namespace lancer

@@ -229,6 +229,7 @@ struct BezierSurface {
     std::vector<surface::BezierPatch> patches;
     int subdivision = 1;      // the GPU splits each patch into 2^n x 2^n leaves (tighter boxes)
     std::string source_file;  // the patch file they came from, if any
+    int outward = 0;          // declared closed: +1 where S_u x S_v points out of the solid, -1 where in; else 0
 };
 
 // A surface given by its equations, with a world box proved to contain it (interval arithmetic
@@ -237,6 +238,7 @@ struct BezierSurface {
 struct ParametricObject {
     surface::ParametricSurface surface;
     dvec3 bounds_lo{0.0}, bounds_hi{0.0};  // world space
+    int outward = 0;  // declared closed: +1 where S_u x S_v points out of the solid, -1 where in; else 0
 };
 
 // A surface given by its equation f(x, y, z) = 0, clipped to a box (docs/scene-format.md).
@@ -336,7 +338,8 @@ struct Object;
 
 // Constructive solid geometry: POV-Ray's intersection, difference and merge (docs/scene-format.md,
 // "CSG"). `leaves` are solids (shapes with SHAPE_SOLID: convex and closed, or half-spaces; or
-// with SHAPE_CLOSED: a torus, an implicit surface proved closed in its box), each
+// with SHAPE_CLOSED: a torus, an implicit surface proved closed in its box; or with SHAPE_ORIENTED:
+// a parametric or Bezier surface declared and checked closed), each
 // an object with its own placement and material; `program` combines whether a point is inside
 // each (postfix: the CSG_* ops of shapes.h). The surface is where the combination's value changes
 // along a ray; each of its points is a leaf's, shaded with that leaf's material and texture.
@@ -356,6 +359,14 @@ LANCER_SHAPES(LANCER_SHAPE_ALTERNATIVE)
 #undef LANCER_SHAPE_ALTERNATIVE
 static_assert(std::variant_size_v<Shape> == SHAPE_COUNT);
 inline std::uint32_t shape_type(const Shape& shape) { return static_cast<std::uint32_t>(shape.index()); }
+
+// A surface of patches declared closed (SHAPE_ORIENTED): +1 where its normals point out of the
+// solid, -1 where in; 0 for any other shape or one not declared closed.
+inline int outward_side(const Shape& shape) {
+    if (const auto* b = std::get_if<BezierSurface>(&shape)) return b->outward;
+    if (const auto* p = std::get_if<ParametricObject>(&shape)) return p->outward;
+    return 0;
+}
 
 // Where an object's `transform` put it (docs/scene-format.md, "Transforms"). Patterns and
 // checkers are evaluated at the object's own coordinates, so they move with it (POV-Ray's rule).

@@ -17,10 +17,67 @@
 const uint CSG_MAX_ENDS = 256u;  // interval ends examined per ray: beyond, a miss
 const int CSG_WALK_ROOTS = 32;   // roots one walk examines
 
-// Scenes without tori or implicit surfaces compile no walk: one test of the constant shape set
-// (|| between specialisation constants would leave SPIRV-Tools an operand it cannot fold).
-const bool CSG_MAY_WALK = (SCENE_SHAPES & ((1u << SHAPE_TORUS) | (1u << SHAPE_IMPLICIT))) != 0u;
-bool csg_walked(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & SHAPE_CLOSED) != 0u; }
+// Scenes without tori, implicit, parametric or Bezier surfaces compile no walk: one test of the
+// constant shape set (|| between specialisation constants would leave SPIRV-Tools an operand it
+// cannot fold).
+const uint CSG_WALKABLE = (1u << SHAPE_TORUS) | (1u << SHAPE_IMPLICIT) | (1u << SHAPE_PARAMETRIC) | (1u << SHAPE_BEZIER);
+const bool CSG_MAY_WALK = (SCENE_SHAPES & CSG_WALKABLE) != 0u;
+bool csg_walked(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & (SHAPE_CLOSED | SHAPE_ORIENTED)) != 0u; }
+bool csg_crossed(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & SHAPE_ORIENTED) != 0u; }
+
+// A piece (parametric cell, Bezier sub-patch) of a surface leaf: its hit in (t_min, t_max).
+bool csg_piece_hit(Primitive q, Ray ray, float t_min, float t_max, out float t, out vec2 uv, out float error) {
+    error = 0.0;
+    uv = vec2(0.0);
+    if (SCENE_HAS_PARAMETRIC && q.type == SHAPE_PARAMETRIC) return parametric_intersect(q, ray, t_min, t_max, t, uv, error);
+    if (SCENE_HAS_BEZIER && q.type == SHAPE_BEZIER) return bezier_intersect(q, ray, t_min, t_max, t, uv, error);
+    return false;
+}
+
+// A surface of patches declared closed (SHAPE_ORIENTED; packed as its pieces after its node's
+// leaves: scene_packing.hpp): its nearest crossing with t in (t_min, t_max), which piece, and
+// whether the ray leaves the solid there (its normal, turned by the outward side, along it).
+bool csg_crossing(Primitive leaf, Ray world_ray, float t_min, float t_max, out float t_hit, out vec2 uv, out float error,
+                  out uint piece, out bool leaving) {
+    float k;
+    Ray ray = primitive_ray(leaf, world_ray, k);
+    piece = NO_PRIMITIVE;
+    leaving = false;
+    error = 0.0;
+    uv = vec2(0.0);
+    // The pieces' searches take t >= 0 only, and CSG asks along the whole line: from the line's
+    // entry into the surface's box, then, as origin.
+    vec3 t0 = (leaf.p0.xyz - ray.origin) * safe_inverse(ray.dir), t1 = (leaf.p1.xyz - ray.origin) * safe_inverse(ray.dir);
+    vec3 near = min(t0, t1), far = max(t0, t1);
+    float line_in = max(max(near.x, near.y), near.z), line_out = min(min(far.x, far.y), far.z);
+    if (!(line_in <= line_out && line_out > t_min * k && line_in < t_max * k)) return false;
+    ray.origin += line_in * ray.dir;
+    t_hit = min(t_max * k, line_out) - line_in;
+    float t_low = max(t_min * k - line_in, 0.0);
+    uint first = leaf.data, count = uint(leaf.p2.x);
+    vec3 inv_dir = safe_inverse(ray.dir);
+    for (uint i = first; i < first + count; ++i) {
+        float t, e;
+        vec2 q_uv;
+        Primitive q = primitive_at(i);
+        if (box_entry(q.p0.xyz, q.p1.xyz, ray.origin, inv_dir, t_hit) == INFINITY) continue;  // most pieces
+        if (csg_piece_hit(q, ray, t_low, t_hit, t, q_uv, e)) {
+            t_hit = t;
+            uv = q_uv;
+            error = e;
+            piece = i;
+        }
+    }
+    if (piece == NO_PRIMITIVE) return false;
+    float normal_error;
+    Primitive q = primitive_at(piece);
+    vec3 p = ray.origin + t_hit * ray.dir;
+    vec3 n = q.type == SHAPE_PARAMETRIC ? parametric_hit_normal(q, ray, t_hit, p, uv, normal_error)
+                                        : bezier_hit_normal(q, ray, t_hit, p, uv, normal_error);
+    leaving = leaf.p2.y * dot(n, ray.dir) > 0.0;
+    t_hit = (t_hit + line_in) / k;
+    return true;
+}
 
 // Past a root at a, a walked leaf's next search starts this far on: its searches are
 // not deterministic in t_min (the torus re-bases its segment there), so from a itself one could
@@ -33,11 +90,18 @@ float csg_walk_gap(Primitive node, float a) { return max(4e-6 * length(node.p1.x
 vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, float from, float after) {
     vec2 span = vec2(INFINITY, -INFINITY);
     float a = from;
+    bool entered = false;  // a surface of patches: inside after a, where the ray entered it at a
     for (int i = 0; i < CSG_WALK_ROOTS; ++i) {
         float b, error;
         vec2 uv;
-        bool more = leaf_hit(leaf, ray, a == -INFINITY ? -INFINITY : a + csg_walk_gap(node, a), INFINITY, b, uv, error);
-        if (more && a != -INFINITY && leaf_inside(leaf, ray, 0.5 * (a + b))) {
+        float start = a == -INFINITY ? -INFINITY : a + csg_walk_gap(node, a);
+        bool more, leaving = false;
+        uint piece;
+        if (csg_crossed(leaf)) more = csg_crossing(leaf, ray, start, INFINITY, b, uv, error, piece, leaving);
+        else more = leaf_hit(leaf, ray, start, INFINITY, b, uv, error);
+        bool inside = csg_crossed(leaf) ? entered : a != -INFINITY && leaf_inside(leaf, ray, 0.5 * (a + b));
+        entered = !leaving;
+        if (more && inside) {
             span = span.x < span.y ? vec2(span.x, b) : vec2(a, b);  // adjacent stretches inside join
         } else if (span.x < span.y) {
             if (span.y > after) return span;
@@ -61,6 +125,13 @@ vec2 csg_inside(Primitive leaf, Ray ray) {
         if (along == 0.0) return height < 0.0 ? vec2(-INFINITY, INFINITY) : vec2(INFINITY, -INFINITY);
         float t = -height / along / k;
         return along > 0.0 ? vec2(-INFINITY, t) : vec2(t, INFINITY);
+    }
+    // Spheres and boxes give both ends from one solve, in their own coordinates (the pips of a
+    // die are most of its leaves).
+    if ((SCENE_HAS_SPHERE && leaf.type == SHAPE_SPHERE) || (SCENE_HAS_BOX && leaf.type == SHAPE_BOX)) {
+        float k;
+        Ray r = primitive_ray(leaf, ray, k);
+        return (leaf.type == SHAPE_SPHERE ? sphere_interval(leaf, r) : box_interval(leaf, r)) / k;
     }
     // The exit is the reversed ray's entry: no second search from the entry, whose rounding
     // could find the entry again or step past a close exit.
@@ -140,6 +211,14 @@ uint csg_leaf_hit(Primitive node, Ray ray, float t, vec2 csg_uv, out vec2 uv, in
     Primitive p = primitive_at(leaf);
     uv = vec2(0.0);
     bool walked = csg_uv.y == 2.0;
+    if (csg_crossed(p)) {  // the piece that holds the crossing, itself shaded
+        float t_leaf, leaf_error;
+        uint piece;
+        bool leaving;
+        if (!csg_crossing(p, ray, t - csg_walk_gap(node, t), INFINITY, t_leaf, uv, leaf_error, piece, leaving)) return p.data;
+        error = max(error, leaf_error + abs(t_leaf - t));
+        return piece;
+    }
     if (walked || p.type != SHAPE_PLANE) {
         float t_leaf, leaf_error;
         float from = walked ? t - csg_walk_gap(node, t) : -INFINITY;

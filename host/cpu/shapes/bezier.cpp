@@ -224,4 +224,16 @@ std::optional<SurfaceHit> intersect(const BezierSurface& s, const Ray& ray, doub
     return best;
 }
 
+// Every patch's hits, together: where patches meet, a ray through their edge may cross both at
+// one t, which the walk takes once.
+std::vector<LineCrossing> crossings_on_line(const BezierSurface& s, const Ray& ray, double t0, double t1) {
+    std::vector<LineCrossing> crossings;
+    for (const BezierPatch& p : s.patches)
+        for (const PatchHit& h : intersect_all(p, ray, t0, t1))
+            crossings.push_back({h.t, s.outward * glm::dot(surface::unit_normal(p, h.u, h.v), ray.dir) > 0.0});
+    std::sort(crossings.begin(), crossings.end(), [](const LineCrossing& a, const LineCrossing& b) { return a.t < b.t; });
+    return crossings;
+}
+
 }  // namespace lancer::cpu
+

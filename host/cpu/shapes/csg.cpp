@@ -2,8 +2,9 @@
 // convex solid or a half-space is inside along the ray on one interval (from its first hit from
 // -infinity to the first of the reversed ray); a closed leaf that is not convex (a torus, an
 // implicit surface) on the stretches between its roots along the whole line where f < 0 at
-// their middle. The combination's surface is the first end of an interval, beyond t_min, where
-// the program's value changes. Comparing ends, not counting crossings, stays exact where a ray
+// their middle; a surface of patches declared closed between the roots where it enters and
+// leaves, told by its normal's side. The combination's surface is the first end of an interval,
+// beyond t_min, where the program's value changes. Comparing ends, not counting crossings, stays exact where a ray
 // grazes a leaf (an interval of no length changes nothing).
 #include <algorithm>
 #include <array>
@@ -14,6 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include "cpu/shapes/shapes.hpp"
+#include "scene/shape_bounds.hpp"
 
 namespace lancer::cpu {
 namespace {
@@ -70,7 +72,51 @@ std::vector<Interval> walked_inside(const Object& leaf, const Ray& ray) {
     return walk(std::get<ImplicitObject>(leaf.shape));
 }
 
-bool walked(const Object& leaf) { return shape_has(shape_type(leaf.shape), SHAPE_CLOSED); }
+// The line's stretch through a box grown by a millionth of its size, or an empty one.
+std::pair<double, double> line_through(const Aabb& box, const Ray& ray) {
+    const dvec3 pad(1e-6 * glm::length(box.hi - box.lo));
+    const dvec3 lo = box.lo - pad, hi = box.hi + pad;
+    double t0 = -kInf, t1 = kInf;
+    for (int i = 0; i < 3; ++i) {
+        if (ray.dir[i] == 0.0) {
+            if (ray.origin[i] < lo[i] || ray.origin[i] > hi[i]) return {kInf, -kInf};
+            continue;
+        }
+        const double a = (lo[i] - ray.origin[i]) / ray.dir[i], b = (hi[i] - ray.origin[i]) / ray.dir[i];
+        t0 = std::max(t0, std::min(a, b));
+        t1 = std::min(t1, std::max(a, b));
+    }
+    return {t0, t1};
+}
+
+// A surface of patches declared closed: its intervals inside, from its crossings. An entry while
+// inside or an exit while outside (a touching point, a root found twice) changes nothing, and
+// an entry never left (an exit lost) is dropped.
+std::vector<Interval> crossed_inside(const Object& leaf, const Ray& ray) {
+    double k;
+    const Ray r = shape_ray(leaf, ray, k);
+    const auto [t0, t1] = line_through(*shape_bounds(leaf.shape), r);
+    if (!(t0 <= t1)) return {};
+    const std::vector<LineCrossing> crossings = std::holds_alternative<BezierSurface>(leaf.shape)
+                                                    ? crossings_on_line(std::get<BezierSurface>(leaf.shape), r, t0, t1)
+                                                    : crossings_on_line(std::get<ParametricObject>(leaf.shape), r, t0, t1);
+    std::vector<Interval> spans;
+    bool in = false;
+    for (const LineCrossing& c : crossings) {
+        if (in == !c.leaving) continue;
+        in = !c.leaving;
+        if (!in) spans.back().out = c.t / k;
+        else if (!spans.empty() && spans.back().out == c.t / k) spans.back().out = kInf;  // adjacent: joined
+        else spans.push_back(Interval{c.t / k, kInf});
+    }
+    if (in) spans.pop_back();
+    return spans;
+}
+
+bool walked(const Object& leaf) {
+    const std::uint32_t type = shape_type(leaf.shape);
+    return shape_has(type, SHAPE_CLOSED) || shape_has(type, SHAPE_ORIENTED);
+}
 
 // walked_inside (and the GPU's leaf_inside, shaders/scene.glsl) know these two closed shapes.
 constexpr bool closed_shapes_are_torus_and_implicit() {
@@ -109,7 +155,8 @@ std::optional<SurfaceHit> intersect(const Csg& c, const Ray& ray, double t_min, 
             inside[k] = inside_along(c.leaves[k], ray);
             continue;
         }
-        later[k] = walked_inside(c.leaves[k], ray);
+        later[k] = shape_has(shape_type(c.leaves[k].shape), SHAPE_ORIENTED) ? crossed_inside(c.leaves[k], ray)
+                                                                             : walked_inside(c.leaves[k], ray);
         std::reverse(later[k].begin(), later[k].end());
         while (!later[k].empty() && later[k].back().out <= t_min) later[k].pop_back();
         if (!later[k].empty()) inside[k] = later[k].back(), later[k].pop_back();

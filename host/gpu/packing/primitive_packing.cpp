@@ -108,14 +108,36 @@ struct PrimitivePacker {
         node.first_op = static_cast<uint>(out.csg_ops.size());
         node.op_count = static_cast<uint>(c.program.size());
         out.csg_ops.insert(out.csg_ops.end(), c.program.begin(), c.program.end());
+        std::vector<Primitive> pieces;  // of the surfaces of patches, after the node's leaves
+        std::vector<std::size_t> first_pieces;
         for (const Object& leaf : c.leaves) {
             std::vector<PrimitiveWithBox> one;
             const bool own_space = leaf.placement && leaf.placement->shape_in_object_space;
             const SpherePacking leaf_spheres{spheres.by_near_points, own_space ? leaf.placement->object_point(spheres.eye) : spheres.eye};
-            const uint frame = out.csg_leaf_frames + static_cast<uint>(out.csg_leaves.size());
+            const uint frame = out.csg_leaf_frames + out.csg_leaves_framed++;
             pack_object(leaf.shape, leaf.material, frame, leaf_spheres, out, one);
-            out.csg_leaves.push_back(one.at(0).first);
+            const int outward = outward_side(leaf.shape);
+            if (outward == 0) {
+                out.csg_leaves.push_back(one.at(0).first);
+                continue;
+            }
+            Aabb box = *one.at(0).second;
+            const auto piece = static_cast<uint>(pieces.size());
+            for (auto [primitive, primitive_box] : one) {
+                box.extend(*primitive_box);
+                pack_box(*primitive_box, primitive.p0, primitive.p1);  // a Bezier leaf's (unused) too: the walk culls by it
+                pieces.push_back(primitive);
+            }
+            Primitive surface{shape_type(leaf.shape), leaf.material, piece, frame, {}, {}, vec4(float(one.size()), float(outward), 0.0f, 0.0f)};
+            pack_box(box, surface.p0, surface.p1);
+            first_pieces.push_back(out.csg_leaves.size());
+            out.csg_leaves.push_back(surface);
         }
+        // The surfaces' pieces (data: the first's index among csg_leaves, made absolute with the
+        // leaves' own when scene_packing places them).
+        const auto first_piece = static_cast<uint>(out.csg_leaves.size());
+        for (std::size_t leaf : first_pieces) out.csg_leaves[leaf].data += first_piece;
+        out.csg_leaves.insert(out.csg_leaves.end(), pieces.begin(), pieces.end());
         const auto index = static_cast<uint>(out.csg_nodes.size());
         out.csg_nodes.push_back(node);
         add({SHAPE_CSG, material, index, object, v4(c.lo), v4(c.hi), {}}, Aabb{c.lo, c.hi});

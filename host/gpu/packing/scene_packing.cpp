@@ -81,7 +81,12 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     }
     packed.primitives = std::move(plan.primitives);
     // The CSG leaves after every primitive the tracer traverses (pack_frame's primitive_count).
-    for (CsgNode& node : packed.csg_nodes) node.first_leaf += static_cast<uint>(packed.primitives.size());
+    const auto leaves_start = static_cast<uint>(packed.primitives.size());
+    for (CsgNode& node : packed.csg_nodes) {
+        for (uint k = 0; k < node.leaf_count; ++k)
+            if (Primitive& leaf = packed.csg_leaves[node.first_leaf + k]; shape_has(leaf.type, SHAPE_ORIENTED)) leaf.data += leaves_start;
+        node.first_leaf += leaves_start;
+    }
     packed.primitives.insert(packed.primitives.end(), packed.csg_leaves.begin(), packed.csg_leaves.end());
     packed.csg_leaf_count = packed.csg_leaves.size();
     packed.unbounded_count = plan.unbounded_count;

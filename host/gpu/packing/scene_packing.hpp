@@ -43,8 +43,12 @@ struct PackedScene {
     // CSG leaves: packed by pack_object into csg_leaves, then stored at the end of primitives,
     // after every primitive the tracer traverses (csg_leaf_count of them). A leaf's `object` is
     // its frame: scene objects' frames come first, then the leaves' from csg_leaf_frames.
+    // A surface of patches declared closed (SHAPE_ORIENTED) is one leaf whose pieces (cells,
+    // sub-patches) follow its node's leaves: data = its first piece, p2.x = their count (as
+    // a float: exact below 2^24), p2.y = its outward side (+-1), p0, p1 = their box.
     std::vector<Primitive> csg_leaves;
     uint csg_leaf_frames = 0;
+    uint csg_leaves_framed = 0;  // the leaves packed so far: the next one's frame is csg_leaf_frames + this
     std::size_t csg_leaf_count = 0;
     // Each mesh's and sphere set's index in `meshes`: packed once however many objects place it;
     // and for each of mesh_triangles and set_spheres, its triangle or sphere in the file.
