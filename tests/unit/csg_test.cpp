@@ -5,6 +5,7 @@
 #include <random>
 #include <string>
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
@@ -196,10 +197,102 @@ TEST(Csg, WhatCannotBeASolidIsRefusedWithWhy) {
                    3, "is not proved closed in its box");
     expect_refused("[[object]]\ntype = \"merge\"\nobjects = [" + sphere +
                        R"(, { type = "parametric", x = "u", y = "v", z = "0", u = [0, 1], v = [0, 1] }])" + "\n",
-                   3, "a parametric has no inside");
+                   3, "is not declared closed");
     std::string many = "[[object]]\ntype = \"merge\"\nobjects = [";
     for (int i = 0; i < 33; ++i) many += (i ? ", " : "") + sphere;
     expect_refused(many + "]\n", 3, "at most 32 solids");
+}
+
+// A Bezier cube of six flat patches, [-a, a]^3 about `centre`, its normals out (or in, where
+// `inward`); `flipped` turns one face alone.
+std::string bezier_cube(double a, dvec3 centre, bool inward = false, int flipped = -1) {
+    const dvec3 x(2 * a, 0, 0), y(0, 2 * a, 0), z(0, 0, 2 * a), lo = centre - dvec3(a);
+    const dvec3 faces[6][3] = {{lo + x, y, z}, {lo, z, y}, {lo + y, z, x}, {lo, x, z}, {lo + z, x, y}, {lo, y, x}};
+    std::string patches;
+    for (int f = 0; f < 6; ++f) {
+        dvec3 u = faces[f][1], v = faces[f][2];
+        if (inward != (f == flipped)) std::swap(u, v);
+        patches += f ? ", [" : "[";
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                const dvec3 p = faces[f][0] + u * (i / 3.0) + v * (j / 3.0);
+                patches += fmt::format("{}[{}, {}, {}]", i + j ? ", " : "", p.x, p.y, p.z);
+            }
+        patches += "]";
+    }
+    return "{ type = \"bezier\", closed = true, patches = [" + patches + "] }";
+}
+
+const char* const kParametricSphere =
+    R"toml({ type = "parametric", closed = true, x = "0.3 + 0.8*cos(v)*cos(u)", y = "0.2 + 0.8*sin(v)", z = "-0.4 + 0.8*cos(v)*sin(u)", u = [0, "2*pi"], v = ["-pi/2", "pi/2"] })toml";
+// The same sphere with u and v swapped: its normals point in.
+const char* const kParametricSphereInward =
+    R"toml({ type = "parametric", closed = true, x = "0.3 + 0.8*cos(u)*cos(v)", y = "0.2 + 0.8*sin(u)", z = "-0.4 + 0.8*cos(u)*sin(v)", v = [0, "2*pi"], u = ["-pi/2", "pi/2"] })toml";
+const char* const kSphere = R"toml({ type = "sphere", center = [0.3, 0.2, -0.4], radius = 0.8 })toml";
+const char* const kParametricTorus =
+    R"toml({ type = "parametric", closed = true, x = "(1 + 0.35*cos(v))*cos(u)", y = "0.35*sin(v)", z = "(1 + 0.35*cos(v))*sin(u)", u = [0, "2*pi"], v = [0, "2*pi"] })toml";
+const char* const kTorus = R"toml({ type = "torus", major_radius = 1, minor_radius = 0.35 })toml";
+
+// The combination `op` of `first` and `second` hits every ray where the same combination with
+// `twin` for `second` does (a solid whose inside the membership test above checks): the same t,
+// from the same leaf, for 300 random rays, half of them from points inside its box.
+void expect_same_as_twin(const std::string& op, const std::string& first, const std::string& second, const std::string& twin) {
+    auto csg = [&](const std::string& leaf) {
+        return test::scene_from_text(std::string(kStage) + "[[object]]\ntype = \"" + op +
+                                     "\"\ntransform = { rotate = [20, 30, 0], translate = [0.1, 0, 0] }\nobjects = [" + first +
+                                     ", " + leaf + "]\n");
+    };
+    const Scene surface = csg(second), solid = csg(twin);
+    const Csg& a = std::get<Csg>(surface.objects.at(0).shape);
+    const Csg& b = std::get<Csg>(solid.objects.at(0).shape);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    int hits = 0;
+    for (int i = 0; i < 300; ++i) {
+        const dvec3 target(0.9 * unit(rng), 0.9 * unit(rng), 0.9 * unit(rng));
+        const dvec3 dir = glm::normalize(dvec3(unit(rng), unit(rng), unit(rng)));
+        const cpu::Ray ray{i % 2 ? target : target - 3.0 * dir, dir};  // every other one from within
+        const auto hit = cpu::intersect(a, ray, 0.01, 10.0), expected = cpu::intersect(b, ray, 0.01, 10.0);
+        ASSERT_EQ(bool(hit), bool(expected)) << "ray " << i;
+        if (!hit) continue;
+        ++hits;
+        EXPECT_NEAR(hit->t, expected->t, 1e-8) << "ray " << i;
+        EXPECT_EQ(hit->part, expected->part) << "ray " << i;
+        EXPECT_NEAR(std::abs(glm::dot(hit->normal, expected->normal)), 1.0, 1e-6) << "ray " << i;  // a surface's own side
+    }
+    EXPECT_GT(hits, 100);
+}
+
+TEST(Csg, AParametricSurfaceDeclaredClosedIsTheSolidItEncloses) {
+    const std::string box = R"({ type = "box", min = [-0.7, -0.7, -0.7], max = [0.7, 0.7, 0.7] })";
+    expect_same_as_twin("difference", box, kParametricSphere, kSphere);
+    expect_same_as_twin("intersection", box, kParametricSphereInward, kSphere);
+    expect_same_as_twin("merge", R"({ type = "sphere", center = [1, 0, 0], radius = 0.5 })", kParametricTorus, kTorus);
+}
+
+TEST(Csg, ABezierSurfaceDeclaredClosedIsTheSolidItEncloses) {
+    const std::string box = R"({ type = "box", min = [-0.1, -0.2, -0.9], max = [0.9, 0.8, 0.1] })";
+    expect_same_as_twin("difference", kSphere, bezier_cube(0.5, dvec3(0.4, 0.3, -0.4)), box);
+    expect_same_as_twin("intersection", kSphere, bezier_cube(0.5, dvec3(0.4, 0.3, -0.4), true), box);
+}
+
+TEST(Csg, ASurfaceThatEnclosesNoSolidIsRefusedWithWhy) {
+    const std::string sphere = R"({ type = "sphere", center = [0, 0, 0], radius = 1 })";
+    auto difference = [&](const std::string& leaf) { return "[[object]]\ntype = \"difference\"\nobjects = [" + sphere + ",\n" + leaf + "]\n"; };
+    // A sphere's cap cut off at 60 degrees: its rim meets nothing.
+    expect_refused(difference(R"toml({ type = "parametric", closed = true, x = "cos(v)*cos(u)", y = "sin(v)", z = "cos(v)*sin(u)", u = [0, "2*pi"], v = ["-pi/2", "pi/3"] })toml"),
+                   4, "is not closed: the edge of its samples");
+    expect_refused(difference(bezier_cube(0.5, dvec3(0.0), false, 2)), 4, "with opposite orientations");
+    // Two sides of one square: closed, and no volume.
+    std::string square, back;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            square += fmt::format("{}[{}, {}, 0]", i + j ? ", " : "[", i, j);
+            back += fmt::format("{}[{}, {}, 0]", i + j ? ", " : "[", j, i);
+        }
+    square += "]", back += "]";
+    expect_refused(difference("{ type = \"bezier\", closed = true, patches = [" + square + ", " + back + "] }"), 4,
+                   "encloses no volume");
 }
 
 }  // namespace

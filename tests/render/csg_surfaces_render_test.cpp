@@ -1,0 +1,104 @@
+// CSG over parametric and Bezier surfaces declared closed, on both backends: an opaque box with a
+// spherical cavity cut by a parametric sphere, and a glass die cut from a sphere by a Bezier cube,
+// are the same picture as their twins cut by an analytic sphere and box (on each backend), and
+// the backends agree.
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "image/image.hpp"
+#include "support/test_support.hpp"
+
+namespace lancer {
+namespace {
+
+// A Bezier cube of six flat patches about `centre`, half-size a, its normals out.
+std::string bezier_cube(double a, double cx, double cy, double cz) {
+    const double lo[3] = {cx - a, cy - a, cz - a}, s = 2 * a;
+    // Each face: a corner and two edges (axis numbers) whose cross product points out.
+    const int faces[6][5] = {{1, 0, 0, 1, 2}, {0, 0, 0, 2, 1}, {0, 1, 0, 2, 0}, {0, 0, 0, 0, 2}, {0, 0, 1, 0, 1}, {0, 0, 0, 1, 0}};
+    std::string patches;
+    for (const auto& f : faces) {
+        patches += patches.empty() ? "[" : ", [";
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                double p[3] = {lo[0] + s * f[0], lo[1] + s * f[1], lo[2] + s * f[2]};
+                p[f[3]] += s * i / 3.0;
+                p[f[4]] += s * j / 3.0;
+                patches += fmt::format("{}[{}, {}, {}]", i + j ? ", " : "", p[0], p[1], p[2]);
+            }
+        patches += "]";
+    }
+    return "{ type = \"bezier\", closed = true, patches = [" + patches + "], material = \"red\" }";
+}
+
+std::string scene(const std::string& cavity, const std::string& cut) {
+    return fmt::format(R"([render]
+width = 200
+height = 112
+samples = 2
+max_depth = 4
+
+[camera]
+eye = [0, 2.5, -5]
+look_at = [0, 0.6, 0]
+fov = 45
+
+[[light]]
+position = [-5, 8, -6]
+
+[material.floor]
+checker = {{ colors = [[0.9, 0.9, 0.9], [0.2, 0.2, 0.25]], size = 0.5 }}
+
+[material.ivory]
+color = [0.92, 0.9, 0.82]
+specular = 0.5
+shininess = 50
+
+[material.red]
+color = [0.85, 0.15, 0.1]
+
+[material.glass]
+transmission = [0.9, 0.9, 0.9]
+ior = 1.5
+specular = 0.8
+shininess = 80
+reflection = 0.1
+
+[[object]]
+type = "plane"
+normal = [0, 1, 0]
+material = "floor"
+
+[[object]]
+type = "difference"
+material = "ivory"
+transform = {{ rotate = [0, 30, 0], translate = [-1.1, 0.7, 0] }}
+objects = [{{ type = "box", min = [-0.7, -0.7, -0.7], max = [0.7, 0.7, 0.7] }}, {}]
+
+[[object]]
+type = "intersection"
+material = "glass"
+transform = {{ rotate = [10, -25, 0], translate = [1.1, 0.75, 0] }}
+objects = [{{ type = "sphere", center = [0, 0, 0], radius = 0.75 }}, {}]
+)",
+                       cavity, cut);
+}
+
+TEST(CsgSurfaces, AreTheSolidsTheyEnclose) {
+    const std::string parametric_sphere =
+        R"toml({ type = "parametric", closed = true, x = "0.6*cos(v)*cos(u)", y = "0.4 + 0.6*sin(v)", z = "-0.4 + 0.6*cos(v)*sin(u)", u = [0, "2*pi"], v = ["-pi/2", "pi/2"], material = "red" })toml";
+    const std::string sphere = R"toml({ type = "sphere", center = [0, 0.4, -0.4], radius = 0.6, material = "red" })toml";
+    const std::string box = R"toml({ type = "box", min = [-0.55, -0.55, -0.55], max = [0.55, 0.55, 0.55], material = "red" })toml";
+    const Scene surfaces = test::scene_from_text(scene(parametric_sphere, bezier_cube(0.55, 0, 0, 0)));
+    const Scene solids = test::scene_from_text(scene(sphere, box));
+    const Rgb8Image cpu = to_srgb8(test::render_on(test::Backend::Cpu, surfaces));
+    const Rgb8Image gpu = to_srgb8(test::render_on(test::Backend::Gpu, surfaces));
+    test::expect_same_picture("csg-surfaces-cpu", cpu, to_srgb8(test::render_on(test::Backend::Cpu, solids)));
+    test::expect_same_picture("csg-surfaces-gpu", gpu, to_srgb8(test::render_on(test::Backend::Gpu, solids)));
+    test::expect_same_picture("csg-surfaces-backends", gpu, cpu);
+}
+
+}  // namespace
+}  // namespace lancer
