@@ -54,18 +54,22 @@ bool csg_crossing(Primitive leaf, Ray world_ray, float t_min, float t_max, out f
     ray.origin += line_in * ray.dir;
     t_hit = min(t_max * k, line_out) - line_in;
     float t_low = max(t_min * k - line_in, 0.0);
-    uint first = leaf.data, count = uint(leaf.p2.x);
+    uint end = leaf.data + uint(leaf.p2.x);
     vec3 inv_dir = safe_inverse(ray.dir);
-    for (uint i = first; i < first + count; ++i) {
-        float t, e;
-        vec2 q_uv;
-        Primitive q = primitive_at(i);
-        if (box_entry(q.p0.xyz, q.p1.xyz, ray.origin, inv_dir, t_hit) == INFINITY) continue;  // most pieces
-        if (csg_piece_hit(q, ray, t_low, t_hit, t, q_uv, e)) {
-            t_hit = t;
-            uv = q_uv;
-            error = e;
-            piece = i;
+    for (uint run = leaf.data; run < end; run += primitive_at(run).data + 1u) {
+        Primitive head = primitive_at(run);  // the run's box and length (scene_packing.hpp)
+        if (box_entry(head.p0.xyz, head.p1.xyz, ray.origin, inv_dir, t_hit) == INFINITY) continue;
+        for (uint i = run + 1u; i <= run + head.data; ++i) {
+            float t, e;
+            vec2 q_uv;
+            Primitive q = primitive_at(i);
+            if (box_entry(q.p0.xyz, q.p1.xyz, ray.origin, inv_dir, t_hit) == INFINITY) continue;  // most pieces
+            if (csg_piece_hit(q, ray, t_low, t_hit, t, q_uv, e)) {
+                t_hit = t;
+                uv = q_uv;
+                error = e;
+                piece = i;
+            }
         }
     }
     if (piece == NO_PRIMITIVE) return false;

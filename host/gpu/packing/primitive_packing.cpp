@@ -121,15 +121,25 @@ struct PrimitivePacker {
                 out.csg_leaves.push_back(one.at(0).first);
                 continue;
             }
-            Aabb box = *one.at(0).second;
+            // Its pieces in runs of up to 16 neighbours (a tree's leaves), each run after a
+            // primitive that holds its box and length, which the walk tests first.
+            std::vector<Aabb> boxes;
+            for (const auto& [primitive, primitive_box] : one) boxes.push_back(*primitive_box);
+            const Bvh runs = build_bvh(boxes, BvhOptions{.max_leaf_size = 16, .min_leaf_size = 16});
             const auto piece = static_cast<uint>(pieces.size());
-            for (auto [primitive, primitive_box] : one) {
-                box.extend(*primitive_box);
-                pack_box(*primitive_box, primitive.p0, primitive.p1);  // a Bezier leaf's (unused) too: the walk culls by it
-                pieces.push_back(primitive);
+            for (const lancer::BvhNode& run : runs.nodes) {
+                if (!run.leaf()) continue;
+                Primitive& head = pieces.emplace_back(Primitive{shape_type(leaf.shape), leaf.material, run.count, frame, {}, {}, {}});
+                pack_box(run.box, head.p0, head.p1);
+                for (std::uint32_t k = run.first; k < run.first + run.count; ++k) {
+                    Primitive primitive = one[runs.order[k]].first;
+                    pack_box(boxes[runs.order[k]], primitive.p0, primitive.p1);  // a Bezier leaf's (unused) too: the walk culls by it
+                    pieces.push_back(primitive);
+                }
             }
-            Primitive surface{shape_type(leaf.shape), leaf.material, piece, frame, {}, {}, vec4(float(one.size()), float(outward), 0.0f, 0.0f)};
-            pack_box(box, surface.p0, surface.p1);
+            Primitive surface{shape_type(leaf.shape), leaf.material, piece, frame, {}, {},
+                              vec4(float(pieces.size() - piece), float(outward), 0.0f, 0.0f)};
+            pack_box(runs.nodes.at(0).box, surface.p0, surface.p1);
             first_pieces.push_back(out.csg_leaves.size());
             out.csg_leaves.push_back(surface);
         }

@@ -44,8 +44,10 @@ struct PackedScene {
     // after every primitive the tracer traverses (csg_leaf_count of them). A leaf's `object` is
     // its frame: scene objects' frames come first, then the leaves' from csg_leaf_frames.
     // A surface of patches declared closed (SHAPE_ORIENTED) is one leaf whose pieces (cells,
-    // sub-patches) follow its node's leaves: data = its first piece, p2.x = their count (as
-    // a float: exact below 2^24), p2.y = its outward side (+-1), p0, p1 = their box.
+    // sub-patches) follow its node's leaves, in runs of neighbours, each run after a primitive
+    // with its box (p0, p1) and its length (data): the leaf's data = the first run's, p2.x = the
+    // primitives of its runs (as a float: exact below 2^24), p2.y = its outward side (+-1), p0,
+    // p1 = their box.
     std::vector<Primitive> csg_leaves;
     uint csg_leaf_frames = 0;
     uint csg_leaves_framed = 0;  // the leaves packed so far: the next one's frame is csg_leaf_frames + this
