@@ -3,31 +3,14 @@
 // uv: the outward normal's axis (0, 1, 2) and sign of the slab that gave t: at an edge, the face
 // the hit is on is the one whose slab the ray crossed there, whatever the hit point's rounding
 // (in a turned box's coordinates that rounding is the map's, larger than the box's own).
-// The slabs' entry and exit along the whole line, and the per-axis ends they came from.
-void box_slabs(Primitive b, Ray ray, out vec3 tn, out vec3 tf, out float t_enter, out float t_exit) {
+bool box_intersect(Primitive b, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     vec3 inv = 1.0 / ray.dir;  // +-inf for axis-parallel rays; the slab test stays correct
     vec3 t0 = (b.p0.xyz - ray.origin) * inv;
     vec3 t1 = (b.p1.xyz - ray.origin) * inv;
-    tn = min(t0, t1);
-    tf = max(t0, t1);
-    t_enter = max(max(tn.x, tn.y), tn.z);
-    t_exit = min(min(tf.x, tf.y), tf.z);
-}
-
-// The whole line's (entry, exit) for CSG, empty (x > y) where it misses: box_intersect's numbers
-// for the ray and the reversed ray from -infinity (negating the direction negates each slab's
-// ends exactly), from one pass.
-vec2 box_interval(Primitive b, Ray ray) {
-    vec3 tn, tf;
-    float t_enter, t_exit;
-    box_slabs(b, ray, tn, tf, t_enter, t_exit);
-    return vec2(t_enter, t_exit);
-}
-
-bool box_intersect(Primitive b, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
-    vec3 tn, tf;
-    float t_enter, t_exit;
-    box_slabs(b, ray, tn, tf, t_enter, t_exit);
+    vec3 tn = min(t0, t1);
+    vec3 tf = max(t0, t1);
+    float t_enter = max(max(tn.x, tn.y), tn.z);
+    float t_exit = min(min(tf.x, tf.y), tf.z);
     if (t_enter > t_exit) return false;
     float side;
     if (t_enter > t_min && t_enter < t_max) {

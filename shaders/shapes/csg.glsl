@@ -130,13 +130,6 @@ vec2 csg_inside(Primitive leaf, Ray ray) {
         float t = -height / along / k;
         return along > 0.0 ? vec2(-INFINITY, t) : vec2(t, INFINITY);
     }
-    // Spheres and boxes give both ends from one solve, in their own coordinates (the pips of a
-    // die are most of its leaves).
-    if ((SCENE_HAS_SPHERE && leaf.type == SHAPE_SPHERE) || (SCENE_HAS_BOX && leaf.type == SHAPE_BOX)) {
-        float k;
-        Ray r = primitive_ray(leaf, ray, k);
-        return (leaf.type == SHAPE_SPHERE ? sphere_interval(leaf, r) : box_interval(leaf, r)) / k;
-    }
     // The exit is the reversed ray's entry: no second search from the entry, whose rounding
     // could find the entry again or step past a close exit.
     if (!leaf_hit(leaf, ray, -INFINITY, INFINITY, t_in, uv, error)) return vec2(INFINITY, -INFINITY);

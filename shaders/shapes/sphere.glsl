@@ -27,9 +27,9 @@ bool sphere_root(float b, float disc, float c, float t_min, float t_max, out flo
     return t > t_min && t < t_max;
 }
 
-// The ray's quadratic t^2 + 2 b t + c = 0 and its discriminant b^2 - c, without cancellation.
-void sphere_quadratic(Primitive s, Ray ray, out float b, out float disc, out float c) {
+bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     float r = s.p0.w;
+    float b, disc, c;
     if (SPHERES_BY_NEAR_POINTS) {
         vec3 e = ray.origin - s.p0.xyz, n = sphere_near_normal(s);
         float ed = dot(e, ray.dir), nd = dot(n, ray.dir);
@@ -44,24 +44,7 @@ void sphere_quadratic(Primitive s, Ray ray, out float b, out float disc, out flo
         disc = r * r - dot(perp, perp);
         c = dot(f, f) - r * r;
     }
-}
-
-bool sphere_intersect(Primitive s, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
-    float b, disc, c;
-    sphere_quadratic(s, ray, b, disc, c);
     return disc >= 0.0 && sphere_root(b, disc, c, t_min, t_max, t_hit);
-}
-
-// The whole line's (entry, exit) for CSG, empty (x >= y) where it misses: the very numbers that
-// sphere_intersect gives the ray and the reversed ray from -infinity (negating b negates both
-// roots exactly; to an ulp where b = 0), from one solve.
-vec2 sphere_interval(Primitive s, Ray ray) {
-    float b, disc, c;
-    sphere_quadratic(s, ray, b, disc, c);
-    if (!(disc >= 0.0)) return vec2(INFINITY, -INFINITY);
-    float q = b == 0.0 ? -sqrt(disc) : -b - sign(b) * sqrt(disc);
-    float t0 = c / q;
-    return vec2(min(t0, q), max(t0, q));
 }
 
 // The hit's error (Hit.error): f = o - c and perp carry rounding errors of a few |f| ulps; near

@@ -231,6 +231,9 @@ const char* const kTorus = "type = \"torus\"\ncenter = [0.2, 0.9, 0.3]\naxis = [
 const char* const kThinTorus = "type = \"torus\"\ncenter = [-0.1, 0.7, 0.2]\naxis = [1, 0.2, -0.3]\nmajor_radius = 1.4\nminor_radius = 0.15\n";
 const char* const kSpindleTorus = "type = \"torus\"\ncenter = [0.1, 0.8, 0.2]\naxis = [-0.2, 1, 0.4]\nmajor_radius = 0.45\nminor_radius = 0.9\n";
 
+// A stretch that tilts a shape's normals against its own axes (traced in its own coordinates).
+const char* const kStretch = "transform = { scale = [1.6, 0.6, 1.1], rotate = [10, 30, 20] }\n";
+
 struct Case {
     std::string name;
     Scene (*make)();
@@ -266,6 +269,10 @@ const Case kCases[] = {
     {"ellipsoid", [] { return analytic(kEllipsoid); }},
     {"ellipsoid_far_from_origin", [] { return moved_far(analytic(kEllipsoid)); }},
     {"disc_stretched", [] { return analytic(std::string(kDisc) + "transform = { scale = [2, 1, 0.5] }\n"); }},
+    {"cylinder_stretched", [] { return analytic(std::string(kCylinder) + kStretch); }},
+    {"cylinder_stretched_far_from_origin", [] { return moved_far(analytic(std::string(kCylinder) + kStretch)); }},
+    {"torus_stretched", [] { return analytic(std::string(kTorus) + kStretch); }},
+    {"torus_stretched_far_from_origin", [] { return moved_far(analytic(std::string(kTorus) + kStretch)); }},
     {"box_far_from_origin", [] { return moved_far(analytic("type = \"box\"\nmin = [-1, 0.1, -0.7]\nmax = [1.2, 1.6, 0.9]\n")); }},
     {"mesh_icosphere", [] { return mesh(test::icosphere(3)); }},
     {"mesh_icosphere_far_from_origin", [] { return moved_far(mesh(test::icosphere(3))); }},
