@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include <fmt/format.h>
 #include <sys/ioctl.h>
@@ -47,6 +48,46 @@ void ProgressLine::clear() {
 void ProgressLine::finish(const std::string& message) {
     clear();
     if (!quiet_) std::fprintf(stderr, "%s\n", message.c_str());
+}
+
+std::string format_phase(const std::string& what, double seconds) {
+    return fmt::format("{}  {} s", what, static_cast<long>(std::max(0.0, seconds)));
+}
+
+PhaseLine::PhaseLine(bool quiet, const std::string& what)
+    : active_(!quiet && stderr_is_terminal()), what_(what), start_(std::chrono::steady_clock::now()), after_(1000) {
+    if (!active_) return;
+    if (const char* ms = std::getenv("LANCER_PHASE_AFTER_MS")) after_ = std::chrono::milliseconds(std::atol(ms));
+    if (after_.count() <= 0) draw();  // at once, before this returns
+    ticker_ = std::thread([this] { run(); });
+}
+
+void PhaseLine::draw() {
+    std::fprintf(stderr, "\r\033[K%s", format_phase(what_, seconds_since(start_)).c_str());
+    std::fflush(stderr);
+    drawn_ = true;
+}
+
+PhaseLine::~PhaseLine() { clear(); }
+
+void PhaseLine::run() {
+    std::unique_lock lock(mutex_);
+    auto next = drawn_ ? start_ + std::chrono::seconds(1) : start_ + after_;
+    while (!wake_.wait_until(lock, next, [this] { return done_; })) {
+        draw();
+        next += std::chrono::seconds(1);
+    }
+    if (drawn_) std::fprintf(stderr, "\r\033[K");
+}
+
+void PhaseLine::clear() {
+    if (!ticker_.joinable()) return;
+    {
+        std::lock_guard lock(mutex_);
+        done_ = true;
+    }
+    wake_.notify_one();
+    ticker_.join();
 }
 
 std::string format_clock(double seconds) {

@@ -3,7 +3,10 @@
 // render prints only its summary, and an animation one plain line per finished frame, so logs
 // never fill with carriage returns.
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <string>
+#include <thread>
 
 namespace lancer {
 
@@ -26,6 +29,34 @@ private:
     int last_percent_ = -1;
     std::chrono::steady_clock::time_point start_;
 };
+
+// What lancer is doing before its first progress (reading a large scene, building its BVH,
+// compiling shaders), for as long as that takes: on a terminal, after `after` of it, a live line
+// "reading big.toml  3 s", redrawn each second by a thread of its own until the phase changes or
+// this ends (then cleared); elsewhere, and when quiet, nothing. LANCER_PHASE_AFTER_MS sets
+// `after` (1 s by default; tests use 0, which draws at once).
+class PhaseLine {
+public:
+    PhaseLine(bool quiet, const std::string& what);
+    ~PhaseLine();
+    void clear();  // ends it early: the line goes and no other is drawn
+
+private:
+    void run();
+    void draw();
+
+    bool active_;
+    std::string what_;
+    std::chrono::steady_clock::time_point start_;
+    std::chrono::milliseconds after_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool done_ = false, drawn_ = false;
+    std::thread ticker_;
+};
+
+// "reading big.toml  12 s": the phase and its whole seconds so far.
+std::string format_phase(const std::string& what, double seconds);
 
 // The live line of an animation, as a pure function so it can be tested:
 // "frame 3/10 orbit_012.png  45%  0:12 elapsed, ETA 1:05", shortened (the path first) to fit

@@ -6,6 +6,7 @@
 
 #include "cli/animation_runner.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "app/frame_pattern.hpp"
 #include "app/render_options.hpp"
 #include "cli/still_render.hpp"
@@ -36,7 +37,10 @@ struct RenderCommand {
     int run() const {
         if (list_devices) return lancer::list_devices();
         if (options.scene.empty()) throw UserError("render: a scene file is required (see lancer render --help)");
-        Scene scene = load_scene_with_overrides(options);
+        Scene scene = [&] {
+            PhaseLine phase(options.quiet, "reading " + options.scene);
+            return load_scene_with_overrides(options);
+        }();
         if (!options.quiet) report_implicit_surfaces(scene);
         if (scene.animation || animation.requested()) return run_animation(options, animation, scene);
         std::string output = output_path(options);

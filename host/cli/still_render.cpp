@@ -24,7 +24,9 @@ int render_still(const RenderOptions& options, const Scene& scene, const std::st
     auto start = std::chrono::steady_clock::now();
     FloatImage image;
     try {
+        PhaseLine preparing(options.quiet, "preparing " + output + " (the scene's buffers and trees, the shaders)");
         image = renderer->render(scene, [&](double f) {
+            preparing.clear();  // the render's own progress from here
             progress.update(output, f);
             return !interrupts.requested();
         });

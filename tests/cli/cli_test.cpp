@@ -1,5 +1,7 @@
 // `lancer` as users run it: the exit code, the one-line message, and never a partial PNG.
+#include <cstdlib>
 #include <filesystem>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -30,6 +32,26 @@ TEST(Cli, RendersTheSeedSceneWithAFinalTimingLine) {
     EXPECT_EQ(img.height, 18);
     EXPECT_NE(r.err.find("Mrays/s"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+}
+
+// Before a render's own progress, what takes time is shown on a terminal, each phase on the
+// live line with its seconds, then cleared (LANCER_PHASE_AFTER_MS=0 draws each at once, where
+// a user sees it after a second); off a terminal, nothing of it. `script` gives lancer a pty.
+TEST(Cli, ATerminalSeesTheLoadAndTheBuildBeforeTheRender) {
+    const std::string out = out_path("phases"), log = out + ".typescript";
+    const std::string scene = test::source_path("scenes/seed.toml");
+    const std::string inner = "LANCER_PHASE_AFTER_MS=0 " + std::string(LANCER_EXE) + " render " + scene + kSmall + "-o " + out;
+    ASSERT_EQ(std::system(("script -qefc '" + inner + "' /dev/null >" + log + " 2>&1 </dev/null").c_str()), 0);
+    const std::string tty = test::read_file(log);
+    const auto reading = tty.find("\r\033[Kreading " + scene + "  0 s"), preparing = tty.find("\r\033[Kpreparing " + out);
+    EXPECT_NE(reading, std::string::npos) << tty;
+    EXPECT_NE(preparing, std::string::npos) << tty;
+    EXPECT_LT(reading, preparing) << tty;
+    EXPECT_LT(preparing, tty.find("Mrays/s")) << tty;
+    const auto plain = test::run_lancer("render " + scene + kSmall + "-o " + out, "LANCER_PHASE_AFTER_MS=0");
+    ASSERT_EQ(plain.exit_code, 0) << plain.err;
+    EXPECT_EQ(plain.err.find("reading"), std::string::npos) << plain.err;
+    EXPECT_EQ(plain.err.find('\r'), std::string::npos) << plain.err;
 }
 
 // As a packager installs it: `cmake --install build --prefix P` gives P/bin/lancer and the

@@ -43,5 +43,10 @@ TEST(Progress, LiveLineNeverReachesTheLastColumn) {
     EXPECT_NE(at60.find("..."), std::string::npos) << at60;
 }
 
+TEST(Progress, APhaseShowsWhatAndItsWholeSeconds) {
+    EXPECT_EQ(format_phase("reading big.toml", 12.7), "reading big.toml  12 s");
+    EXPECT_EQ(format_phase("preparing x.png", 0.2), "preparing x.png  0 s");
+}
+
 }  // namespace
 }  // namespace lancer
