@@ -18,9 +18,12 @@
 //                    root by root, each stretch between roots told by f's sign at its middle
 //                    (name_inside): it may be an operand of CSG too (an implicit surface only
 //                    where its reader proved f > 0 on its box's faces);
-//   SHAPE_ORIENTED   a surface of patches that its reader proved closed where the user declared it
-//                    so (`closed = true`), with the side its normals face: it may be an operand of
-//                    CSG, walked root by root, each root entering or leaving by its normal's side;
+//   SHAPE_ORIENTED   a surface that may close a solid, with the side its normals face: a Bezier
+//                    or parametric surface that its reader proved closed where the user declared
+//                    it so (`closed = true`), a mesh whose edges all pair up: it may be an operand
+//                    of CSG, walked root by root, each root entering or leaving by its normal's side;
+//   SHAPE_IN_PIECES  packed as many primitives (Bezier sub-patches, parametric cells), which a CSG
+//                    leaf of it walks in runs (shaders/shapes/csg.glsl);
 //   SHAPE_KEEPS_LOCALS  lavapipe's code for it is faster where the host leaves the SPIR-V's
 //                    local variables alone (gpu/shaders/spirv_specialize.hpp: the Bezier clipper 7-9%,
 //                    the parametric search 2-5%).
@@ -32,14 +35,14 @@
     X(PLANE, plane, Plane, 1, SHAPE_CHEAP | SHAPE_SOLID)                              \
     X(RECTANGLE, rectangle, Rectangle, 2, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SHEET)  \
     X(BOX, box, Box, 3, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SOLID)                    \
-    X(BEZIER, bezier, BezierSurface, 4, SHAPE_BOUNDED | SHAPE_KEEPS_LOCALS | SHAPE_ORIENTED)             \
-    X(PARAMETRIC, parametric, ParametricObject, 5, SHAPE_BOUNDED | SHAPE_GENERATED | SHAPE_KEEPS_LOCALS | SHAPE_ORIENTED)\
+    X(BEZIER, bezier, BezierSurface, 4, SHAPE_BOUNDED | SHAPE_KEEPS_LOCALS | SHAPE_ORIENTED | SHAPE_IN_PIECES)\
+    X(PARAMETRIC, parametric, ParametricObject, 5, SHAPE_BOUNDED | SHAPE_GENERATED | SHAPE_KEEPS_LOCALS | SHAPE_ORIENTED | SHAPE_IN_PIECES)\
     X(IMPLICIT, implicit, ImplicitObject, 6, SHAPE_BOUNDED | SHAPE_GENERATED | SHAPE_CLOSED)             \
     X(DISC, disc, Disc, 7, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SHEET)                                    \
     X(CONE, cone, Cone, 8, SHAPE_BOUNDED | SHAPE_CHEAP | SHAPE_SOLID)                                    \
     X(TORUS, torus, Torus, 9, SHAPE_BOUNDED | SHAPE_CLOSED)                                              \
     X(CSG, csg, Csg, 10, SHAPE_BOUNDED)                                                                  \
-    X(MESH, mesh, Mesh, 11, SHAPE_BOUNDED)                                                               \
+    X(MESH, mesh, Mesh, 11, SHAPE_BOUNDED | SHAPE_ORIENTED)                                                             \
     X(SPHERES, spheres, SphereSet, 12, SHAPE_BOUNDED)
 
 #ifdef __cplusplus
@@ -58,6 +61,7 @@ LANCER_SHAPE_CONST SHAPE_KEEPS_LOCALS = 16u;
 LANCER_SHAPE_CONST SHAPE_SOLID = 32u;
 LANCER_SHAPE_CONST SHAPE_CLOSED = 64u;
 LANCER_SHAPE_CONST SHAPE_ORIENTED = 128u;
+LANCER_SHAPE_CONST SHAPE_IN_PIECES = 256u;
 
 // A CSG program (Csg::program, shaders/shapes/csg.glsl): postfix over whether a point is inside
 // each of the node's leaves. An op is CSG_LEAF | k << 4 (push leaf k's inside) or one of the

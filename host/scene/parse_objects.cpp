@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <glm/mat4x4.hpp>
 
+#include "mesh/mesh_solid.hpp"
 #include "scene/limits.hpp"
 #include "scene/mesh_materials.hpp"
 #include "scene/parse_shapes.hpp"
@@ -346,6 +347,13 @@ struct ObjectReading {
             totals.after(t, leaf);
             const auto* cone = std::get_if<Cone>(&leaf.shape);
             const std::uint32_t kind = shape_type(leaf.shape);
+            if (auto* mesh = std::get_if<Mesh>(&leaf.shape)) {
+                try {
+                    mesh->outward = mesh::outward_side(mesh->geometry->mesh());
+                } catch (const UserError& e) {
+                    t.fail("file", fmt::format("this mesh has no inside for CSG: {}", e.what()));
+                }
+            }
             if (shape_has(kind, SHAPE_ORIENTED) && outward_side(leaf.shape) == 0)
                 t.fail("type", fmt::format("this {} is not declared closed: CSG takes a parametric or Bezier surface as a "
                                            "solid only where it encloses one; if it does, say `closed = true` (lancer checks "
@@ -355,8 +363,8 @@ struct ObjectReading {
                 (cone && cone->open))
                 t.fail(cone ? "open" : "type",
                        fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, torus, "
-                                   "implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, plane as the "
-                                   "half-space behind its normal) and "
+                                   "implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, closed meshes, plane as "
+                                   "the half-space behind its normal) and "
                                    "CSG objects and groups of them",
                                    cone ? "an open " : "a ", type == "spheres" ? "sphere set" : type));
             if (const auto* implicit = std::get_if<ImplicitObject>(&leaf.shape))

@@ -309,6 +309,7 @@ struct Mesh {
     // placement name none): the scene material of each of the file's, else empty (the object's
     // material everywhere).
     std::vector<std::uint32_t> part_materials;
+    int outward = 0;  // a CSG operand: +1 where the triangles' fronts face out of the solid, -1 where in; else 0
 
     // The material of triangle `triangle`, `object_material` unless the file's apply.
     std::uint32_t material_of(std::size_t triangle, std::uint32_t object_material) const {
@@ -360,11 +361,13 @@ LANCER_SHAPES(LANCER_SHAPE_ALTERNATIVE)
 static_assert(std::variant_size_v<Shape> == SHAPE_COUNT);
 inline std::uint32_t shape_type(const Shape& shape) { return static_cast<std::uint32_t>(shape.index()); }
 
-// A surface of patches declared closed (SHAPE_ORIENTED): +1 where its normals point out of the
-// solid, -1 where in; 0 for any other shape or one not declared closed.
+// A surface that closes a solid (SHAPE_ORIENTED: a Bezier or parametric surface declared closed,
+// a mesh in CSG): +1 where its normals point out of the solid, -1 where in; 0 for any other shape
+// or one not known to be closed.
 inline int outward_side(const Shape& shape) {
     if (const auto* b = std::get_if<BezierSurface>(&shape)) return b->outward;
     if (const auto* p = std::get_if<ParametricObject>(&shape)) return p->outward;
+    if (const auto* m = std::get_if<Mesh>(&shape)) return m->outward;
     return 0;
 }
 

@@ -17,10 +17,10 @@
 const uint CSG_MAX_ENDS = 256u;  // interval ends examined per ray: beyond, a miss
 const int CSG_WALK_ROOTS = 32;   // roots one walk examines
 
-// Scenes without tori, implicit, parametric or Bezier surfaces compile no walk: one test of the
+// Scenes without tori, implicit, parametric or Bezier surfaces or meshes compile no walk: one test of the
 // constant shape set (|| between specialisation constants would leave SPIRV-Tools an operand it
 // cannot fold).
-const uint CSG_WALKABLE = (1u << SHAPE_TORUS) | (1u << SHAPE_IMPLICIT) | (1u << SHAPE_PARAMETRIC) | (1u << SHAPE_BEZIER);
+const uint CSG_WALKABLE = (1u << SHAPE_TORUS) | (1u << SHAPE_IMPLICIT) | (1u << SHAPE_PARAMETRIC) | (1u << SHAPE_BEZIER) | (1u << SHAPE_MESH);
 const bool CSG_MAY_WALK = (SCENE_SHAPES & CSG_WALKABLE) != 0u;
 bool csg_walked(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & (SHAPE_CLOSED | SHAPE_ORIENTED)) != 0u; }
 bool csg_crossed(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & SHAPE_ORIENTED) != 0u; }
@@ -34,8 +34,9 @@ bool csg_piece_hit(Primitive q, Ray ray, float t_min, float t_max, out float t, 
     return false;
 }
 
-// A surface of patches declared closed (SHAPE_ORIENTED; packed as its pieces after its node's
-// leaves: scene_packing.hpp): its nearest crossing with t in (t_min, t_max), which piece, and
+// A surface that closes a solid (SHAPE_ORIENTED: a Bezier or parametric surface packed as its
+// pieces after its node's leaves, or a mesh: scene_packing.hpp): its nearest crossing with t in
+// (t_min, t_max), which piece (NO_PRIMITIVE: a mesh's own; uv then holds its triangle), and
 // whether the ray leaves the solid there (its normal, turned by the outward side, along it).
 bool csg_crossing(Primitive leaf, Ray world_ray, float t_min, float t_max, out float t_hit, out vec2 uv, out float error,
                   out uint piece, out bool leaving) {
@@ -45,15 +46,32 @@ bool csg_crossing(Primitive leaf, Ray world_ray, float t_min, float t_max, out f
     leaving = false;
     error = 0.0;
     uv = vec2(0.0);
-    // The pieces' searches take t >= 0 only, and CSG asks along the whole line: from the line's
-    // entry into the surface's box, then, as origin.
-    vec3 t0 = (leaf.p0.xyz - ray.origin) * safe_inverse(ray.dir), t1 = (leaf.p1.xyz - ray.origin) * safe_inverse(ray.dir);
+    // The searches take t >= 0 only, and CSG asks along the whole line: from the line's entry
+    // into the surface's box, then, as origin.
+    bool mesh = SCENE_HAS_MESH && leaf.type == SHAPE_MESH;
+    vec3 lo = leaf.p0.xyz, hi = leaf.p1.xyz;
+    if (mesh) {
+        MeshNode root = mesh_node_at(mesh_at(leaf.data).first_node);
+        lo = root.lo.xyz;
+        hi = root.hi.xyz;
+    }
+    vec3 t0 = (lo - ray.origin) * safe_inverse(ray.dir), t1 = (hi - ray.origin) * safe_inverse(ray.dir);
     vec3 near = min(t0, t1), far = max(t0, t1);
     float line_in = max(max(near.x, near.y), near.z), line_out = min(min(far.x, far.y), far.z);
     if (!(line_in <= line_out && line_out > t_min * k && line_in < t_max * k)) return false;
     ray.origin += line_in * ray.dir;
     t_hit = min(t_max * k, line_out) - line_in;
     float t_low = max(t_min * k - line_in, 0.0);
+    vec3 n;
+    if (mesh) {
+        float t;
+        if (!mesh_intersect(leaf, ray, t_low, t_hit, t, uv, error)) return false;
+        float normal_error;
+        n = mesh_hit_normal(leaf, ray, t, ray.origin + t * ray.dir, uv, normal_error);
+        leaving = leaf.p0.z * dot(n, ray.dir) > 0.0;
+        t_hit = (t + line_in) / k;
+        return true;
+    }
     uint end = leaf.data + uint(leaf.p2.x);
     vec3 inv_dir = safe_inverse(ray.dir);
     for (uint run = leaf.data; run < end; run += primitive_at(run).data + 1u) {
@@ -76,7 +94,7 @@ bool csg_crossing(Primitive leaf, Ray world_ray, float t_min, float t_max, out f
     float normal_error;
     Primitive q = primitive_at(piece);
     vec3 p = ray.origin + t_hit * ray.dir;
-    vec3 n = q.type == SHAPE_PARAMETRIC ? parametric_hit_normal(q, ray, t_hit, p, uv, normal_error)
+    n = q.type == SHAPE_PARAMETRIC ? parametric_hit_normal(q, ray, t_hit, p, uv, normal_error)
                                         : bezier_hit_normal(q, ray, t_hit, p, uv, normal_error);
     leaving = leaf.p2.y * dot(n, ray.dir) > 0.0;
     t_hit = (t_hit + line_in) / k;
@@ -212,9 +230,10 @@ uint csg_leaf_hit(Primitive node, Ray ray, float t, vec2 csg_uv, out vec2 uv, in
         float t_leaf, leaf_error;
         uint piece;
         bool leaving;
-        if (!csg_crossing(p, ray, t - csg_walk_gap(node, t), INFINITY, t_leaf, uv, leaf_error, piece, leaving)) return p.data;
+        if (!csg_crossing(p, ray, t - csg_walk_gap(node, t), INFINITY, t_leaf, uv, leaf_error, piece, leaving))
+            return p.type == SHAPE_MESH ? leaf : p.data;
         error = max(error, leaf_error + abs(t_leaf - t));
-        return piece;
+        return piece == NO_PRIMITIVE ? leaf : piece;
     }
     if (walked || p.type != SHAPE_PLANE) {
         float t_leaf, leaf_error;

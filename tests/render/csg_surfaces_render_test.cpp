@@ -1,13 +1,14 @@
-// CSG over parametric and Bezier surfaces declared closed, on both backends: an opaque box with a
-// spherical cavity cut by a parametric sphere, and a glass die cut from a sphere by a Bezier cube,
-// are the same picture as their twins cut by an analytic sphere and box (on each backend), and
-// the backends agree.
+// CSG over parametric and Bezier surfaces declared closed and a closed mesh, on both backends: an
+// opaque box with a spherical cavity cut by a parametric sphere, a glass die cut from a sphere by
+// a Bezier cube, and a ball with a corner cut out by a mesh cube, are the same picture as their
+// twins cut by an analytic sphere and boxes (on each backend), and the backends agree.
 #include <string>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "image/image.hpp"
+#include "support/test_meshes.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
@@ -33,7 +34,7 @@ std::string bezier_cube(double a, double cx, double cy, double cz) {
     return "{ type = \"bezier\", closed = true, patches = [" + patches + "], material = \"red\" }";
 }
 
-std::string scene(const std::string& cavity, const std::string& cut) {
+std::string scene(const std::string& cavity, const std::string& cut, const std::string& corner) {
     return fmt::format(R"([render]
 width = 200
 height = 112
@@ -82,8 +83,14 @@ type = "intersection"
 material = "glass"
 transform = {{ rotate = [10, -25, 0], translate = [1.1, 0.75, 0] }}
 objects = [{{ type = "sphere", center = [0, 0, 0], radius = 0.75 }}, {}]
+
+[[object]]
+type = "difference"
+material = "ivory"
+transform = {{ rotate = [0, -40, 0], translate = [0, 0.5, -1.6] }}
+objects = [{{ type = "sphere", center = [0, 0, 0], radius = 0.5 }}, {}]
 )",
-                       cavity, cut);
+                       cavity, cut, corner);
 }
 
 TEST(CsgSurfaces, AreTheSolidsTheyEnclose) {
@@ -91,8 +98,12 @@ TEST(CsgSurfaces, AreTheSolidsTheyEnclose) {
         R"toml({ type = "parametric", closed = true, x = "0.6*cos(v)*cos(u)", y = "0.4 + 0.6*sin(v)", z = "-0.4 + 0.6*cos(v)*sin(u)", u = [0, "2*pi"], v = ["-pi/2", "pi/2"], material = "red" })toml";
     const std::string sphere = R"toml({ type = "sphere", center = [0, 0.4, -0.4], radius = 0.6, material = "red" })toml";
     const std::string box = R"toml({ type = "box", min = [-0.55, -0.55, -0.55], max = [0.55, 0.55, 0.55], material = "red" })toml";
-    const Scene surfaces = test::scene_from_text(scene(parametric_sphere, bezier_cube(0.55, 0, 0, 0)));
-    const Scene solids = test::scene_from_text(scene(sphere, box));
+    const std::string dir = test::fresh_dir("csg-surfaces");
+    test::write_file(dir + "/cube.obj", test::cube_obj(glm::dvec3(0.25, 0.25, -0.25), 0.3));
+    const std::string mesh = "{ type = \"mesh\", file = \"" + dir + "/cube.obj\", material = \"red\" }";
+    const std::string corner = R"toml({ type = "box", min = [-0.05, -0.05, -0.55], max = [0.55, 0.55, 0.05], material = "red" })toml";
+    const Scene surfaces = test::scene_from_text(scene(parametric_sphere, bezier_cube(0.55, 0, 0, 0), mesh));
+    const Scene solids = test::scene_from_text(scene(sphere, box, corner));
     const Rgb8Image cpu = to_srgb8(test::render_on(test::Backend::Cpu, surfaces));
     const Rgb8Image gpu = to_srgb8(test::render_on(test::Backend::Gpu, surfaces));
     test::expect_same_picture("csg-surfaces-cpu", cpu, to_srgb8(test::render_on(test::Backend::Cpu, solids)));

@@ -1,9 +1,10 @@
 #pragma once
 // Closed triangle meshes made in code, for the mesh tests: an icosphere (an icosahedron whose
 // triangles are cut in four, n times, with the new vertices pushed out to the sphere) and a
-// latitude-longitude sphere, both with shared vertices and outward winding.
+// latitude-longitude sphere, both with shared vertices and outward winding; and a cube as OBJ text.
 #include <cmath>
 #include <map>
+#include <string>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -75,6 +76,26 @@ inline TriangleMesh uv_sphere(int rings, const glm::dvec3& centre = glm::dvec3(0
             m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
         }
     return m;
+}
+
+// An OBJ cube of half-size a about `centre`, six quads whose fronts face out (in, where
+// `inward`); `flipped` (0-5) turns one face alone, `missing` leaves one out.
+inline std::string cube_obj(const glm::dvec3& centre, double a, bool inward = false, int flipped = -1, int missing = -1) {
+    std::string text;
+    for (int i = 0; i < 8; ++i) {  // corner i: x from bit 2, y from bit 1, z from bit 0
+        const glm::dvec3 p = centre + a * glm::dvec3(i & 4 ? 1 : -1, i & 2 ? 1 : -1, i & 1 ? 1 : -1);
+        text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+    }
+    // Counter-clockwise seen from outside: +x, -x, +y, -y, +z, -z.
+    const int faces[6][4] = {{5, 7, 8, 6}, {1, 2, 4, 3}, {3, 4, 8, 7}, {1, 5, 6, 2}, {2, 6, 8, 4}, {1, 3, 7, 5}};
+    for (int f = 0; f < 6; ++f) {
+        if (f == missing) continue;
+        const bool reverse = inward != (f == flipped);
+        text += "f";
+        for (int k = 0; k < 4; ++k) text += " " + std::to_string(faces[f][reverse ? 3 - k : k]);
+        text += "\n";
+    }
+    return text;
 }
 
 }  // namespace lancer::test

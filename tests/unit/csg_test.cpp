@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "cpu/shapes/shapes.hpp"
+#include "support/test_meshes.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
@@ -276,6 +277,16 @@ TEST(Csg, ABezierSurfaceDeclaredClosedIsTheSolidItEncloses) {
     expect_same_as_twin("intersection", kSphere, bezier_cube(0.5, dvec3(0.4, 0.3, -0.4), true), box);
 }
 
+// A mesh operand's triangles, their fronts out or in, as the box they close.
+TEST(Csg, AClosedMeshIsTheSolidItEncloses) {
+    const std::string dir = test::fresh_dir("csg-mesh");
+    test::write_file(dir + "/out.obj", test::cube_obj(dvec3(0.4, 0.3, -0.4), 0.5));
+    test::write_file(dir + "/in.obj", test::cube_obj(dvec3(0.4, 0.3, -0.4), 0.5, true));
+    const std::string box = R"toml({ type = "box", min = [-0.1, -0.2, -0.9], max = [0.9, 0.8, 0.1] })toml";
+    expect_same_as_twin("difference", kSphere, "{ type = \"mesh\", file = \"" + dir + "/out.obj\" }", box);
+    expect_same_as_twin("intersection", kSphere, "{ type = \"mesh\", file = \"" + dir + "/in.obj\" }", box);
+}
+
 TEST(Csg, ASurfaceThatEnclosesNoSolidIsRefusedWithWhy) {
     const std::string sphere = R"({ type = "sphere", center = [0, 0, 0], radius = 1 })";
     auto difference = [&](const std::string& leaf) { return "[[object]]\ntype = \"difference\"\nobjects = [" + sphere + ",\n" + leaf + "]\n"; };
@@ -293,6 +304,11 @@ TEST(Csg, ASurfaceThatEnclosesNoSolidIsRefusedWithWhy) {
     square += "]", back += "]";
     expect_refused(difference("{ type = \"bezier\", closed = true, patches = [" + square + ", " + back + "] }"), 4,
                    "encloses no volume");
+    const std::string dir = test::fresh_dir("csg-open-mesh");
+    test::write_file(dir + "/open.obj", test::cube_obj(dvec3(0.0), 0.5, false, -1, 2));
+    test::write_file(dir + "/turned.obj", test::cube_obj(dvec3(0.0), 0.5, false, 4));
+    expect_refused(difference("{ type = \"mesh\", file = \"" + dir + "/open.obj\" }"), 4, "belongs to one triangle only");
+    expect_refused(difference("{ type = \"mesh\", file = \"" + dir + "/turned.obj\" }"), 4, "run it the same way");
 }
 
 }  // namespace

@@ -89,7 +89,7 @@ std::pair<double, double> line_through(const Aabb& box, const Ray& ray) {
     return {t0, t1};
 }
 
-// A surface of patches declared closed: its intervals inside, from its crossings. An entry while
+// A surface that closes a solid (SHAPE_ORIENTED): its intervals inside, from its crossings. An entry while
 // inside or an exit while outside (a touching point, a root found twice) changes nothing, and
 // an entry never left (an exit lost) is dropped.
 std::vector<Interval> crossed_inside(const Object& leaf, const Ray& ray) {
@@ -97,9 +97,15 @@ std::vector<Interval> crossed_inside(const Object& leaf, const Ray& ray) {
     const Ray r = shape_ray(leaf, ray, k);
     const auto [t0, t1] = line_through(*shape_bounds(leaf.shape), r);
     if (!(t0 <= t1)) return {};
-    const std::vector<LineCrossing> crossings = std::holds_alternative<BezierSurface>(leaf.shape)
-                                                    ? crossings_on_line(std::get<BezierSurface>(leaf.shape), r, t0, t1)
-                                                    : crossings_on_line(std::get<ParametricObject>(leaf.shape), r, t0, t1);
+    // The searches take t >= 0 (a mesh's tree walk): from the line's entry into the box, then.
+    const Ray from{r.origin + t0 * r.dir, r.dir};
+    std::vector<LineCrossing> crossings = std::visit(
+        [&](const auto& shape) -> std::vector<LineCrossing> {
+            if constexpr (requires { crossings_on_line(shape, from, 0.0, t1 - t0); }) return crossings_on_line(shape, from, 0.0, t1 - t0);
+            return {};  // not SHAPE_ORIENTED: never called
+        },
+        leaf.shape);
+    for (LineCrossing& c : crossings) c.t += t0;
     std::vector<Interval> spans;
     bool in = false;
     for (const LineCrossing& c : crossings) {

@@ -106,4 +106,16 @@ glm::dvec2 mesh_texture_uv(const Mesh& m, int triangle, const glm::dvec2& b) {
     return (1.0 - b.x - b.y) * mesh.uvs[t[0]] + b.x * mesh.uvs[t[1]] + b.y * mesh.uvs[t[2]];
 }
 
+// Nearest first, each search from a hair past the last crossing (a ray through an edge may hit
+// both its triangles at one t: the second is not a crossing of its own).
+std::vector<LineCrossing> crossings_on_line(const Mesh& m, const Ray& ray, double t0, double t1) {
+    const double gap = 1e-9 * glm::length(m.geometry->hi() - m.geometry->lo()) / glm::length(ray.dir);
+    std::vector<LineCrossing> crossings;
+    for (double t = t0; auto h = intersect(m, ray, t, t1);) {
+        crossings.push_back({h->t, m.outward * glm::dot(h->normal, ray.dir) > 0.0});
+        t = h->t + gap;
+    }
+    return crossings;
+}
+
 }  // namespace lancer::cpu

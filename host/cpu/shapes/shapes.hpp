@@ -65,7 +65,7 @@ bool inside(const Torus& o, const dvec3& p);
 std::vector<double> roots_on_line(const ImplicitObject& o, const Ray& ray);
 bool inside(const ImplicitObject& o, const dvec3& p);
 
-// The surfaces of patches declared closed (SHAPE_ORIENTED: CSG walks their inside along a line):
+// The surfaces that close a solid (SHAPE_ORIENTED: CSG walks their inside along a line):
 // every point where the ray's line crosses the surface with t in (t0, t1), nearest first, and
 // whether it leaves the solid there (its normal, turned by `outward`, along the ray). A root
 // found twice, or a touching point, may repeat or have either side: CSG's walk ignores an entry
@@ -76,6 +76,7 @@ struct LineCrossing {
 };
 std::vector<LineCrossing> crossings_on_line(const ParametricObject& o, const Ray& ray, double t0, double t1);
 std::vector<LineCrossing> crossings_on_line(const BezierSurface& s, const Ray& ray, double t0, double t1);
+std::vector<LineCrossing> crossings_on_line(const Mesh& m, const Ray& ray, double t0, double t1);
 
 // CSG (csg.cpp): the nearest point of the combination's surface, a leaf's hit (part: which leaf;
 // the normal and (u, v) the leaf's there).

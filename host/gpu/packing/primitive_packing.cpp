@@ -117,8 +117,10 @@ struct PrimitivePacker {
             const uint frame = out.csg_leaf_frames + out.csg_leaves_framed++;
             pack_object(leaf.shape, leaf.material, frame, leaf_spheres, out, one);
             const int outward = outward_side(leaf.shape);
-            if (outward == 0) {
-                out.csg_leaves.push_back(one.at(0).first);
+            if (!shape_has(shape_type(leaf.shape), SHAPE_IN_PIECES)) {
+                Primitive p = one.at(0).first;
+                if (outward != 0) p.p0.z = float(outward);  // a mesh's (its p0.xy are its own flags)
+                out.csg_leaves.push_back(p);
                 continue;
             }
             // Its pieces in runs of up to 16 neighbours (a tree's leaves), each run after a

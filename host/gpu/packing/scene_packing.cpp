@@ -84,7 +84,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     const auto leaves_start = static_cast<uint>(packed.primitives.size());
     for (CsgNode& node : packed.csg_nodes) {
         for (uint k = 0; k < node.leaf_count; ++k)
-            if (Primitive& leaf = packed.csg_leaves[node.first_leaf + k]; shape_has(leaf.type, SHAPE_ORIENTED)) leaf.data += leaves_start;
+            if (Primitive& leaf = packed.csg_leaves[node.first_leaf + k]; shape_has(leaf.type, SHAPE_IN_PIECES)) leaf.data += leaves_start;
         node.first_leaf += leaves_start;
     }
     packed.primitives.insert(packed.primitives.end(), packed.csg_leaves.begin(), packed.csg_leaves.end());

@@ -47,7 +47,7 @@ struct PackedScene {
     // sub-patches) follow its node's leaves, in runs of neighbours, each run after a primitive
     // with its box (p0, p1) and its length (data): the leaf's data = the first run's, p2.x = the
     // primitives of its runs (as a float: exact below 2^24), p2.y = its outward side (+-1), p0,
-    // p1 = their box.
+    // p1 = their box. A mesh leaf is its placement's primitive with p0.z = its outward side.
     std::vector<Primitive> csg_leaves;
     uint csg_leaf_frames = 0;
     uint csg_leaves_framed = 0;  // the leaves packed so far: the next one's frame is csg_leaf_frames + this
