@@ -480,8 +480,8 @@ PLY_TYPES = {"char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h",
 
 
 def read_ply_points(path):
-    """The vertex element's scalar properties of a PLY file, as one dict per point (ASCII or binary;
-    lists are refused: a point set has none)."""
+    """The vertex element's scalar properties of a PLY file, as one dict per point, and the type
+    of each (ASCII or binary; lists are refused: a point set has none)."""
     data = open(path, "rb").read()
     end = data.index(b"end_header") + len(b"end_header")
     end = data.index(b"\n", end) + 1
@@ -512,19 +512,37 @@ def read_ply_points(path):
                 offset += struct.calcsize(layout)
             if name == "vertex":
                 points.append(dict(zip((n for n, _ in props), values)))
-    return points
+    types = {n: t for name, _, props in elements if name == "vertex" for n, t in props}
+    return points, types
 
 
-def sphere_set(o, base):
-    """POV-Ray's union of the point set's spheres (colours are not translated)."""
-    points = read_ply_points(os.path.join(base, o["file"]))
-    if points and "red" in points[0]:
-        sys.exit(f"toml_to_pov: point set {o['file']}: per-point colours are not translated")
+def srgb_decoded(code):
+    """An 8-bit sRGB code as linear light, as lancer reads a point's colour code."""
+    c = code / 255.0
+    return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+
+def sphere_set(o, base, scene):
+    """POV-Ray's union of the point set's spheres; where the points have colours, each sphere has
+    the object's material in its own colour (8-bit codes are sRGB, floats linear, as lancer reads
+    them)."""
+    points, types = read_ply_points(os.path.join(base, o["file"]))
+    mat = scene.get("material", {}).get(o.get("material", ""), {})
+
+    def own_texture(p):
+        if "red" not in p:
+            return ""
+        channels = [p[c] for c in ("red", "green", "blue")]
+        if types["red"] in ("uchar", "uint8"):
+            channels = [srgb_decoded(c) for c in channels]
+        return f" texture {{ pigment {{ {rgb(channels)} }} {finish(mat)} }}"
+
     return "union {\n" + "".join(
-        f"  sphere {{ {vec([p['x'], p['y'], p['z']])}, {p.get('radius', o.get('radius', 0)):.9g} }}\n" for p in points)
+        f"  sphere {{ {vec([p['x'], p['y'], p['z']])}, {p.get('radius', o.get('radius', 0)):.9g}{own_texture(p)} }}\n"
+        for p in points)
 
 
-def shape_body(o, base, torus_as, implicit_as, accuracy):
+def shape_body(o, base, torus_as, implicit_as, accuracy, scene):
     t = o["type"]
     if t == "sphere":
         return f"sphere {{ {vec(o['center'])}, {o['radius']:.9g}\n"
@@ -562,7 +580,7 @@ def shape_body(o, base, torus_as, implicit_as, accuracy):
     if t == "mesh":
         return mesh(o, base)
     if t == "spheres":
-        return sphere_set(o, base)
+        return sphere_set(o, base, scene)
     if t == "superellipsoid":  # the same parameters and meaning
         return f"superellipsoid {{ <{o['e']:.9g}, {o['n']:.9g}>\n"
     if t == "blob":  # the same components; POV-Ray's cylinders have the same round ends
@@ -590,7 +608,7 @@ def object_text(o, scene, where, base, torus_as, implicit_as, accuracy, inherite
         body = f"{COMPOUND[t]} {{\n" + "".join(members)
     else:
         check_keys(o, TRANSLATED.get(t, set()) | OBJECT_KEYS | extra, where)
-        body = shape_body(o, base, torus_as, implicit_as, accuracy)
+        body = shape_body(o, base, torus_as, implicit_as, accuracy, scene)
     texture = ""
     if "material" in o or inherited:
         mat = scene.get("material", {}).get(o.get("material", ""), {})

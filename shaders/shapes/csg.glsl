@@ -4,8 +4,11 @@
 // the ray on one interval: from their first hit from -infinity to the reversed ray's (a
 // half-space's reaches to infinity). Its closed leaves that are not convex (SHAPE_CLOSED: tori,
 // implicit surfaces) are walked root by root from the line's start, each stretch between roots
-// told by f's sign at its middle (leaf_inside), adjacent stretches inside joined: each holds
-// one interval at a time, the next found once the ray passes its end. The combination's surface
+// told by f's sign at its middle (leaf_inside), adjacent stretches inside joined; so are the
+// surfaces that close a solid (SHAPE_ORIENTED: closed meshes, Bezier and parametric surfaces
+// declared closed), each stretch inside where the ray entered at its start, by the normal's side
+// there (csg_crossing). A walked leaf holds one interval at a time, the next found once the ray
+// passes its end. The combination's surface
 // is the first end of an interval, beyond t_min, where the program's value changes: comparing
 // ends, not counting crossings, stays exact where a ray grazes a leaf (an interval of no length
 // changes nothing). A hit is the leaf's: uv = (the leaf's primitive, 0 at a convex leaf's
@@ -17,10 +20,11 @@
 const uint CSG_MAX_ENDS = 256u;  // interval ends examined per ray: beyond, a miss
 const int CSG_WALK_ROOTS = 32;   // roots one walk examines
 
-// Scenes without tori, implicit, parametric or Bezier surfaces or meshes compile no walk: one test of the
-// constant shape set (|| between specialisation constants would leave SPIRV-Tools an operand it
-// cannot fold).
-const uint CSG_WALKABLE = (1u << SHAPE_TORUS) | (1u << SHAPE_IMPLICIT) | (1u << SHAPE_PARAMETRIC) | (1u << SHAPE_BEZIER) | (1u << SHAPE_MESH);
+// Scenes without a shape CSG walks (SHAPE_CLOSED, SHAPE_ORIENTED) compile no walk: one test of
+// the constant shape set (|| between specialisation constants would leave SPIRV-Tools an operand
+// it cannot fold).
+const uint CSG_WALKABLE = (1u << SHAPE_TORUS) | (1u << SHAPE_IMPLICIT) | (1u << SHAPE_PARAMETRIC) | (1u << SHAPE_BEZIER) |
+                          (1u << SHAPE_MESH);
 const bool CSG_MAY_WALK = (SCENE_SHAPES & CSG_WALKABLE) != 0u;
 bool csg_walked(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & (SHAPE_CLOSED | SHAPE_ORIENTED)) != 0u; }
 bool csg_crossed(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & SHAPE_ORIENTED) != 0u; }
@@ -112,7 +116,7 @@ float csg_walk_gap(Primitive node, float a) { return max(4e-6 * length(node.p1.x
 vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, float from, float after) {
     vec2 span = vec2(INFINITY, -INFINITY);
     float a = from;
-    bool entered = false;  // a surface of patches: inside after a, where the ray entered it at a
+    bool entered = false;  // a surface that closes a solid: inside after a, where the ray entered it at a
     for (int i = 0; i < CSG_WALK_ROOTS; ++i) {
         float b, error;
         vec2 uv;

@@ -2,10 +2,11 @@
 // convex solid or a half-space is inside along the ray on one interval (from its first hit from
 // -infinity to the first of the reversed ray); a closed leaf that is not convex (a torus, an
 // implicit surface) on the stretches between its roots along the whole line where f < 0 at
-// their middle; a surface of patches declared closed between the roots where it enters and
-// leaves, told by its normal's side. The combination's surface is the first end of an interval,
-// beyond t_min, where the program's value changes. Comparing ends, not counting crossings, stays exact where a ray
-// grazes a leaf (an interval of no length changes nothing).
+// their middle; a surface that closes a solid (a closed mesh, a Bezier or parametric surface
+// declared closed) between the roots where it enters and leaves, told by its normal's side. The
+// combination's surface is the first end of an interval, beyond t_min, where the program's value
+// changes. Comparing ends, not counting crossings, stays exact where a ray grazes a leaf (an
+// interval of no length changes nothing).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -89,9 +90,9 @@ std::pair<double, double> line_through(const Aabb& box, const Ray& ray) {
     return {t0, t1};
 }
 
-// A surface that closes a solid (SHAPE_ORIENTED): its intervals inside, from its crossings. An entry while
-// inside or an exit while outside (a touching point, a root found twice) changes nothing, and
-// an entry never left (an exit lost) is dropped.
+// A surface that closes a solid (SHAPE_ORIENTED): its intervals inside, from its crossings. An
+// entry while inside or an exit while outside (a touching point, a root found twice) changes
+// nothing, and an entry never left (an exit lost) is dropped.
 std::vector<Interval> crossed_inside(const Object& leaf, const Ray& ray) {
     double k;
     const Ray r = shape_ray(leaf, ray, k);
@@ -101,7 +102,8 @@ std::vector<Interval> crossed_inside(const Object& leaf, const Ray& ray) {
     const Ray from{r.origin + t0 * r.dir, r.dir};
     std::vector<LineCrossing> crossings = std::visit(
         [&](const auto& shape) -> std::vector<LineCrossing> {
-            if constexpr (requires { crossings_on_line(shape, from, 0.0, t1 - t0); }) return crossings_on_line(shape, from, 0.0, t1 - t0);
+            if constexpr (requires { crossings_on_line(shape, from, 0.0, t1 - t0); })
+                return crossings_on_line(shape, from, 0.0, t1 - t0);
             return {};  // not SHAPE_ORIENTED: never called
         },
         leaf.shape);
