@@ -2,9 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <unordered_map>
+#include <vector>
 
 #include <fmt/format.h>
+#include <glm/common.hpp>
+#include <glm/ext/vector_int3_sized.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/error.hpp"
@@ -46,23 +51,33 @@ int outward_side(const std::vector<SampledPatch>& patches) {
     if (!(size > 0.0) || !std::isfinite(size)) throw UserError("it has no extent, so it encloses no solid");
     const double tolerance = 1e-7 * size;
 
-    // Each boundary segment that is not a point must meet one running the other way.
+    // Each boundary segment that is not a point must meet one running the other way: their
+    // middles are then within the tolerance, so in neighbouring cells of a grid of twice its size.
     std::vector<Segment> segments = boundary(patches);
     std::erase_if(segments, [&](const Segment& s) { return glm::length(s.to - s.from) <= tolerance; });
-    auto middle = [](const Segment& s) { return 0.5 * (s.from.x + s.to.x); };
-    std::sort(segments.begin(), segments.end(), [&](const Segment& a, const Segment& b) { return middle(a) < middle(b); });
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-        Segment& s = segments[i];
+    const double cell = 2.0 * tolerance;
+    auto cell_of = [&](const Segment& s) { return glm::i64vec3(glm::floor((0.5 * (s.from + s.to) - lo) / cell)); };
+    auto hash = [](const glm::i64vec3& c) {
+        return std::hash<std::int64_t>()(c.x * 73856093 ^ c.y * 19349663 ^ c.z * 83492791);
+    };
+    std::unordered_map<glm::i64vec3, std::vector<std::size_t>, decltype(hash)> grid(segments.size(), hash);
+    for (std::size_t i = 0; i < segments.size(); ++i) grid[cell_of(segments[i])].push_back(i);
+    for (Segment& s : segments) {
         if (s.matched) continue;
         bool reversed = false, same_way = false;
-        for (std::size_t k = i + 1; k < segments.size() && middle(segments[k]) <= middle(s) + tolerance; ++k) {
-            Segment& o = segments[k];
-            if (o.matched) continue;
-            if (glm::length(o.from - s.to) <= tolerance && glm::length(o.to - s.from) <= tolerance) {
-                o.matched = s.matched = reversed = true;
-                break;
+        const glm::i64vec3 c = cell_of(s);
+        for (int n = 0; n < 27 && !reversed; ++n) {
+            const auto found = grid.find(c + glm::i64vec3(n % 3 - 1, n / 3 % 3 - 1, n / 9 - 1));
+            if (found == grid.end()) continue;
+            for (std::size_t k : found->second) {
+                Segment& o = segments[k];
+                if (o.matched || &o == &s) continue;
+                if (glm::length(o.from - s.to) <= tolerance && glm::length(o.to - s.from) <= tolerance) {
+                    o.matched = s.matched = reversed = true;
+                    break;
+                }
+                same_way |= glm::length(o.from - s.from) <= tolerance && glm::length(o.to - s.to) <= tolerance;
             }
-            same_way |= glm::length(o.from - s.from) <= tolerance && glm::length(o.to - s.to) <= tolerance;
         }
         if (reversed) continue;
         if (same_way)
