@@ -97,7 +97,9 @@ Material read_material(TableReader& t, const std::string& name, TextureLibrary& 
         t.finish();
         return m;
     }
-    m.color = check_color(t, "color", t.vec3("color", m.color));
+    // Any sign: a negative component is POV-Ray's "negative light", which subtracts the ambient
+    // and diffuse light from what the highlight and reflection add (advanced/sombrero.pov).
+    m.color = t.vec3("color", m.color);
     if (const toml::table* checker = t.table("checker")) {
         TableReader c(*checker, t.file(), "checker of material '" + name + "'");
         Checker k;
@@ -265,7 +267,14 @@ Scene parse_scene(std::string_view text, const std::string& path, SceneTime time
         read_objects(top, material_index, read_inline, default_material, scene, textures);
     read_animation(top, root, scene, entry_starts);
     top.finish();
-    if (scene.photons) check_photon_lights(scene);
+    if (scene.photons) {
+        check_photon_lights(scene);
+        for (const Material& m : scene.materials)
+            if (m.color.r < 0.0 || m.color.g < 0.0 || m.color.b < 0.0)
+                top.fail("photons", fmt::format("material '{}' has a negative colour (POV-Ray's negative light), which a photon "
+                                                "cannot carry: photon mapping needs colours of 0 or more",
+                                                m.name));
+    }
     scene.depends_on_time = values.uses_time();
     return scene;
 }

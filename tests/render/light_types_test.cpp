@@ -251,6 +251,40 @@ TEST_P(LightTypes, HighlightFollowsItsFormulaAndPeaksAtTheMirrorPoint) {
     }
 }
 
+// A negative colour is POV-Ray's negative light: its ambient and diffuse terms subtract from the
+// highlight, which they do not tint. The floor seen from above, its light straight overhead.
+TEST_P(LightTypes, ANegativeColourSubtractsItsAmbientAndDiffuseLight) {
+    Scene s = test::scene_from_text(floor_scene(R"(
+        [[light]]
+        position = [0, 10, 0]
+        color = [0.9, 0.9, 0.9]
+        [material.dark]
+        color = [-0.5, 0.25, 0]
+        ambient = 0.1
+        diffuse = 0.5
+        specular = 0.8
+        shininess = 60
+        [[object]]
+        type = "plane"
+        point = [0, 0.01, 0]
+        normal = [0, 1, 0]
+        material = "dark"
+    )"));
+    FloatImage img = render(s);
+    const dvec3 eye(0, 10, 0), light(0, 10, 0), n(0, 1, 0);
+    for (int x = 0; x < img.width; x += 20) {
+        const dvec3 below = floor_point(s, x, 0);  // on y = 0; the dark plane is 0.01 above
+        const dvec3 p = eye + (1.0 - 0.01 / eye.y) * (below - eye);
+        const dvec3 v = glm::normalize(eye - p), l = glm::normalize(light - p);
+        const double spec = 0.8 * 0.9 * std::pow(std::max(0.0, glm::dot(2.0 * glm::dot(n, v) * n - v, l)), 60.0);
+        const double lit = 0.1 + 0.5 * glm::dot(n, l) * 0.9;  // ambient light 1, the light's diffuse share
+        EXPECT_NEAR(img.at(x, 0).r, -0.5 * lit + spec, test::kBackendTolerance) << "pixel " << x;
+        EXPECT_NEAR(img.at(x, 0).g, 0.25 * lit + spec, test::kBackendTolerance) << "pixel " << x;
+        EXPECT_NEAR(img.at(x, 0).b, spec, test::kBackendTolerance) << "pixel " << x;
+    }
+    EXPECT_LT(img.at(100, 0).r, img.at(100, 0).b) << "the negative red takes light away";
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, LightTypes, testing::Values(Backend::Gpu, Backend::Cpu),
                          [](const auto& info) { return test::backend_name(info.param); });
 
