@@ -96,14 +96,15 @@ std::pair<double, double> line_through(const Aabb& box, const Ray& ray) {
 std::vector<Interval> crossed_inside(const Object& leaf, const Ray& ray) {
     double k;
     const Ray r = shape_ray(leaf, ray, k);
-    const auto [t0, t1] = line_through(*shape_bounds(leaf.shape), r);
-    if (!(t0 <= t1)) return {};
+    const std::pair<double, double> span = line_through(*shape_bounds(leaf.shape), r);
+    const double t0 = span.first, length = span.second - span.first;
+    if (!(length >= 0.0)) return {};
     // The searches take t >= 0 (a mesh's tree walk): from the line's entry into the box, then.
     const Ray from{r.origin + t0 * r.dir, r.dir};
     std::vector<LineCrossing> crossings = std::visit(
         [&](const auto& shape) -> std::vector<LineCrossing> {
-            if constexpr (requires { crossings_on_line(shape, from, 0.0, t1 - t0); })
-                return crossings_on_line(shape, from, 0.0, t1 - t0);
+            if constexpr (requires { crossings_on_line(shape, from, 0.0, length); })
+                return crossings_on_line(shape, from, 0.0, length);
             return {};  // not SHAPE_ORIENTED: never called
         },
         leaf.shape);
