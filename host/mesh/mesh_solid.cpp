@@ -35,7 +35,8 @@ int outward_side(const TriangleMesh& mesh) {
     // One number per distinct position: a reader may repeat a position for its normals or (u, v).
     std::unordered_map<glm::dvec3, std::uint32_t, PositionHash> ids;
     std::vector<std::uint32_t> id(mesh.positions.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) id[i] = ids.try_emplace(mesh.positions[i] + 0.0, std::uint32_t(ids.size())).first->second;
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+        id[i] = ids.try_emplace(mesh.positions[i] + 0.0, std::uint32_t(ids.size())).first->second;
 
     // Each edge's uses, by its two ends (the smaller first), counted in each direction.
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::array<int, 2>> edges;
@@ -55,9 +56,12 @@ int outward_side(const TriangleMesh& mesh) {
         if (uses[0] == 1 && uses[1] == 1) continue;
         const std::string where = fmt::format("the edge from {} to {}", point(mesh.positions[first_position[ends.first]]),
                                               point(mesh.positions[first_position[ends.second]]));
-        if (uses[0] + uses[1] == 1) throw UserError(fmt::format("it is not closed: {} belongs to one triangle only", where));
-        if (uses[0] + uses[1] > 2) throw UserError(fmt::format("{} belongs to {} triangles (a closed surface's edge to two)", where, uses[0] + uses[1]));
-        throw UserError(fmt::format("its two triangles at {} run it the same way: their fronts face opposite sides of the surface", where));
+        const int triangles = uses[0] + uses[1];
+        if (triangles == 1) throw UserError(fmt::format("it is not closed: {} belongs to one triangle only", where));
+        if (triangles > 2)
+            throw UserError(fmt::format("{} belongs to {} triangles (a closed surface's edge to two)", where, triangles));
+        throw UserError(
+            fmt::format("its two triangles at {} run it the same way: their fronts face opposite sides of the surface", where));
     }
     glm::dvec3 lo(INFINITY), hi(-INFINITY);
     for (const glm::dvec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);

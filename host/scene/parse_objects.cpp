@@ -363,9 +363,8 @@ struct ObjectReading {
                 (cone && cone->open))
                 t.fail(cone ? "open" : "type",
                        fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, torus, "
-                                   "implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, closed meshes, plane as "
-                                   "the half-space behind its normal) and "
-                                   "CSG objects and groups of them",
+                                   "implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, "
+                                   "closed meshes, plane as the half-space behind its normal) and CSG objects and groups of them",
                                    cone ? "an open " : "a ", type == "spheres" ? "sphere set" : type));
             if (const auto* implicit = std::get_if<ImplicitObject>(&leaf.shape))
                 if (auto point = surface::not_proved_positive_on_faces(implicit->surface))

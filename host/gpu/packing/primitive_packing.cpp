@@ -131,11 +131,13 @@ struct PrimitivePacker {
             const auto piece = static_cast<uint>(pieces.size());
             for (const lancer::BvhNode& run : runs.nodes) {
                 if (!run.leaf()) continue;
-                Primitive& head = pieces.emplace_back(Primitive{shape_type(leaf.shape), leaf.material, run.count, frame, {}, {}, {}});
+                Primitive& head =
+                    pieces.emplace_back(Primitive{shape_type(leaf.shape), leaf.material, run.count, frame, {}, {}, {}});
                 pack_box(run.box, head.p0, head.p1);
                 for (std::uint32_t k = run.first; k < run.first + run.count; ++k) {
                     Primitive primitive = one[runs.order[k]].first;
-                    pack_box(boxes[runs.order[k]], primitive.p0, primitive.p1);  // a Bezier leaf's (unused) too: the walk culls by it
+                    // A Bezier leaf's box too (it uses none of its own): the walk culls by it.
+                    pack_box(boxes[runs.order[k]], primitive.p0, primitive.p1);
                     pieces.push_back(primitive);
                 }
             }
