@@ -14,26 +14,6 @@
 namespace lancer {
 namespace {
 
-// A Bezier cube of six flat patches about `centre`, half-size a, its normals out.
-std::string bezier_cube(double a, double cx, double cy, double cz) {
-    const double lo[3] = {cx - a, cy - a, cz - a}, s = 2 * a;
-    // Each face: a corner and two edges (axis numbers) whose cross product points out.
-    const int faces[6][5] = {{1, 0, 0, 1, 2}, {0, 0, 0, 2, 1}, {0, 1, 0, 2, 0}, {0, 0, 0, 0, 2}, {0, 0, 1, 0, 1}, {0, 0, 0, 1, 0}};
-    std::string patches;
-    for (const auto& f : faces) {
-        patches += patches.empty() ? "[" : ", [";
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 4; ++j) {
-                double p[3] = {lo[0] + s * f[0], lo[1] + s * f[1], lo[2] + s * f[2]};
-                p[f[3]] += s * i / 3.0;
-                p[f[4]] += s * j / 3.0;
-                patches += fmt::format("{}[{}, {}, {}]", i + j ? ", " : "", p[0], p[1], p[2]);
-            }
-        patches += "]";
-    }
-    return "{ type = \"bezier\", closed = true, patches = [" + patches + "], material = \"red\" }";
-}
-
 std::string scene(const std::string& cavity, const std::string& cut, const std::string& corner) {
     return fmt::format(R"([render]
 width = 200
@@ -102,7 +82,7 @@ TEST(CsgSurfaces, AreTheSolidsTheyEnclose) {
     test::write_file(dir + "/cube.obj", test::cube_obj(glm::dvec3(0.25, 0.25, -0.25), 0.3));
     const std::string mesh = "{ type = \"mesh\", file = \"" + dir + "/cube.obj\", material = \"red\" }";
     const std::string corner = R"toml({ type = "box", min = [-0.05, -0.05, -0.55], max = [0.55, 0.55, 0.05], material = "red" })toml";
-    const Scene surfaces = test::scene_from_text(scene(parametric_sphere, bezier_cube(0.55, 0, 0, 0), mesh));
+    const Scene surfaces = test::scene_from_text(scene(parametric_sphere, test::bezier_cube(glm::dvec3(0.0), 0.55, false, -1, "material = \"red\""), mesh));
     const Scene solids = test::scene_from_text(scene(sphere, box, corner));
     const Rgb8Image cpu = to_srgb8(test::render_on(test::Backend::Cpu, surfaces));
     const Rgb8Image gpu = to_srgb8(test::render_on(test::Backend::Gpu, surfaces));

@@ -1,12 +1,14 @@
 #pragma once
 // Closed triangle meshes made in code, for the mesh tests: an icosphere (an icosahedron whose
 // triangles are cut in four, n times, with the new vertices pushed out to the sphere) and a
-// latitude-longitude sphere, both with shared vertices and outward winding; and a cube as OBJ text.
+// latitude-longitude sphere, both with shared vertices and outward winding; and a cube as OBJ text
+// and as a closed Bezier surface.
 #include <cmath>
 #include <map>
 #include <string>
 #include <utility>
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 
 #include "mesh/triangle_mesh.hpp"
@@ -96,6 +98,28 @@ inline std::string cube_obj(const glm::dvec3& centre, double a, bool inward = fa
         text += "\n";
     }
     return text;
+}
+
+// The same cube as a closed Bezier surface, an object table's text: six flat bicubic patches,
+// S_u x S_v out of the cube (in, where `inward`; `flipped` turns one face alone), and `extra`
+// keys (a material) in the table.
+inline std::string bezier_cube(const glm::dvec3& centre, double a, bool inward = false, int flipped = -1,
+                               const std::string& extra = "") {
+    const glm::dvec3 x(2 * a, 0, 0), y(0, 2 * a, 0), z(0, 0, 2 * a), lo = centre - glm::dvec3(a);
+    const glm::dvec3 faces[6][3] = {{lo + x, y, z}, {lo, z, y}, {lo + y, z, x}, {lo, x, z}, {lo + z, x, y}, {lo, y, x}};
+    std::string patches;
+    for (int f = 0; f < 6; ++f) {
+        glm::dvec3 u = faces[f][1], v = faces[f][2];
+        if (inward != (f == flipped)) std::swap(u, v);
+        patches += f ? ", [" : "[";
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                const glm::dvec3 p = faces[f][0] + u * (i / 3.0) + v * (j / 3.0);
+                patches += fmt::format("{}[{}, {}, {}]", i + j ? ", " : "", p.x, p.y, p.z);  // shortest exact
+            }
+        patches += "]";
+    }
+    return "{ type = \"bezier\", closed = true, patches = [" + patches + "]" + (extra.empty() ? "" : ", " + extra) + " }";
 }
 
 }  // namespace lancer::test

@@ -204,26 +204,6 @@ TEST(Csg, WhatCannotBeASolidIsRefusedWithWhy) {
     expect_refused(many + "]\n", 3, "at most 32 solids");
 }
 
-// A Bezier cube of six flat patches, [-a, a]^3 about `centre`, its normals out (or in, where
-// `inward`); `flipped` turns one face alone.
-std::string bezier_cube(double a, dvec3 centre, bool inward = false, int flipped = -1) {
-    const dvec3 x(2 * a, 0, 0), y(0, 2 * a, 0), z(0, 0, 2 * a), lo = centre - dvec3(a);
-    const dvec3 faces[6][3] = {{lo + x, y, z}, {lo, z, y}, {lo + y, z, x}, {lo, x, z}, {lo + z, x, y}, {lo, y, x}};
-    std::string patches;
-    for (int f = 0; f < 6; ++f) {
-        dvec3 u = faces[f][1], v = faces[f][2];
-        if (inward != (f == flipped)) std::swap(u, v);
-        patches += f ? ", [" : "[";
-        for (int i = 0; i < 4; ++i)
-            for (int j = 0; j < 4; ++j) {
-                const dvec3 p = faces[f][0] + u * (i / 3.0) + v * (j / 3.0);
-                patches += fmt::format("{}[{}, {}, {}]", i + j ? ", " : "", p.x, p.y, p.z);
-            }
-        patches += "]";
-    }
-    return "{ type = \"bezier\", closed = true, patches = [" + patches + "] }";
-}
-
 const char* const kParametricSphere =
     R"toml({ type = "parametric", closed = true, x = "0.3 + 0.8*cos(v)*cos(u)", y = "0.2 + 0.8*sin(v)", z = "-0.4 + 0.8*cos(v)*sin(u)", u = [0, "2*pi"], v = ["-pi/2", "pi/2"] })toml";
 // The same sphere with u and v swapped: its normals point in.
@@ -273,8 +253,8 @@ TEST(Csg, AParametricSurfaceDeclaredClosedIsTheSolidItEncloses) {
 
 TEST(Csg, ABezierSurfaceDeclaredClosedIsTheSolidItEncloses) {
     const std::string box = R"({ type = "box", min = [-0.1, -0.2, -0.9], max = [0.9, 0.8, 0.1] })";
-    expect_same_as_twin("difference", kSphere, bezier_cube(0.5, dvec3(0.4, 0.3, -0.4)), box);
-    expect_same_as_twin("intersection", kSphere, bezier_cube(0.5, dvec3(0.4, 0.3, -0.4), true), box);
+    expect_same_as_twin("difference", kSphere, test::bezier_cube(dvec3(0.4, 0.3, -0.4), 0.5), box);
+    expect_same_as_twin("intersection", kSphere, test::bezier_cube(dvec3(0.4, 0.3, -0.4), 0.5, true), box);
 }
 
 // A mesh operand's triangles, their fronts out or in, as the box they close.
@@ -293,7 +273,7 @@ TEST(Csg, ASurfaceThatEnclosesNoSolidIsRefusedWithWhy) {
     // A sphere's cap cut off at 60 degrees: its rim meets nothing.
     expect_refused(difference(R"toml({ type = "parametric", closed = true, x = "cos(v)*cos(u)", y = "sin(v)", z = "cos(v)*sin(u)", u = [0, "2*pi"], v = ["-pi/2", "pi/3"] })toml"),
                    4, "is not closed: the edge of its samples");
-    expect_refused(difference(bezier_cube(0.5, dvec3(0.0), false, 2)), 4, "with opposite orientations");
+    expect_refused(difference(test::bezier_cube(dvec3(0.0), 0.5, false, 2)), 4, "with opposite orientations");
     // Two sides of one square: closed, and no volume.
     std::string square, back;
     for (int i = 0; i < 4; ++i)

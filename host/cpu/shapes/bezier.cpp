@@ -11,6 +11,7 @@
 
 #include "core/finite.hpp"
 #include "cpu/shapes/bezier_algebra.hpp"
+#include "cpu/shapes/line_crossings.hpp"
 #include "cpu/shapes/ray_planes.hpp"
 #include "cpu/shapes/shapes.hpp"
 
@@ -230,7 +231,7 @@ std::vector<LineCrossing> crossings_on_line(const BezierSurface& s, const Ray& r
     std::vector<LineCrossing> crossings;
     for (const BezierPatch& p : s.patches)
         for (const PatchHit& h : intersect_all(p, ray, t0, t1))
-            crossings.push_back({h.t, s.outward * glm::dot(surface::unit_normal(p, h.u, h.v), ray.dir) > 0.0});
+            crossings.push_back({h.t, leaves_solid(s.outward, surface::unit_normal(p, h.u, h.v), ray)});
     std::sort(crossings.begin(), crossings.end(), [](const LineCrossing& a, const LineCrossing& b) { return a.t < b.t; });
     return crossings;
 }

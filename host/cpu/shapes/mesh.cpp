@@ -10,6 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include "cpu/shapes/element_walk.hpp"
+#include "cpu/shapes/line_crossings.hpp"
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
@@ -106,16 +107,10 @@ glm::dvec2 mesh_texture_uv(const Mesh& m, int triangle, const glm::dvec2& b) {
     return (1.0 - b.x - b.y) * mesh.uvs[t[0]] + b.x * mesh.uvs[t[1]] + b.y * mesh.uvs[t[2]];
 }
 
-// Nearest first, each search from a hair past the last crossing (a ray through an edge may hit
-// both its triangles at one t: the second is not a crossing of its own).
+// The gap past each crossing skips the other triangle of an edge the ray passes through.
 std::vector<LineCrossing> crossings_on_line(const Mesh& m, const Ray& ray, double t0, double t1) {
     const double gap = 1e-9 * glm::length(m.geometry->hi() - m.geometry->lo()) / glm::length(ray.dir);
-    std::vector<LineCrossing> crossings;
-    for (double t = t0; auto h = intersect(m, ray, t, t1);) {
-        crossings.push_back({h->t, m.outward * glm::dot(h->normal, ray.dir) > 0.0});
-        t = h->t + gap;
-    }
-    return crossings;
+    return crossings_by_search([&](double from, double to) { return intersect(m, ray, from, to); }, m.outward, ray, t0, t1, gap);
 }
 
 }  // namespace lancer::cpu

@@ -22,6 +22,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "cpu/shapes/line_crossings.hpp"
 #include "cpu/shapes/parametric_tree.hpp"
 #include "cpu/shapes/ray_planes.hpp"
 #include "cpu/shapes/shapes.hpp"
@@ -326,19 +327,11 @@ std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const R
     return SurfaceHit{root->t, surface::surface_normal(s, root->u, root->v), {root->u, root->v}};
 }
 
-// Nearest first, each search starting a hair past the last root: beyond the search's 1e-10 of the
-// surface's size, so that it does not find that root again.
+// The gap past each root is beyond the search's 1e-10 of the surface's size.
 std::vector<LineCrossing> crossings_on_line(const ParametricObject& o, const Ray& ray, double t0, double t1) {
-    constexpr std::size_t kMostCrossings = 256;
     const double gap = 1e-8 * glm::length(o.bounds_hi - o.bounds_lo) / glm::length(ray.dir);
-    std::vector<LineCrossing> crossings;
-    for (double t = t0; crossings.size() < kMostCrossings;) {
-        const auto h = intersect(o.surface, ray, t, t1);
-        if (!h) break;
-        crossings.push_back({h->t, o.outward * glm::dot(h->normal, ray.dir) > 0.0});
-        t = h->t + gap;
-    }
-    return crossings;
+    return crossings_by_search([&](double from, double to) { return intersect(o.surface, ray, from, to); }, o.outward, ray, t0,
+                               t1, gap);
 }
 
 }  // namespace lancer::cpu
