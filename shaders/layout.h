@@ -196,6 +196,12 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // A sphere of a sphere set: (centre, radius), the file's floats.
 #define LANCER_ROWS_SetSphere(VEC4, VEC4S, SCALARS, UVEC4S) VEC4(sphere)
 
+// A component of a blob (shapes/blob.glsl): its segment from a to b (a == b: a sphere component),
+// in the order of its blob's tree's leaves (MESH_NODES, through the blob's MeshInfo).
+#define LANCER_ROWS_BlobElement(VEC4, VEC4S, SCALARS, UVEC4S) \
+    VEC4(a) /* xyz; w: radius */                                \
+    VEC4(b) /* xyz; w: strength */
+
 #define LANCER_ROWS_CsgNode(VEC4, VEC4S, SCALARS, UVEC4S) \
     SCALARS(uint, first_leaf, uint, leaf_count, uint, first_op, uint, op_count)
 
@@ -399,6 +405,7 @@ LANCER_STRUCT(MeshInfo)
 LANCER_STRUCT(MeshNode)
 LANCER_STRUCT(MeshTriangle)
 LANCER_STRUCT(SetSphere)
+LANCER_STRUCT(BlobElement)
 LANCER_STRUCT(BvhNode)
 LANCER_STRUCT(Material)
 LANCER_STRUCT(TextureInfo)
@@ -460,6 +467,7 @@ LANCER_CONST RESOURCE_INT = 4;
     X(MESH_TRIANGLES, 39, RESOURCE_ROWS, MeshTriangle, mesh_triangles, mesh_triangle_at, "mesh triangles") \
     X(MESH_MATERIALS, 40, RESOURCE_UINT, uint, mesh_materials, mesh_material_at, "mesh triangles' and set spheres' materials") \
     X(SET_SPHERES, 41, RESOURCE_ROWS, SetSphere, set_spheres, set_sphere_at, "sphere set spheres")     \
+    X(BLOB_ELEMENTS, 42, RESOURCE_ROWS, BlobElement, blob_elements, blob_element_at, "blob components") \
     X(GRIDS, 31, RESOURCE_ROWS, DirectionGrid, grids, grid_at, "direction grids")                        \
     X(GRID_CELLS, 32, RESOURCE_UINT, uint, grid_cells, grid_cell_at, "direction grid cells")             \
     X(GRID_ENTRIES, 33, RESOURCE_UINT, uint, grid_entries, grid_entry_at, "direction grid entries") /* pairs: primitive, float bits of its nearest distance */
@@ -548,6 +556,7 @@ LANCER_ASSERT_SIZE(MeshInfo)
 LANCER_ASSERT_SIZE(MeshNode)
 LANCER_ASSERT_SIZE(MeshTriangle)
 LANCER_ASSERT_SIZE(SetSphere)
+LANCER_ASSERT_SIZE(BlobElement)
 LANCER_ASSERT_SIZE(BvhNode)
 LANCER_ASSERT_SIZE(Material)
 LANCER_ASSERT_SIZE(TextureInfo)

@@ -18,6 +18,7 @@
 #include "shapes/element_tree.glsl"
 #include "shapes/mesh.glsl"
 #include "shapes/spheres.glsl"
+#include "shapes/blob.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)
 #include "shapes/parametric.glsl"
@@ -61,13 +62,14 @@ bool leaf_hit(Primitive p, Ray world_ray, float t_min, float t_max, out float t_
 #undef LANCER_LEAF_CASE
 #undef csg_intersect
 
-// Whether a walked CSG leaf (SHAPE_CLOSED: the torus and the implicit surfaces, as the CPU
+// Whether a walked CSG leaf (SHAPE_CLOSED: the torus, the blob and the implicit surfaces, as the CPU
 // reference's cpu/shapes/csg.cpp asserts) holds the world ray's point at t.
 bool leaf_inside(Primitive p, Ray world_ray, float t) {
     float k;
     Ray ray = primitive_ray(p, world_ray, k);
     vec3 point = ray.origin + (t * k) * ray.dir;
     if (p.type == SHAPE_TORUS) return SCENE_HAS_TORUS && torus_inside(p, point);
+    if (p.type == SHAPE_BLOB) return SCENE_HAS_BLOB && blob_inside(p, point);
     if (p.type == SHAPE_IMPLICIT) return SCENE_HAS_IMPLICIT && implicit_inside(p, point);
     return false;
 }

@@ -43,7 +43,8 @@
     X(TORUS, torus, Torus, 9, SHAPE_BOUNDED | SHAPE_CLOSED)                                              \
     X(CSG, csg, Csg, 10, SHAPE_BOUNDED)                                                                  \
     X(MESH, mesh, Mesh, 11, SHAPE_BOUNDED | SHAPE_ORIENTED)                                                             \
-    X(SPHERES, spheres, SphereSet, 12, SHAPE_BOUNDED)
+    X(SPHERES, spheres, SphereSet, 12, SHAPE_BOUNDED)                                                   \
+    X(BLOB, blob, Blob, 13, SHAPE_BOUNDED | SHAPE_CLOSED)
 
 #ifdef __cplusplus
 #include <cstdint>
@@ -72,6 +73,10 @@ LANCER_SHAPE_CONST CSG_OR = 2u;
 LANCER_SHAPE_CONST CSG_AND_NOT = 3u;
 LANCER_SHAPE_CONST CSG_NOT = 4u;
 LANCER_SHAPE_CONST CSG_MAX_LEAVES = 32u;  // the insides are the bits of a uint
+
+// A blob (shaders/shapes/blob.glsl) is searched along a ray in windows of at most this many of
+// its components, nearest first: its reader refuses a blob where more may overlap at a point.
+LANCER_SHAPE_CONST BLOB_MAX_OVERLAP = 16u;
 
 #define LANCER_SHAPE_TYPE(NAME, name, Type, type, traits) LANCER_SHAPE_CONST SHAPE_##NAME = type;
 LANCER_SHAPES(LANCER_SHAPE_TYPE)

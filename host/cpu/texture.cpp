@@ -36,6 +36,7 @@ glm::dvec2 texture_uv(const Hit& hit, const dvec3& world_point) {
             return {(hit.uv.x - s.u0) / (s.u1 - s.u0), (hit.uv.y - s.v0) / (s.v1 - s.v0)};
         }
         glm::dvec2 operator()(const ImplicitObject&) const { return hit.uv; }  // x and y across the box
+        glm::dvec2 operator()(const Blob& o) const { return cpu::texture_uv(o, p); }
     };
     return std::visit(Mapping{hit, p, normal}, hit.object->shape);
 }

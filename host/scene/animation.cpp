@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 
 #include "scene/placement.hpp"
+#include "scene/shape_bounds.hpp"
 
 namespace lancer {
 
@@ -32,6 +33,13 @@ void translate(Shape& shape, const dvec3& offset) {
             c.cap += d;
         }
         void operator()(Torus& o) const { o.center += d; }
+        void operator()(Blob& o) const {
+            for (BlobComponent& k : o.components) {
+                k.a += d;
+                k.b += d;
+            }
+            prepare_blob(o);
+        }
         void operator()(Mesh&) const {  // moved by its placement (place() always gives it one)
             throw std::logic_error("a mesh is moved by its placement, not by its shape");
         }

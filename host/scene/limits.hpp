@@ -30,6 +30,8 @@ constexpr long long kMaxMeshTriangles = 1LL << 24;
 // Spheres of a scene's point sets together (each file's once): 16 bytes each on the GPU, with
 // their tree; in float, a sphere's index is exact below 2^24.
 constexpr long long kMaxSetSpheres = 1LL << 24;
+// Components of a scene's blobs together: 32 bytes each on the GPU, with their trees.
+constexpr long long kMaxBlobComponents = 1LL << 22;
 constexpr int kMaxParametricSurfaces = 32;
 constexpr int kMaxImplicitSurfaces = 32;  // each also a function in the shader
 // Operations of a parametric surface's equations after simplification, and of all surfaces of a

@@ -12,6 +12,7 @@
 #include "scene/parse_shapes.hpp"
 #include "scene/parse_surfaces.hpp"
 #include "scene/placement.hpp"
+#include "scene/repeat.hpp"
 #include "scene/scene_values.hpp"
 #include "scene/pov_ray_words.hpp"
 #include "scene/shape_bounds.hpp"
@@ -77,6 +78,7 @@ struct SurfaceTotals {
     long long patches = 0;
     long long triangles = 0;
     long long set_spheres = 0;
+    long long blob_components = 0;
     std::set<const MeshGeometry*> meshes;  // counted once however often placed
     std::set<const SphereCloud*> clouds;
 
@@ -110,6 +112,10 @@ struct SurfaceTotals {
             (set_spheres += static_cast<long long>(set->cloud->spheres().size())) > limits::kMaxSetSpheres)
             t.fail("file", fmt::format("too many spheres in sphere sets: {} so far in the scene's point sets (the limit is {})",
                                        set_spheres, limits::kMaxSetSpheres));
+        const auto* blob = std::get_if<Blob>(&o.shape);
+        if (blob && (blob_components += static_cast<long long>(blob->components.size())) > limits::kMaxBlobComponents)
+            t.fail("type", fmt::format("too many blob components: {} so far in the scene (the limit is {})", blob_components,
+                                       limits::kMaxBlobComponents));
         const auto* b = std::get_if<BezierSurface>(&o.shape);
         if (b && (patches += static_cast<long long>(b->patches.size())) > limits::kMaxPatches)
             t.fail("type", fmt::format("too many Bezier patches: {} so far (the limit is {} per scene)", patches,
@@ -163,36 +169,18 @@ struct ObjectReading {
         return TableReader(*table, t.file(), describe_object("declared object '" + name + "'", *table));
     }
 
-    // POV-Ray's #for: `repeat = { i = [first, last] }` reads the entry once for each whole i
-    // from first to last, with i a name its numbers' expressions may use.
+    // POV-Ray's #for (scene/repeat.hpp): each copy is a placement, so that a few nested lines
+    // cannot make a million objects.
     void entry(TableReader& t, std::uint32_t material, const glm::dmat4& parent, int depth, const std::string& group = "") {
-        const toml::table* repeat = t.table("repeat");
-        if (!repeat) return entry_with_defines(t, material, parent, depth, group);
-        TableReader r(*repeat, t.file(), t.what() + " repeat");
-        if (repeat->size() != 1) t.fail("repeat", "repeat takes one index: repeat = { i = [first, last] }");
-        const std::string index(repeat->cbegin()->first.str());
-        SceneValues& values = *current_scene_values();
-        values.check_new_name(index, r.location(index), "repeat index");
-        const toml::array* bounds = r.array(index);
-        if (!bounds || bounds->size() != 2) r.fail(index, fmt::format("repeat = {{ {} = [first, last] }}: two whole numbers", index));
-        const double first = node_number(*bounds->get(0), t.file(), index + "[0]"), last = node_number(*bounds->get(1), t.file(), index + "[1]");
-        if (first != std::floor(first) || last != std::floor(last))
-            r.fail(index, fmt::format("a repeat's first and last are whole numbers, not {:g} and {:g}", first, last));
-        // A copy is a placement: a few nested lines must not make a million objects.
-        const double copies = std::max(0.0, last - first + 1.0);
-        if (copies + placements > limits::kMaxPlacements)
-            r.fail(index, fmt::format("repeat {} from {:g} to {:g}: {:g} copies, beyond the {} copies and placements a scene may "
-                                      "make ({} so far)",
-                                      index, first, last, copies, limits::kMaxPlacements, placements));
-        placements += static_cast<int>(copies);
-        for (double i = first; i <= last; ++i) {
-            values.bind(index, i);
-            TableReader again(t.table(), t.file(), fmt::format("{} ({} = {:g})", t.what(), index, i));
-            again.accept("repeat");
-            entry_with_defines(again, material, parent, depth, group);
-        }
-        values.unbind(index);
-        t.accept("repeat");
+        read_repeated(
+            t,
+            [&](double copies, const auto& fail) {
+                if (copies + placements > limits::kMaxPlacements)
+                    fail(fmt::format("beyond the {} copies and placements a scene may make ({} so far)", limits::kMaxPlacements,
+                                     placements));
+                placements += static_cast<int>(copies);
+            },
+            [&](TableReader& copy) { entry_with_defines(copy, material, parent, depth, group); });
     }
 
     // POV-Ray's #declare inside a loop: `define = { y = "sin(i)" }` names values for this
@@ -362,7 +350,7 @@ struct ObjectReading {
             if (!(shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED) || shape_has(kind, SHAPE_ORIENTED)) ||
                 (cone && cone->open))
                 t.fail(cone ? "open" : "type",
-                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, torus, "
+                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, torus, blob, "
                                    "implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, "
                                    "closed meshes, plane as the half-space behind its normal) and CSG objects and groups of them",
                                    cone ? "an open " : "a ", type == "spheres" ? "sphere set" : type));

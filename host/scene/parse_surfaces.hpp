@@ -20,9 +20,9 @@ Shape read_parametric(TableReader& t, const glm::dmat4& to_world);
 Shape read_implicit(TableReader& t, const glm::dmat4& to_world);
 Shape read_mesh(TableReader& t, const glm::dmat4& to_world);  // parse_mesh.cpp
 Shape read_spheres(TableReader& t, const glm::dmat4& to_world);  // parse_spheres.cpp: a sphere set
-// POV-Ray's superellipsoid and blob, as the implicit surfaces they are (parse_implicit_solids.cpp).
+// POV-Ray's superellipsoid, as the implicit surface it is (parse_implicit_solids.cpp).
 Shape read_superellipsoid(TableReader& t, const glm::dmat4& to_world);
-Shape read_blob(TableReader& t, const glm::dmat4& to_world);
+Shape read_blob(TableReader& t, const glm::dmat4& to_world);  // parse_blob.cpp: POV-Ray's blob
 
 // Where in the scene file a column of f's text is: inside the `function` string, or the key
 // whose values the function was written from.

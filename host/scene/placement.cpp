@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 
 #include "scene/animation.hpp"
+#include "scene/shape_bounds.hpp"
 
 namespace lancer {
 
@@ -95,6 +96,16 @@ struct Absorber {
         o.minor_radius *= s;
         o.u_axis = glm::normalize(rotation * o.u_axis);
         o.v_axis = glm::normalize(rotation * o.v_axis);
+        return true;
+    }
+    bool operator()(Blob& o) const {  // the fields' shape is kept by a similarity, not by a stretch
+        if (s == 0.0) return false;
+        for (BlobComponent& k : o.components) {
+            k.a = apply(m, k.a);
+            k.b = apply(m, k.b);
+            k.radius *= s;
+        }
+        prepare_blob(o);
         return true;
     }
     bool operator()(Csg&) const { return true; }  // its reader placed each leaf

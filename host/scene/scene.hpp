@@ -17,6 +17,7 @@
 #include "image/tone.hpp"
 #include "optics/metals.hpp"
 #include "mesh/mesh_geometry.hpp"
+#include "mesh/element_tree.hpp"
 #include "mesh/sphere_cloud.hpp"
 #include "scene/material_maps.hpp"
 #include "shapes.h"  // the shape registry
@@ -335,6 +336,28 @@ struct SphereSet {
     }
 };
 
+// POV-Ray's blob (docs/scene-format.md): the field of each component is
+// strength (1 - d^2 / radius^2)^2 within radius of its centre (a sphere: a == b) or of its segment
+// from a to b (a cylinder with round ends, as POV-Ray's), 0 beyond. The surface is where the
+// fields' sum is the threshold; its inside (f = threshold - field < 0) where the sum is more.
+// Along a ray each component's field is a quartic in t between the points where the ray enters
+// or leaves it or crosses its segment's end planes: the surface's roots are exact, interval by
+// interval (cpu/shapes/blob.cpp, shaders/shapes/blob.glsl). Texture (u, v): the hit's x and y
+// across the box, as an implicit surface's.
+struct BlobComponent {
+    dvec3 a{0.0}, b{0.0};
+    double radius = 1.0;
+    double strength = 1.0;
+    bool is_sphere() const { return a == b; }
+};
+struct Blob {
+    double threshold = 0.5;
+    std::vector<BlobComponent> components;
+    // Set by prepare_blob (shape_bounds.hpp) whenever the components change:
+    dvec3 lo{0.0}, hi{0.0};  // the box of the components of positive strength: the surface is inside it
+    std::shared_ptr<const ElementTree> tree;  // over the components' boxes (the CPU reference's own)
+};
+
 struct Object;
 
 // Constructive solid geometry: POV-Ray's intersection, difference and merge (docs/scene-format.md,
@@ -351,7 +374,7 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus, Csg, Mesh,
-                           SphereSet>;
+                           SphereSet, Blob>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \

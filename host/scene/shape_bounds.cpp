@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -48,6 +50,7 @@ struct BoundsOf {
         return Aabb{o.center - reach, o.center + reach};
     }
     std::optional<Aabb> operator()(const Csg& c) const { return Aabb{c.lo, c.hi}; }
+    std::optional<Aabb> operator()(const Blob& o) const { return Aabb{o.lo, o.hi}; }
     std::optional<Aabb> operator()(const Mesh& m) const { return Aabb{m.geometry->lo(), m.geometry->hi()}; }  // the file's
     std::optional<Aabb> operator()(const SphereSet& s) const { return Aabb{s.cloud->lo(), s.cloud->hi()}; }
     std::optional<Aabb> operator()(const ParametricObject& p) const { return Aabb{p.bounds_lo, p.bounds_hi}; }
@@ -116,6 +119,22 @@ std::optional<Aabb> object_bounds(const Object& o) {
     // Widened by a few roundings of its size, as the disc's: the corners' products round.
     const dvec3 pad = 1e-15 * (glm::abs(world.lo) + glm::abs(world.hi));
     return Aabb{world.lo - pad, world.hi + pad};
+}
+
+void prepare_blob(Blob& o) {
+    o.lo = dvec3(std::numeric_limits<double>::infinity());
+    o.hi = -o.lo;
+    for (const BlobComponent& k : o.components) {
+        if (!(k.strength > 0.0)) continue;
+        o.lo = glm::min(o.lo, glm::min(k.a, k.b) - k.radius);
+        o.hi = glm::max(o.hi, glm::max(k.a, k.b) + k.radius);
+    }
+    o.tree = std::make_shared<const ElementTree>(
+        build_element_tree(static_cast<std::uint32_t>(o.components.size()), [&](std::uint32_t i, dvec3& lo, dvec3& hi) {
+            const BlobComponent& k = o.components[i];
+            lo = glm::min(lo, glm::min(k.a, k.b) - k.radius);
+            hi = glm::max(hi, glm::max(k.a, k.b) + k.radius);
+        }));
 }
 
 }  // namespace lancer

@@ -10,6 +10,10 @@
 namespace lancer {
 
 std::optional<Aabb> shape_bounds(const Shape& shape);
+
+// Sets what a blob keeps beside its components: its box (its components of positive strength,
+// where the field can reach its threshold) and the tree over their boxes.
+void prepare_blob(Blob& o);
 // The world box of an object: its shape's, carried through its placement where the shape keeps
 // its own coordinates.
 std::optional<Aabb> object_bounds(const Object& o);

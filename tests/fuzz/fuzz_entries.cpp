@@ -151,6 +151,17 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require(std::abs(glm::length(s.axis) - 1.0) < 1e-9, when, ": torus axis not unit");
                     require(std::isfinite(s.major_radius) && s.major_radius > 0.0, when, ": torus major radius");
                     require(std::isfinite(s.minor_radius) && s.minor_radius > 0.0, when, ": torus minor radius");
+                } else if constexpr (std::is_same_v<T, Blob>) {
+                    require(std::isfinite(s.threshold) && s.threshold > 0.0, when, ": blob threshold");
+                    require(!s.components.empty(), when, ": blob without components");
+                    for (const BlobComponent& k : s.components) {
+                        require_finite(k.a, when, ": blob component");
+                        require_finite(k.b, when, ": blob component");
+                        require(std::isfinite(k.radius) && k.radius > 0.0, when, ": blob component radius");
+                        require(std::isfinite(k.strength) && k.strength != 0.0, when, ": blob component strength");
+                    }
+                    require_finite(s.lo, when, ": blob box");
+                    require_finite(s.hi, when, ": blob box");
                 } else if constexpr (std::is_same_v<T, Mesh>) {
                     require(s.geometry && !s.geometry->mesh().triangles.empty(), when, ": mesh without triangles");
                     const TriangleMesh& m = s.geometry->mesh();

@@ -70,6 +70,7 @@ std::vector<Interval> walked_inside(const Object& leaf, const Ray& ray) {
         return spans;
     };
     if (const auto* torus = std::get_if<Torus>(&leaf.shape)) return walk(*torus);
+    if (const auto* blob = std::get_if<Blob>(&leaf.shape)) return walk(*blob);
     return walk(std::get<ImplicitObject>(leaf.shape));
 }
 
@@ -127,13 +128,13 @@ bool walked(const Object& leaf) {
     return shape_has(type, SHAPE_CLOSED) || shape_has(type, SHAPE_ORIENTED);
 }
 
-// walked_inside (and the GPU's leaf_inside, shaders/scene.glsl) know these two closed shapes.
-constexpr bool closed_shapes_are_torus_and_implicit() {
+// walked_inside (and the GPU's leaf_inside, shaders/scene.glsl) know these three closed shapes.
+constexpr bool closed_shapes_are_torus_implicit_and_blob() {
     for (std::uint32_t t = 0; t < SHAPE_COUNT; ++t)
-        if (shape_has(t, SHAPE_CLOSED) != (t == SHAPE_TORUS || t == SHAPE_IMPLICIT)) return false;
+        if (shape_has(t, SHAPE_CLOSED) != (t == SHAPE_TORUS || t == SHAPE_IMPLICIT || t == SHAPE_BLOB)) return false;
     return true;
 }
-static_assert(closed_shapes_are_torus_and_implicit());
+static_assert(closed_shapes_are_torus_implicit_and_blob());
 
 bool value(const Csg& c, const std::array<Interval, CSG_MAX_LEAVES>& inside, double t, bool after) {
     std::uint64_t stack = 0;

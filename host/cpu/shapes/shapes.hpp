@@ -36,6 +36,12 @@ std::optional<SurfaceHit> intersect(const Cone& c, const Ray& ray, double t_min,
 // reported where they prove exactly one, or where a piece of 1e-12 of the segment cannot be
 // told from a touching point). Any ray direction length works.
 std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min, double t_max);
+// The nearest point in (t_min, t_max) where the blob's field reaches its threshold: along the ray
+// each component's field is a quartic in t between the points where the ray enters or leaves its
+// support or crosses its segment's end planes, so the field's sum is one quartic per stretch
+// between those points, whose roots are isolated there by Bernstein subdivision (certified, as
+// the torus's). The normal is the field's gradient, turned outward. Any ray direction length.
+std::optional<SurfaceHit> intersect(const Blob& o, const Ray& ray, double t_min, double t_max);
 // Certified (interval Newton) search for the nearest root; `normal` is surface_normal() there
 // and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
 std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
@@ -64,6 +70,8 @@ std::vector<double> roots_on_line(const Torus& o, const Ray& ray);
 bool inside(const Torus& o, const dvec3& p);
 std::vector<double> roots_on_line(const ImplicitObject& o, const Ray& ray);
 bool inside(const ImplicitObject& o, const dvec3& p);
+std::vector<double> roots_on_line(const Blob& o, const Ray& ray);
+bool inside(const Blob& o, const dvec3& p);
 
 // The surfaces that close a solid (SHAPE_ORIENTED: CSG walks their inside along a line):
 // every point where the ray's line crosses the surface with t in (t0, t1), nearest first, and
@@ -117,6 +125,7 @@ glm::dvec2 texture_uv(const Box& b, const dvec3& p, const dvec3& face_normal);
 glm::dvec2 texture_uv(const Disc& d, const dvec3& p);
 glm::dvec2 texture_uv(const Cone& c, const dvec3& p, int part);
 glm::dvec2 texture_uv(const Torus& o, const dvec3& p);
+glm::dvec2 texture_uv(const Blob& o, const dvec3& p);  // x and y across its box
 
 // Bicubic (rational) Bezier patches, exactly, by resultant + generalized eigenvalues (bezier.cpp).
 // The ray's direction need not be unit length: t is in units of it. intersect_all returns every

@@ -8,17 +8,11 @@
 //   h-(p) = (rho - a)^2 + y^2 - b^2,   h+(p) = (rho + a)^2 + y^2 - b^2,   rho^2 = x^2 + z^2:
 // h- = 0 is the tube about the circle (the whole ring torus, the spindle's outer "apple"), h+ = 0
 // its mirror through the axis (the spindle's inner "lemon", empty for b < a). Along the ray, cut
-// to the unit ball and the slab |y| <= b, f is a quartic g(tau), tau in [-1, 1] over the segment.
-// Its Bernstein coefficients over a piece enclose g there (convex hull), and their sign
-// variations bound its roots there (Descartes' rule, which is exact for one variation):
-//   * every coefficient beyond its rounding bound on one side: no root in the piece;
-//   * one variation, every coefficient beyond its rounding bound: exactly one root, found by
-//     bisection on f evaluated by its factored form (accurate near the surface);
-//   * else the piece is halved (de Casteljau), nearer half first, down to 1e-12 of the segment,
-//     where a piece whose coefficients still straddle 0 within their rounding is a touching point
-//     (a ray tangent to the tube, or through a spindle's cusp): a hit, as the implicit surfaces'
-//     reference counts it (cpu/shapes/implicit.cpp).
-// Nothing is missed: a piece is dropped only on a proof that g keeps one sign over it.
+// to the unit ball and the slab |y| <= b, f is a quartic g(tau), tau in [-1, 1] over the segment,
+// whose roots are isolated by Bernstein subdivision (cpu/shapes/bernstein_roots.hpp: a piece is
+// dropped only on a proof that g keeps one sign over it), each found by bisection on f's factored
+// form (accurate near the surface); a piece of 1e-12 of the segment whose coefficients still
+// straddle 0 is a touching point (a ray tangent to the tube, or through a spindle's cusp): a hit.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -29,16 +23,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "cpu/shapes/bernstein_roots.hpp"
 #include "cpu/shapes/shapes.hpp"
 
 namespace lancer::cpu {
 namespace {
 
-constexpr double kEpsilon = 2.220446049250313e-16;
-constexpr double kTouchingWidth = 1e-12;  // of tau's [-1, 1]: a piece this narrow is a point
-constexpr double kMargin = 1e-9;          // the ball and slab widened (scaled units): the surface touches the ball
-
-using Bernstein = std::array<double, 5>;
+constexpr double kMargin = 1e-9;  // the ball and slab widened (scaled units): the surface touches the ball
 
 struct TorusFrame {
     dvec3 o, d;      // the ray in the scaled frame: o + sigma d, |d| = 1
@@ -53,77 +44,6 @@ double f_factored(const TorusFrame& fr, const dvec3& p) {
     const double plus = (rho + fr.a) * (rho + fr.a) + y2b2;
     return minus * plus;
 }
-
-class Isolator {
-public:
-    Isolator(const TorusFrame& fr, const dvec3& base, double half, double sigma_mid, double t_min, double t_max)
-        : fr_(fr), base_(base), half_(half), sigma_mid_(sigma_mid), t_min_(t_min), t_max_(t_max) {}
-
-    // The roots in (lo, hi) whose t is in (t_min, t_max), nearest first, into `roots`: all of
-    // them, or only the nearest (true once it is found).
-    bool find(const Bernstein& c, double lo, double hi, double error, bool nearest_only, std::vector<double>& roots) const {
-        double min = c[0], max = c[0];
-        for (double x : c) {
-            min = std::min(min, x);
-            max = std::max(max, x);
-        }
-        if (min > error || max < -error) return false;  // proved: no root here
-        bool certain = true;
-        int variations = 0;
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            certain = certain && std::abs(c[i]) > error;
-            if (i > 0 && (c[i] > 0.0) != (c[i - 1] > 0.0)) ++variations;
-        }
-        if (certain && variations == 1) return accept(bisect(lo, hi, c[0] > 0.0), nearest_only, roots);
-        if (hi - lo <= kTouchingWidth) return accept(0.5 * (lo + hi), nearest_only, roots);  // within rounding of a touching point
-        Bernstein left, right;
-        split(c, left, right);
-        const double mid = 0.5 * (lo + hi);
-        // Each de Casteljau level averages: one more rounding of the largest coefficient.
-        const double next = error + 2.0 * kEpsilon * std::max(std::abs(min), std::abs(max));
-        if (find(left, lo, mid, next, nearest_only, roots)) return true;
-        return find(right, mid, hi, next, nearest_only, roots);
-    }
-
-    double sigma(double tau) const { return sigma_mid_ + half_ * tau; }
-
-private:
-    bool accept(double tau, bool nearest_only, std::vector<double>& roots) const {
-        const double t = sigma(tau) * fr_.to_t;
-        if (!(t > t_min_ && t < t_max_)) return false;
-        roots.push_back(tau);
-        return nearest_only;
-    }
-
-    // The one root in (lo, hi) where g(lo) has sign `lo_positive`: bisection on f's factored form
-    // until the bracket stops shrinking.
-    double bisect(double lo, double hi, bool lo_positive) const {
-        for (int i = 0; i < 200; ++i) {
-            const double mid = 0.5 * (lo + hi);
-            if (!(mid > lo && mid < hi)) break;
-            const double value = f_factored(fr_, base_ + (half_ * mid) * fr_.d);
-            if (value == 0.0) return mid;
-            if ((value > 0.0) == lo_positive) lo = mid; else hi = mid;
-        }
-        return 0.5 * (lo + hi);
-    }
-
-    static void split(const Bernstein& c, Bernstein& left, Bernstein& right) {
-        Bernstein w = c;
-        const std::size_t n = c.size() - 1;
-        left[0] = w[0];
-        right[n] = w[n];
-        for (std::size_t k = 1; k <= n; ++k) {
-            for (std::size_t i = 0; i + k <= n; ++i) w[i] = 0.5 * (w[i] + w[i + 1]);
-            left[k] = w[0];
-            right[n - k] = w[n - k];
-        }
-    }
-
-    const TorusFrame& fr_;
-    dvec3 base_;
-    double half_, sigma_mid_, t_min_, t_max_;
-};
 
 // The gradient of f = h- h+ in the scaled frame, from the factors (each accurate near its zero).
 dvec3 gradient(double a, double b, const dvec3& p) {
@@ -192,7 +112,7 @@ std::vector<std::pair<double, dvec3>> torus_roots(const Torus& o, const Ray& ray
     const double r0 = P.x * P.x + P.z * P.z, r1 = 2.0 * half * (P.x * D.x + P.z * D.z),
                  r2 = half * half * (D.x * D.x + D.z * D.z);
     // f = q^2 - 4 a^2 rho^2: power coefficients, and the sums of their terms' magnitudes.
-    std::array<double, 5> p{}, m{};
+    bernstein::Quartic p{}, m{};
     p[0] = f_factored(fr, P);
     m[0] = q0 * q0 + 4.0 * a2 * r0;
     p[1] = 2.0 * q0 * q1 - 4.0 * a2 * r1;
@@ -203,41 +123,24 @@ std::vector<std::pair<double, dvec3>> torus_roots(const Torus& o, const Ray& ray
     m[3] = std::abs(p[3]);
     p[4] = q2 * q2;
     m[4] = p[4];
-    // tau = 2x - 1 on x in [0, 1], then Bernstein coefficients over [0, 1] (implicit.cpp's
-    // descartes_agrees does the same for any degree); magnitudes carried alongside.
-    std::array<double, 5> px{}, mx{};
-    for (int i = 0; i < 5; ++i) {
-        double binomial = 1.0;  // C(i, j)
-        for (int j = 0; j <= i; ++j) {
-            const double term = p[i] * binomial * std::ldexp(((i - j) & 1) ? -1.0 : 1.0, j);
-            px[j] += term;
-            mx[j] += std::abs(m[i] * binomial * std::ldexp(1.0, j));
-            binomial = binomial * double(i - j) / double(j + 1);
-        }
-    }
-    Bernstein bern{};
-    double magnitude = 0.0;
-    static constexpr double kBinomial4[5] = {1, 4, 6, 4, 1};
-    for (int j = 0; j < 5; ++j) {
-        double sum = 0.0, sum_mag = 0.0, c_jk = 1.0;  // C(j, k)
-        for (int kk = 0; kk <= j; ++kk) {
-            sum += c_jk / kBinomial4[kk] * px[kk];
-            sum_mag += c_jk / kBinomial4[kk] * mx[kk];
-            c_jk = c_jk * double(j - kk) / double(kk + 1);
-        }
-        bern[j] = sum;
-        magnitude = std::max(magnitude, sum_mag);
-    }
+    const bernstein::Form bern = bernstein::from_power(p, m);
     // Each coefficient carries a few dozen roundings of the magnitudes it was formed from (the
     // ray's frame, q and rho^2, their products, two changes of basis): 256 is generous.
-    const double error = 256.0 * kEpsilon * magnitude;
+    const double error = 256.0 * bernstein::kEpsilon * bern.magnitude;
 
     // tau from -1 to 1 is sigma from mid - half to mid + half about tc.
-    Isolator isolator(fr, P, half, tc + mid, t_min, t_max);
+    auto sigma = [&](double tau) { return tc + mid + half * tau; };
     std::vector<double> taus;
-    isolator.find(bern, -1.0, 1.0, error, nearest_only, taus);
+    auto accept = [&](double tau, double, double) {
+        const double t = sigma(tau) * fr.to_t;
+        if (!(t > t_min && t < t_max)) return false;
+        taus.push_back(tau);
+        return nearest_only;
+    };
+    auto value = [&](double tau) { return f_factored(fr, P + (half * tau) * D); };
+    bernstein::isolate(bern.c, -1.0, 1.0, error, value, accept);
     std::vector<std::pair<double, dvec3>> roots;
-    for (double tau : taus) roots.emplace_back(isolator.sigma(tau) * fr.to_t, gradient(fr.a, fr.b, P + (half * tau) * D));
+    for (double tau : taus) roots.emplace_back(sigma(tau) * fr.to_t, gradient(fr.a, fr.b, P + (half * tau) * D));
     return roots;
 }
 

@@ -254,6 +254,21 @@ struct PrimitivePacker {
             out.set_spheres.push_back(SetSphere{spheres[index]});
         }
     }
+    // One primitive, p0.x its threshold, p1 and p2 its box (the texture's (u, v) across it), data
+    // its components' tree (a MeshInfo over BLOB_ELEMENTS, in the tree's leaf order).
+    void operator()(const Blob& o) {
+        std::vector<Aabb> boxes;
+        boxes.reserve(o.components.size());
+        for (const BlobComponent& k : o.components) boxes.push_back(Aabb{glm::min(k.a, k.b) - k.radius, glm::max(k.a, k.b) + k.radius});
+        const Bvh bvh = build_bvh(boxes, BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
+        const auto index = static_cast<uint>(out.meshes.size());
+        out.meshes.push_back(pack_element_tree(bvh, static_cast<uint>(out.blob_elements.size()), static_cast<uint>(o.components.size())));
+        for (std::uint32_t i : bvh.order) {
+            const BlobComponent& k = o.components[i];
+            out.blob_elements.push_back(BlobElement{v4(k.a, k.radius), v4(k.b, k.strength)});
+        }
+        add({SHAPE_BLOB, material, index, object, vec4(float(o.threshold), 0.0f, 0.0f, 0.0f), v4(o.lo), v4(o.hi)}, shape_bounds(o));
+    }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
     // Each cell of the surface's domain is a primitive with the cell's proved box; the surface
