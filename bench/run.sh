@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # lancer's benchmark suite against POV-Ray 3.7 (a benchmark, never a test: speed is not asserted).
 #
-#   bench/run.sh [runs=3] [all|classic|implicit|quality|parametric|mesh|shapes]
+#   bench/run.sh [runs=3] [all|classic|implicit|quality|parametric|mesh|shapes|blobs]
 #
 # For each suite scene, in one run so the ratios mean something on a shared, noisy machine:
 # lancer on the GPU path (lavapipe here), lancer's CPU reference, and POV-Ray rendering the same
@@ -36,6 +36,10 @@
 # The shapes people build with (suite `shapes`, not in `all`): bench/shapes.toml (cylinder, cone,
 # disc, torus, a CSG die, a superellipsoid and a blob, opaque) against the POV-Ray twin that
 # bench/toml_to_pov.py writes into bench/out/.
+#
+# A blob of thousands of components (suite `blobs`, not in `all`): bench/make_blob_field.py's
+# rippled pool of 4,900 sphere components and a crown of 72 droplets, written into bench/out/,
+# against its POV-Ray twin (bench/toml_to_pov.py).
 #
 # Installs POV-Ray (and GNU time) with apt-get when missing: the benchmark's own setup, not the
 # main one.
@@ -272,17 +276,22 @@ if [ "$suite" = all ] || [ "$suite" = classic ]; then
   # POV-Ray's parametric (Lipschitz subdivision) needs minutes for even a small torus image.
   bench_scene torus 160 90 160 90 parametric
 fi
-if [ "$suite" = mesh ] || [ "$suite" = shapes ]; then
-  [ "$suite" = shapes ] || [ -f bench/out/torus_knot_million.obj ] || python3 scenes/tools/make_meshes.py --million
+if [ "$suite" = mesh ] || [ "$suite" = shapes ] || [ "$suite" = blobs ]; then
+  [ "$suite" = mesh ] && { [ -f bench/out/torus_knot_million.obj ] || python3 scenes/tools/make_meshes.py --million; }
   names="bunny knot_million"
   [ "$suite" = shapes ] && names=shapes
+  if [ "$suite" = blobs ]; then
+    python3 bench/make_blob_field.py >"$out/blob_field.toml"
+    names=out/blob_field
+  fi
   printf '| scene | size | rays/pixel | renderer | wall s | render s | Mrays/s | peak MiB | POV wall / this |\n'
   printf '|---|---|---|---|---|---|---|---|---|\n'
-  for name in $names; do
-    python3 bench/toml_to_pov.py "bench/$name.toml" >"$out/$name.pov"
-    build/lancer render "bench/$name.toml" --width 64 --height 36 -q -o "$out/warm.png"
-    gpu=$(measure run_lancer "bench/$name.toml" 1280 720 gpu)
-    cpu=$(measure run_lancer "bench/$name.toml" 1280 720 cpu)
+  for path in $names; do
+    name=$(basename "$path")
+    python3 bench/toml_to_pov.py "bench/$path.toml" >"$out/$name.pov"
+    build/lancer render "bench/$path.toml" --width 64 --height 36 -q -o "$out/warm.png"
+    gpu=$(measure run_lancer "bench/$path.toml" 1280 720 gpu)
+    cpu=$(measure run_lancer "bench/$path.toml" 1280 720 cpu)
     pov=$(measure run_pov "$out/$name.pov" 1280 720 "$name")
     pov_wall=$(awk '{print $1}' <<<"$pov")
     row "$name" 1280x720 9 "lancer gpu" "$gpu" "$pov_wall"

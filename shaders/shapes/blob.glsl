@@ -52,15 +52,19 @@ bool blob_support(BlobElement e, Ray ray, out float t0, out float t1, out float 
         t0 = min(t0, -beta - root);
         t1 = max(t1, -beta + root);
     }
-    // The cylinder between the end planes: the parts of f and d across the axis.
+    // The cylinder between the end planes: the parts of f and d across the axis, from the ray's
+    // point nearest a (t = near), as the balls' are from theirs: from the origin, C and B^2 would
+    // be of |f|^2 and cancel to nothing in float for a ray from far off.
+    float near = -dot(f, ray.dir);
     vec3 u = axis / sqrt(length2);
-    float fu = dot(f, u), du = dot(ray.dir, u), len = sqrt(length2);
-    vec3 fp = f - fu * u, dp = ray.dir - du * u;
+    vec3 fn = f + near * ray.dir;
+    float fu = dot(fn, u), du = dot(ray.dir, u), len = sqrt(length2);
+    vec3 fp = fn - fu * u, dp = ray.dir - du * u;
     float A = dot(dp, dp), B = dot(fp, dp), C = dot(fp, fp) - r2;
     float s0 = -INFINITY, s1 = INFINITY;  // the slab between the end planes
     if (du != 0.0) {
-        ta = -fu / du;
-        tb = (len - fu) / du;
+        ta = near - fu / du;
+        tb = near + (len - fu) / du;
         s0 = min(ta, tb);
         s1 = max(ta, tb);
     } else if (fu < 0.0 || fu > len) {
@@ -70,7 +74,7 @@ bool blob_support(BlobElement e, Ray ray, out float t0, out float t1, out float 
         float d2 = B * B - A * C;
         if (d2 >= 0.0) {
             float q = -(B + (B >= 0.0 ? 1.0 : -1.0) * sqrt(d2));
-            float c0 = q / A, c1 = q != 0.0 ? C / q : c0;
+            float c0 = near + q / A, c1 = q != 0.0 ? near + C / q : c0;
             s0 = max(s0, min(c0, c1));
             s1 = min(s1, max(c0, c1));
         } else {
