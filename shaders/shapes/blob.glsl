@@ -21,11 +21,19 @@
 // last's start.
 const int BLOB_WINDOW = int(BLOB_MAX_OVERLAP);
 
+// The most a component of positive strength gives at the least q = d^2 / r^2 the line reaches.
+float blob_peak(BlobElement e, float q_least) {
+    float most = max(1.0 - q_least, 0.0);
+    return max(e.b.w, 0.0) * most * most;
+}
+
 // The ray's stretch (t0, t1) inside component e's support (the capsule of radius r about its
 // segment: convex, so the union of its pieces' stretches), and where it crosses the end planes
-// (ta at a, tb at b; INFINITY for a sphere or a ray along the planes). False where it misses.
-bool blob_support(BlobElement e, Ray ray, out float t0, out float t1, out float ta, out float tb) {
+// (ta at a, tb at b; INFINITY for a sphere or a ray along the planes), and the most its field
+// is anywhere along the line (`peak`). False where it misses.
+bool blob_support(BlobElement e, Ray ray, out float t0, out float t1, out float ta, out float tb, out float peak) {
     float r2 = e.a.w * e.a.w;
+    peak = 0.0;
     vec3 f = ray.origin - e.a.xyz;
     t0 = INFINITY;
     t1 = -INFINITY;
@@ -42,7 +50,10 @@ bool blob_support(BlobElement e, Ray ray, out float t0, out float t1, out float 
     }
     vec3 axis = e.b.xyz - e.a.xyz;
     float length2 = dot(axis, axis);
-    if (length2 == 0.0) return t0 < t1;
+    if (length2 == 0.0) {
+        peak = blob_peak(e, dot(perp, perp) / r2);
+        return t0 < t1;
+    }
     vec3 g = ray.origin - e.b.xyz;
     beta = dot(g, ray.dir);
     perp = g - beta * ray.dir;
@@ -87,6 +98,8 @@ bool blob_support(BlobElement e, Ray ray, out float t0, out float t1, out float 
         t0 = min(t0, s0);
         t1 = max(t1, s1);
     }
+    // The line comes no nearer the segment than the axis's line.
+    peak = blob_peak(e, (A > 0.0 ? max(dot(fp, fp) - B * B / A, 0.0) : dot(fp, fp)) / r2);
     return t0 < t1;
 }
 
@@ -178,7 +191,7 @@ float blob_first_root(float k0, vec4 k, float w, float tolerance) {
 
 // A window of the components the ray meets, nearest entry first (the gathered stretches).
 struct BlobWindow {
-    float t0[BLOB_WINDOW], t1[BLOB_WINDOW], ta[BLOB_WINDOW], tb[BLOB_WINDOW];
+    float t0[BLOB_WINDOW], t1[BLOB_WINDOW], ta[BLOB_WINDOW], tb[BLOB_WINDOW], peak[BLOB_WINDOW];
     uint element[BLOB_WINDOW];
     int count;
     float cut;  // every component entered before it and left after `from` is in the window
@@ -191,11 +204,13 @@ vec2 blob_box_span(vec3 lo, vec3 hi, Ray ray, vec3 inv_dir) {
     return vec2(max(max(near.x, near.y), near.z), min(min(far.x, far.y), far.z));
 }
 
-// The window of the components that hold some point of the ray in (from, until), entered first.
-BlobWindow blob_gather(MeshInfo info, Ray ray, float from, float until) {
-    BlobWindow win;
-    win.count = 0;
-    win.cut = until;
+// The window being searched: one per invocation, not copied between the functions below.
+BlobWindow blob_window;
+
+// Gathers into `blob_window` the components that hold some point of the ray in (from, until), entered first.
+void blob_gather(MeshInfo info, Ray ray, float from, float until) {
+    blob_window.count = 0;
+    blob_window.cut = until;
     vec3 inv_dir = safe_inverse(ray.dir);
     uint stack[ELEMENT_STACK_SIZE];
     int sp = 0;
@@ -203,7 +218,7 @@ BlobWindow blob_gather(MeshInfo info, Ray ray, float from, float until) {
     while (sp > 0) {
         MeshNode n = mesh_node_at(stack[--sp]);
         vec2 span = blob_box_span(n.lo.xyz, n.hi.xyz, ray, inv_dir);
-        if (!(span.x <= span.y) || span.y <= from || span.x >= win.cut) continue;
+        if (!(span.x <= span.y) || span.y <= from || span.x >= blob_window.cut) continue;
         if (n.count == 0u) {
             if (sp + 2 <= ELEMENT_STACK_SIZE) {
                 stack[sp++] = n.first + 1u;
@@ -212,46 +227,51 @@ BlobWindow blob_gather(MeshInfo info, Ray ray, float from, float until) {
             continue;
         }
         for (uint i = n.first; i < n.first + n.count; ++i) {
-            float t0, t1, ta, tb;
-            if (!blob_support(blob_element_at(i), ray, t0, t1, ta, tb) || t1 <= from || t0 >= win.cut) continue;
-            int at = win.count;
-            if (win.count == BLOB_WINDOW) {  // full: this one stays out, or the last entered leaves
-                if (t0 >= win.t0[BLOB_WINDOW - 1]) {
-                    win.cut = t0;
+            float t0, t1, ta, tb, peak;
+            if (!blob_support(blob_element_at(i), ray, t0, t1, ta, tb, peak) || t1 <= from || t0 >= blob_window.cut) continue;
+            int at = blob_window.count;
+            if (blob_window.count == BLOB_WINDOW) {  // full: this one stays out, or the last entered leaves
+                if (t0 >= blob_window.t0[BLOB_WINDOW - 1]) {
+                    blob_window.cut = t0;
                     continue;
                 }
-                win.cut = win.t0[BLOB_WINDOW - 1];
+                blob_window.cut = blob_window.t0[BLOB_WINDOW - 1];
                 at = BLOB_WINDOW - 1;
             } else {
-                ++win.count;
+                ++blob_window.count;
             }
-            for (; at > 0 && win.t0[at - 1] > t0; --at) {
-                win.t0[at] = win.t0[at - 1];
-                win.t1[at] = win.t1[at - 1];
-                win.ta[at] = win.ta[at - 1];
-                win.tb[at] = win.tb[at - 1];
-                win.element[at] = win.element[at - 1];
+            for (; at > 0 && blob_window.t0[at - 1] > t0; --at) {
+                blob_window.t0[at] = blob_window.t0[at - 1];
+                blob_window.t1[at] = blob_window.t1[at - 1];
+                blob_window.ta[at] = blob_window.ta[at - 1];
+                blob_window.tb[at] = blob_window.tb[at - 1];
+                blob_window.peak[at] = blob_window.peak[at - 1];
+                blob_window.element[at] = blob_window.element[at - 1];
             }
-            win.t0[at] = t0;
-            win.t1[at] = t1;
-            win.ta[at] = ta;
-            win.tb[at] = tb;
-            win.element[at] = i;
+            blob_window.t0[at] = t0;
+            blob_window.t1[at] = t1;
+            blob_window.ta[at] = ta;
+            blob_window.tb[at] = tb;
+            blob_window.peak[at] = peak;
+            blob_window.element[at] = i;
         }
     }
-    return win;
 }
 
 // The first root of the field's sum less the threshold in (lo, hi), a stretch with no entry,
 // exit or end plane of the window's components inside it, or INFINITY.
-float blob_stretch_root(BlobWindow win, Ray ray, float threshold, float lo, float hi) {
+float blob_stretch_root(Ray ray, float threshold, float lo, float hi) {
     float m = 0.5 * (lo + hi), w = 0.5 * (hi - lo);
     if (!(w > 0.0)) return INFINITY;
+    float peaks = 0.0;  // first without fetching a component: their most along the whole line
+    for (int i = 0; i < blob_window.count; ++i)
+        if (blob_window.t0[i] < m && m < blob_window.t1[i]) peaks += blob_window.peak[i];
+    if (peaks < threshold) return INFINITY;
     float k0 = -threshold, reach = 0.0;
     vec4 k = vec4(0.0);
-    for (int i = 0; i < win.count; ++i) {
-        if (!(win.t0[i] < m && m < win.t1[i])) continue;
-        BlobElement e = blob_element_at(win.element[i]);
+    for (int i = 0; i < blob_window.count; ++i) {
+        if (!(blob_window.t0[i] < m && m < blob_window.t1[i])) continue;
+        BlobElement e = blob_element_at(blob_window.element[i]);
         vec3 q = blob_piece(e, ray, m);
         float s = e.b.w;
         k0 += s * q.x * q.x;
@@ -272,18 +292,18 @@ bool blob_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_
     MeshInfo info = mesh_at(p.data);
     // Each window reaches past the last's start (its reader's overlap limit); a bound all the same.
     for (uint window = 0u; window <= info.element_count && from < until; ++window) {
-        BlobWindow win = blob_gather(info, ray, from, until);
-        float end = win.cut;
+        blob_gather(info, ray, from, until);
+        float end = blob_window.cut;
         float at = from;
         for (int step = 0; step <= 4 * BLOB_WINDOW && at < end; ++step) {
             float next = end;
-            for (int i = 0; i < win.count; ++i) {
-                if (win.t0[i] > at) next = min(next, win.t0[i]);
-                if (win.t1[i] > at) next = min(next, win.t1[i]);
-                if (win.ta[i] > at) next = min(next, win.ta[i]);
-                if (win.tb[i] > at) next = min(next, win.tb[i]);
+            for (int i = 0; i < blob_window.count; ++i) {
+                if (blob_window.t0[i] > at) next = min(next, blob_window.t0[i]);
+                if (blob_window.t1[i] > at) next = min(next, blob_window.t1[i]);
+                if (blob_window.ta[i] > at) next = min(next, blob_window.ta[i]);
+                if (blob_window.tb[i] > at) next = min(next, blob_window.tb[i]);
             }
-            float t = blob_stretch_root(win, ray, p.p0.x, at, next);
+            float t = blob_stretch_root(ray, p.p0.x, at, next);
             if (t < INFINITY) {
                 t_hit = clamp(t, at, next);
                 return t_hit > t_min && t_hit < t_max;
