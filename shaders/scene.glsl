@@ -39,7 +39,7 @@
 // closed shapes' only: csg.glsl, which follows, never calls itself).
 #define LANCER_LEAF_CASE(NAME, name, Type, type, traits)                                     \
     case SHAPE_##NAME:                                                                        \
-        hit = SCENE_HAS_##NAME && ((traits) & (SHAPE_SOLID | SHAPE_CLOSED)) != 0u &&           \
+        hit = CSG_HAS_##NAME && ((traits) & (SHAPE_SOLID | SHAPE_CLOSED)) != 0u &&             \
               name##_intersect(p, ray, t_min * k, t_max * k, t_hit, uv, error);                \
         break;
 // CSG is no solid: its row of the switch calls this instead of itself (GLSL has no recursion).
@@ -68,9 +68,9 @@ bool leaf_inside(Primitive p, Ray world_ray, float t) {
     float k;
     Ray ray = primitive_ray(p, world_ray, k);
     vec3 point = ray.origin + (t * k) * ray.dir;
-    if (p.type == SHAPE_TORUS) return SCENE_HAS_TORUS && torus_inside(p, point);
-    if (p.type == SHAPE_BLOB) return SCENE_HAS_BLOB && blob_inside(p, point);
-    if (p.type == SHAPE_IMPLICIT) return SCENE_HAS_IMPLICIT && implicit_inside(p, point);
+    if (p.type == SHAPE_TORUS) return CSG_HAS_TORUS && torus_inside(p, point);
+    if (p.type == SHAPE_BLOB) return CSG_HAS_BLOB && blob_inside(p, point);
+    if (p.type == SHAPE_IMPLICIT) return CSG_HAS_IMPLICIT && implicit_inside(p, point);
     return false;
 }
 

@@ -23,9 +23,10 @@ const int CSG_WALK_ROOTS = 32;   // roots one walk examines
 // Scenes without a shape CSG walks (SHAPE_CLOSED, SHAPE_ORIENTED) compile no walk: one test of
 // the constant shape set (|| between specialisation constants would leave SPIRV-Tools an operand
 // it cannot fold).
-const uint CSG_WALKABLE = (1u << SHAPE_TORUS) | (1u << SHAPE_IMPLICIT) | (1u << SHAPE_PARAMETRIC) | (1u << SHAPE_BEZIER) |
-                          (1u << SHAPE_MESH);
-const bool CSG_MAY_WALK = (SCENE_SHAPES & CSG_WALKABLE) != 0u;
+#define LANCER_WALKABLE_BIT(NAME, name, Type, type, traits) | ((((traits) & (SHAPE_CLOSED | SHAPE_ORIENTED)) != 0u) ? 1u << (type) : 0u)
+const uint CSG_WALKABLE = 0u LANCER_SHAPES(LANCER_WALKABLE_BIT);
+#undef LANCER_WALKABLE_BIT
+const bool CSG_MAY_WALK = (CSG_LEAF_SHAPES & CSG_WALKABLE) != 0u;
 bool csg_walked(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & (SHAPE_CLOSED | SHAPE_ORIENTED)) != 0u; }
 bool csg_crossed(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & SHAPE_ORIENTED) != 0u; }
 
@@ -33,8 +34,8 @@ bool csg_crossed(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.typ
 bool csg_piece_hit(Primitive q, Ray ray, float t_min, float t_max, out float t, out vec2 uv, out float error) {
     error = 0.0;
     uv = vec2(0.0);
-    if (SCENE_HAS_PARAMETRIC && q.type == SHAPE_PARAMETRIC) return parametric_intersect(q, ray, t_min, t_max, t, uv, error);
-    if (SCENE_HAS_BEZIER && q.type == SHAPE_BEZIER) return bezier_intersect(q, ray, t_min, t_max, t, uv, error);
+    if (CSG_HAS_PARAMETRIC && q.type == SHAPE_PARAMETRIC) return parametric_intersect(q, ray, t_min, t_max, t, uv, error);
+    if (CSG_HAS_BEZIER && q.type == SHAPE_BEZIER) return bezier_intersect(q, ray, t_min, t_max, t, uv, error);
     return false;
 }
 
@@ -52,7 +53,7 @@ bool csg_crossing(Primitive leaf, Ray world_ray, float t_min, float t_max, out f
     uv = vec2(0.0);
     // The searches take t >= 0 only, and CSG asks along the whole line: from the line's entry
     // into the surface's box, then, as origin.
-    bool mesh = SCENE_HAS_MESH && leaf.type == SHAPE_MESH;
+    bool mesh = CSG_HAS_MESH && leaf.type == SHAPE_MESH;
     vec3 lo = leaf.p0.xyz, hi = leaf.p1.xyz;
     if (mesh) {
         MeshNode root = mesh_node_at(mesh_at(leaf.data).first_node);

@@ -211,6 +211,18 @@ TEST(Blob, BoxLessABlob) {
                                                 "{ type = \"box\", min = [-1, -1, -1], max = [1, 1, 1] }, " + kOperand + "]\n"));
 }
 
+// Two lobes apart, cut out of a bar seen along it: rays through both lobes leave the bar between
+// them, which a CSG walk taking the blob's inside as one interval (a convex solid's) would cut.
+TEST(Blob, CsgWalksAcrossItsSeparateLobes) {
+    expect_backends_agree(
+        "blob-csg-lobes",
+        test::scene_from_text(stage("[4.5, 1.2, -1.6]", "[0, 0, 0]", 40) +
+                              "type = \"difference\"\nobjects = [{ type = \"box\", min = [-1.8, -0.45, -0.45], max = "
+                              "[1.8, 0.45, 0.45] }, { type = \"blob\", threshold = 0.5, spheres = [{ center = [-0.9, 0.2, "
+                              "-0.2], radius = 0.8, strength = 1 }, { center = [0.9, 0.2, -0.2], radius = 0.8, strength = 1 "
+                              "}] }]\n"));
+}
+
 TEST(Blob, BlobCutByASphere) {
     expect_backends_agree("blob-csg-intersection",
                           test::scene_from_text(std::string(test::kTwinStage) + "type = \"intersection\"\nobjects = [" + kOperand +

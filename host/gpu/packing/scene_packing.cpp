@@ -96,7 +96,11 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
 
     ShaderFeatures& f = packed.features;
     f.scene_shapes = plan.flags.scene_shapes;
-    for (const Primitive& leaf : packed.csg_leaves) f.scene_shapes |= 1u << leaf.type;
+    f.csg_leaf_shapes = 0;
+    for (const Primitive& leaf : packed.csg_leaves) {
+        f.scene_shapes |= 1u << leaf.type;
+        f.csg_leaf_shapes |= 1u << leaf.type;
+    }
     f.has_bvh = plan.flags.has_bvh;
     f.bvh_has_analytic = plan.flags.bvh_has_analytic;
     f.boxed_families = plan.flags.boxed_families;
