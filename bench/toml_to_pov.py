@@ -59,6 +59,7 @@ TRANSLATED = {
     "implicit": {"function", "box", "params", "transform"},
     "superellipsoid": {"e", "n"},
     "blob": {"threshold", "spheres", "cylinders"},
+    "sor": {"points", "open"},
     "mesh": {"file", "smooth", "transform"},
     "spheres": {"file", "radius", "transform"},
 }
@@ -589,6 +590,9 @@ def shape_body(o, base, torus_as, implicit_as, accuracy, scene):
         parts += [f"  cylinder {{ {vec(c['base_point'])}, {vec(c['cap_point'])}, {c['radius']:.9g}, strength {c['strength']:.9g} }}\n"
                   for c in o.get("cylinders", [])]
         return f"blob {{ threshold {o['threshold']:.9g}\n" + "".join(parts)
+    if t == "sor":  # the same points, POV-Ray's order (radius, height)
+        points = ", ".join(f"<{r:.9g}, {y:.9g}>" for r, y in o["points"])
+        return f"sor {{ {len(o['points'])}, {points}{' open' if o.get('open') else ''}\n"
     sys.exit(f"toml_to_pov: object type {t} is not supported")
 
 

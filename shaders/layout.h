@@ -202,6 +202,12 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     VEC4(a) /* xyz; w: radius */                                \
     VEC4(b) /* xyz; w: strength */
 
+// A segment of a surface of revolution (shapes/sor.glsl): its radius squared about its bottom,
+// ((a u + b) u + c) u + d with u = y - y0, on [y0, y1], and its largest radius.
+#define LANCER_ROWS_SorBand(VEC4, VEC4S, SCALARS, UVEC4S) \
+    VEC4(coefficients) /* a, b, c, d */                 \
+    VEC4(span)         /* y0, y1, largest radius, 0 */
+
 #define LANCER_ROWS_CsgNode(VEC4, VEC4S, SCALARS, UVEC4S) \
     SCALARS(uint, first_leaf, uint, leaf_count, uint, first_op, uint, op_count)
 
@@ -406,6 +412,7 @@ LANCER_STRUCT(MeshNode)
 LANCER_STRUCT(MeshTriangle)
 LANCER_STRUCT(SetSphere)
 LANCER_STRUCT(BlobElement)
+LANCER_STRUCT(SorBand)
 LANCER_STRUCT(BvhNode)
 LANCER_STRUCT(Material)
 LANCER_STRUCT(TextureInfo)
@@ -468,6 +475,7 @@ LANCER_CONST RESOURCE_INT = 4;
     X(MESH_MATERIALS, 40, RESOURCE_UINT, uint, mesh_materials, mesh_material_at, "mesh triangles' and set spheres' materials") \
     X(SET_SPHERES, 41, RESOURCE_ROWS, SetSphere, set_spheres, set_sphere_at, "sphere set spheres")     \
     X(BLOB_ELEMENTS, 42, RESOURCE_ROWS, BlobElement, blob_elements, blob_element_at, "blob components") \
+    X(SOR_BANDS, 43, RESOURCE_ROWS, SorBand, sor_bands, sor_band_at, "sor segments")                   \
     X(GRIDS, 31, RESOURCE_ROWS, DirectionGrid, grids, grid_at, "direction grids")                        \
     X(GRID_CELLS, 32, RESOURCE_UINT, uint, grid_cells, grid_cell_at, "direction grid cells")             \
     X(GRID_ENTRIES, 33, RESOURCE_UINT, uint, grid_entries, grid_entry_at, "direction grid entries") /* pairs: primitive, float bits of its nearest distance */
@@ -558,6 +566,7 @@ LANCER_ASSERT_SIZE(MeshNode)
 LANCER_ASSERT_SIZE(MeshTriangle)
 LANCER_ASSERT_SIZE(SetSphere)
 LANCER_ASSERT_SIZE(BlobElement)
+LANCER_ASSERT_SIZE(SorBand)
 LANCER_ASSERT_SIZE(BvhNode)
 LANCER_ASSERT_SIZE(Material)
 LANCER_ASSERT_SIZE(TextureInfo)

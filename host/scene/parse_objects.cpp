@@ -347,13 +347,14 @@ struct ObjectReading {
                                            "solid only where it encloses one; if it does, say `closed = true` (lancer checks "
                                            "that its patches meet edge to edge)",
                                            type));
-            if (!(shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED) || shape_has(kind, SHAPE_ORIENTED)) ||
-                (cone && cone->open))
-                t.fail(cone ? "open" : "type",
-                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder and cone, torus, blob, "
-                                   "implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, "
+            const auto* sor = std::get_if<Sor>(&leaf.shape);
+            const bool open = (cone && cone->open) || (sor && sor->open);
+            if (!(shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED) || shape_has(kind, SHAPE_ORIENTED)) || open)
+                t.fail(open ? "open" : "type",
+                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder, cone and sor, torus, "
+                                   "blob, implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, "
                                    "closed meshes, plane as the half-space behind its normal) and CSG objects and groups of them",
-                                   cone ? "an open " : "a ", type == "spheres" ? "sphere set" : type));
+                                   open ? "an open " : "a ", type == "spheres" ? "sphere set" : type));
             if (const auto* implicit = std::get_if<ImplicitObject>(&leaf.shape))
                 if (auto point = surface::not_proved_positive_on_faces(implicit->surface))
                     t.fail("type", fmt::format("this {} is not proved closed in its box: CSG takes f < 0 as its inside, "

@@ -166,6 +166,7 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"implicit", read_implicit},
         {"superellipsoid", read_superellipsoid},
         {"blob", read_blob},
+        {"sor", read_sor},
         {"disc", read_disc},
         {"cylinder", read_cylinder},
         {"cone", read_cone},

@@ -358,6 +358,27 @@ struct Blob {
     std::shared_ptr<const ElementTree> tree;  // over the components' boxes (the CPU reference's own)
 };
 
+// POV-Ray's surface of revolution (sor): about the y axis of its own coordinates, its radius
+// squared a cubic in y on each segment, r^2 = ((a u + b) u + c) u + d with u = y - y0 (the
+// segment's own coefficients about its bottom, for precision), through the squared radii of
+// POV-Ray's points 1 .. n-2 with POV-Ray's slopes, 2 r_j (r_{j+1} - r_{j-1}) / (y_{j+1} - y_{j-1})
+// (points 0 and n-1 give only the end slopes). Closed by discs at its bottom and top (the base and the cap) unless `open`; its inside
+// (x^2 + z^2 < r^2(y) between them) makes it a solid for CSG, refraction and photons where it is
+// closed. A segment where the spline dips below 0 has no surface there. Texture (u, v): u the
+// angle about y from +x toward +z over 2 pi, v the height from bottom to top in [0, 1] (the
+// discs' v is 0 and 1).
+struct SorSegment {
+    double y0 = 0.0, y1 = 1.0;            // the segment's heights, y0 < y1
+    double a = 0.0, b = 0.0, c = 0.0, d = 1.0;  // r^2 about y0
+    double r_max = 1.0;                   // the largest radius on the segment (its bounding cylinder)
+};
+struct Sor {
+    std::vector<SorSegment> segments;  // in order of height, each starting where the last ends
+    bool open = false;
+    double base_r2 = 1.0, cap_r2 = 1.0;  // the discs' squared radii: POV-Ray's points 1 and n-2's
+    double r_max = 1.0;                  // the largest radius of all
+};
+
 struct Object;
 
 // Constructive solid geometry: POV-Ray's intersection, difference and merge (docs/scene-format.md,
@@ -374,7 +395,7 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus, Csg, Mesh,
-                           SphereSet, Blob>;
+                           SphereSet, Blob, Sor>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \

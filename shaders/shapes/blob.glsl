@@ -8,11 +8,8 @@
 // component's pieces (the ball about a, the cylinder between the end planes, the ball about b),
 // so between the points where the ray enters or leaves a component or crosses an end plane, the
 // field's sum is one quartic in t. Each such stretch is re-based at its middle m (s = t - m in
-// [-w, w]) and its quartic's first root found as the torus's is: the quartic's critical points
-// (the roots of its cubic derivative, whose own critical points a quadratic gives) split the
-// stretch into monotone pieces, and safeguarded Newton finds the root of the first piece whose
-// ends differ in sign. A ray within rounding of touching the surface may be called a hit or a
-// miss either way.
+// [-w, w]) and its quartic's first root found by polynomial.glsl's quartic_first_root. A ray
+// within rounding of touching the surface may be called a hit or a miss either way.
 //
 // The components a ray meets are gathered from the tree in windows of at most BLOB_MAX_OVERLAP,
 // nearest entry first: a window is complete up to the first entry it had to leave out (`cut`),
@@ -124,71 +121,6 @@ vec3 blob_piece(BlobElement e, Ray ray, float m) {
     return vec3(1.0 - dot(rel, rel) * inv_r2, -2.0 * dot(rel, dir) * inv_r2, -dot(dir, dir) * inv_r2);
 }
 
-float blob_quartic(float k0, vec4 k, float s) { return (((k.w * s + k.z) * s + k.y) * s + k.x) * s + k0; }
-float blob_cubic(vec4 k, float s) { return ((4.0 * k.w * s + 3.0 * k.z) * s + 2.0 * k.y) * s + k.x; }  // the quartic's derivative
-float blob_quadratic(vec4 k, float s) { return (12.0 * k.w * s + 6.0 * k.z) * s + 2.0 * k.y; }  // and its own
-
-// The root in [lo, hi] of the quartic (derivative = false) or of its derivative (true), monotone
-// there, whose value at lo is v_lo, of the other sign than at hi: safeguarded Newton.
-float blob_monotone_root(float k0, vec4 k, bool derivative, float lo, float hi, float v_lo, float tolerance) {
-    float x = 0.5 * (lo + hi);
-    for (int i = 0; i < 40; ++i) {
-        float v = derivative ? blob_cubic(k, x) : blob_quartic(k0, k, x);
-        if (v == 0.0) break;
-        if ((v > 0.0) == (v_lo > 0.0)) lo = x; else hi = x;
-        float slope = derivative ? blob_quadratic(k, x) : blob_cubic(k, x);
-        float next = x - v / slope;
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        bool done = abs(next - x) <= tolerance || hi - lo <= tolerance;
-        x = next;
-        if (done) break;
-    }
-    return x;
-}
-
-// The first root in (-w, w) of k0 + k.x s + k.y s^2 + k.z s^3 + k.w s^4, or INFINITY.
-float blob_first_root(float k0, vec4 k, float w, float tolerance) {
-    // The derivative's monotone pieces: the roots of its derivative 12 k.w s^2 + 6 k.z s + 2 k.y
-    // (stable form; linear where k.w vanishes), in order.
-    float gx[4];
-    int m = 0;
-    gx[m++] = -w;
-    float a = 12.0 * k.w, b = 6.0 * k.z, c = 2.0 * k.y;
-    float x1 = INFINITY, x2 = INFINITY;
-    if (a != 0.0) {
-        float disc = b * b - 4.0 * a * c;
-        if (disc > 0.0) {
-            float q = -0.5 * (b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
-            x1 = q / a;
-            x2 = q != 0.0 ? c / q : x1;
-        }
-    } else if (b != 0.0) {
-        x1 = -c / b;
-    }
-    float first = min(x1, x2), second = max(x1, x2);
-    if (first > -w && first < w) gx[m++] = first;
-    if (second > -w && second < w && second > first) gx[m++] = second;
-    gx[m++] = w;
-    // The quartic's breakpoints: the ends and its critical points between them.
-    float bp[5];
-    int n = 0;
-    bp[n++] = -w;
-    float g_lo = blob_cubic(k, gx[0]);
-    for (int i = 1; i < m; ++i) {
-        float g_hi = blob_cubic(k, gx[i]);
-        if ((g_lo > 0.0) != (g_hi > 0.0)) bp[n++] = blob_monotone_root(k0, k, true, gx[i - 1], gx[i], g_lo, tolerance);
-        g_lo = g_hi;
-    }
-    bp[n++] = w;
-    float f_lo = blob_quartic(k0, k, bp[0]);
-    for (int i = 1; i < n; ++i) {
-        float f_hi = blob_quartic(k0, k, bp[i]);
-        if ((f_lo > 0.0) != (f_hi > 0.0)) return blob_monotone_root(k0, k, false, bp[i - 1], bp[i], f_lo, tolerance);
-        f_lo = f_hi;
-    }
-    return INFINITY;
-}
-
 // A window of the components the ray meets, nearest entry first (the gathered stretches).
 struct BlobWindow {
     float t0[BLOB_WINDOW], t1[BLOB_WINDOW], ta[BLOB_WINDOW], tb[BLOB_WINDOW], peak[BLOB_WINDOW];
@@ -282,7 +214,7 @@ float blob_stretch_root(Ray ray, float threshold, float lo, float hi) {
         if (s > 0.0) reach += s * most * most;
     }
     if (reach < threshold) return INFINITY;  // no point of the stretch reaches the threshold
-    float s = blob_first_root(k0, k, w, 1.2e-7 * (abs(m) + w));
+    float s = quartic_first_root(k0, k, w, 1.2e-7 * (abs(m) + w));
     return s == INFINITY ? INFINITY : m + s;
 }
 

@@ -162,6 +162,15 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     }
                     require_finite(s.lo, when, ": blob box");
                     require_finite(s.hi, when, ": blob box");
+                } else if constexpr (std::is_same_v<T, Sor>) {
+                    require(!s.segments.empty(), when, ": sor without segments");
+                    for (const SorSegment& g : s.segments) {
+                        require(std::isfinite(g.a) && std::isfinite(g.b) && std::isfinite(g.c) && std::isfinite(g.d), when,
+                                ": sor coefficients");
+                        require(g.y0 < g.y1 && std::isfinite(g.r_max) && g.r_max >= 0.0, when, ": sor segment");
+                    }
+                    require(std::isfinite(s.r_max) && s.r_max > 0.0, when, ": sor radius");
+                    require(o.placement && o.placement->shape_in_object_space, when, ": a sor is always placed");
                 } else if constexpr (std::is_same_v<T, Mesh>) {
                     require(s.geometry && !s.geometry->mesh().triangles.empty(), when, ": mesh without triangles");
                     const TriangleMesh& m = s.geometry->mesh();

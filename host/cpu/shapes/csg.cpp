@@ -71,6 +71,7 @@ std::vector<Interval> walked_inside(const Object& leaf, const Ray& ray) {
     };
     if (const auto* torus = std::get_if<Torus>(&leaf.shape)) return walk(*torus);
     if (const auto* blob = std::get_if<Blob>(&leaf.shape)) return walk(*blob);
+    if (const auto* sor = std::get_if<Sor>(&leaf.shape)) return walk(*sor);
     return walk(std::get<ImplicitObject>(leaf.shape));
 }
 
@@ -128,13 +129,14 @@ bool walked(const Object& leaf) {
     return shape_has(type, SHAPE_CLOSED) || shape_has(type, SHAPE_ORIENTED);
 }
 
-// walked_inside (and the GPU's leaf_inside, shaders/scene.glsl) know these three closed shapes.
-constexpr bool closed_shapes_are_torus_implicit_and_blob() {
+// walked_inside (and the GPU's leaf_inside, shaders/scene.glsl) know these closed shapes.
+constexpr bool closed_shapes_are_known() {
     for (std::uint32_t t = 0; t < SHAPE_COUNT; ++t)
-        if (shape_has(t, SHAPE_CLOSED) != (t == SHAPE_TORUS || t == SHAPE_IMPLICIT || t == SHAPE_BLOB)) return false;
+        if (shape_has(t, SHAPE_CLOSED) != (t == SHAPE_TORUS || t == SHAPE_IMPLICIT || t == SHAPE_BLOB || t == SHAPE_SOR))
+            return false;
     return true;
 }
-static_assert(closed_shapes_are_torus_implicit_and_blob());
+static_assert(closed_shapes_are_known());
 
 bool value(const Csg& c, const std::array<Interval, CSG_MAX_LEAVES>& inside, double t, bool after) {
     std::uint64_t stack = 0;

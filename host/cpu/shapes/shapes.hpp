@@ -42,6 +42,11 @@ std::optional<SurfaceHit> intersect(const Torus& o, const Ray& ray, double t_min
 // between those points, whose roots are isolated there by Bernstein subdivision (certified, as
 // the torus's). The normal is the field's gradient, turned outward. Any ray direction length.
 std::optional<SurfaceHit> intersect(const Blob& o, const Ray& ray, double t_min, double t_max);
+// The nearest hit on the surface of revolution (sor.cpp): on each segment whose slab and
+// bounding cylinder the ray crosses, x^2 + z^2 - r^2(y) is a cubic along the ray, its roots
+// isolated by Bernstein subdivision (certified, as the torus's); the base and cap discs unless
+// open. Any ray direction length.
+std::optional<SurfaceHit> intersect(const Sor& o, const Ray& ray, double t_min, double t_max);
 // Certified (interval Newton) search for the nearest root; `normal` is surface_normal() there
 // and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
 std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
@@ -72,6 +77,8 @@ std::vector<double> roots_on_line(const ImplicitObject& o, const Ray& ray);
 bool inside(const ImplicitObject& o, const dvec3& p);
 std::vector<double> roots_on_line(const Blob& o, const Ray& ray);
 bool inside(const Blob& o, const dvec3& p);
+std::vector<double> roots_on_line(const Sor& o, const Ray& ray);  // the curve's and the discs'
+bool inside(const Sor& o, const dvec3& p);
 
 // The surfaces that close a solid (SHAPE_ORIENTED: CSG walks their inside along a line):
 // every point where the ray's line crosses the surface with t in (t0, t1), nearest first, and
@@ -126,6 +133,7 @@ glm::dvec2 texture_uv(const Disc& d, const dvec3& p);
 glm::dvec2 texture_uv(const Cone& c, const dvec3& p, int part);
 glm::dvec2 texture_uv(const Torus& o, const dvec3& p);
 glm::dvec2 texture_uv(const Blob& o, const dvec3& p);  // x and y across its box
+glm::dvec2 texture_uv(const Sor& o, const dvec3& p);   // the angle about y, the height from bottom to top
 
 // Bicubic (rational) Bezier patches, exactly, by resultant + generalized eigenvalues (bezier.cpp).
 // The ray's direction need not be unit length: t is in units of it. intersect_all returns every

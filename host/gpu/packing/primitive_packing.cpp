@@ -269,6 +269,18 @@ struct PrimitivePacker {
         }
         add({SHAPE_BLOB, material, index, object, vec4(float(o.threshold), 0.0f, 0.0f, 0.0f), v4(o.lo), v4(o.hi)}, shape_bounds(o));
     }
+    // One primitive, in its own coordinates (always placed): p0 = (bottom, top, largest radius,
+    // 1 where open), p1 = (base's r^2, cap's r^2, segment count), data its first segment (SOR_BANDS).
+    void operator()(const Sor& o) {
+        const auto first = static_cast<uint>(out.sor_bands.size());
+        for (const SorSegment& g : o.segments)
+            out.sor_bands.push_back(SorBand{vec4(float(g.a), float(g.b), float(g.c), float(g.d)),
+                                            vec4(float(g.y0), float(g.y1), float(g.r_max), 0.0f)});
+        add({SHAPE_SOR, material, first, object,
+             vec4(float(o.segments.front().y0), float(o.segments.back().y1), float(o.r_max), o.open ? 1.0f : 0.0f),
+             vec4(float(o.base_r2), float(o.cap_r2), float(o.segments.size()), 0.0f), {}},
+            shape_bounds(o));
+    }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
     // Each cell of the surface's domain is a primitive with the cell's proved box; the surface
