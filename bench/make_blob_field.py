@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A blob of thousands of components for bench/run.sh's `blobs` suite: a rippled pool of liquid
+"""A blob of thousands of components for bench/run.sh's `solids` suite: a rippled pool of liquid
 (a sheet of N x N sphere components, each meeting its four neighbours' fields) with a crown of
 droplets rising from its centre, on a checkered floor. Writes the scene to stdout.
 

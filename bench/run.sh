@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # lancer's benchmark suite against POV-Ray 3.7 (a benchmark, never a test: speed is not asserted).
 #
-#   bench/run.sh [runs=3] [all|classic|implicit|quality|parametric|mesh|shapes|blobs]
+#   bench/run.sh [runs=3] [all|classic|implicit|quality|parametric|mesh|shapes|solids]
 #
 # For each suite scene, in one run so the ratios mean something on a shared, noisy machine:
 # lancer on the GPU path (lavapipe here), lancer's CPU reference, and POV-Ray rendering the same
@@ -37,9 +37,10 @@
 # disc, torus, a CSG die, a superellipsoid and a blob, opaque) against the POV-Ray twin that
 # bench/toml_to_pov.py writes into bench/out/.
 #
-# A blob of thousands of components (suite `blobs`, not in `all`): bench/make_blob_field.py's
-# rippled pool of 4,900 sphere components and a crown of 72 droplets, written into bench/out/,
-# against its POV-Ray twin (bench/toml_to_pov.py).
+# Solids of the solids issue (suite `solids`, not in `all`): a blob of thousands of components
+# (bench/make_blob_field.py's rippled pool of 4,900 sphere components and a crown of 72 droplets,
+# written into bench/out/) and scenes/chess.toml (surfaces of revolution, CSG over them), against
+# their POV-Ray twins (bench/toml_to_pov.py).
 #
 # Installs POV-Ray (and GNU time) with apt-get when missing: the benchmark's own setup, not the
 # main one.
@@ -276,13 +277,13 @@ if [ "$suite" = all ] || [ "$suite" = classic ]; then
   # POV-Ray's parametric (Lipschitz subdivision) needs minutes for even a small torus image.
   bench_scene torus 160 90 160 90 parametric
 fi
-if [ "$suite" = mesh ] || [ "$suite" = shapes ] || [ "$suite" = blobs ]; then
+if [ "$suite" = mesh ] || [ "$suite" = shapes ] || [ "$suite" = solids ]; then
   [ "$suite" = mesh ] && { [ -f bench/out/torus_knot_million.obj ] || python3 scenes/tools/make_meshes.py --million; }
   names="bunny knot_million"
   [ "$suite" = shapes ] && names=shapes
-  if [ "$suite" = blobs ]; then
+  if [ "$suite" = solids ]; then
     python3 bench/make_blob_field.py >"$out/blob_field.toml"
-    names=out/blob_field
+    names="out/blob_field ../scenes/chess"
   fi
   printf '| scene | size | rays/pixel | renderer | wall s | render s | Mrays/s | peak MiB | POV wall / this |\n'
   printf '|---|---|---|---|---|---|---|---|---|\n'

@@ -142,9 +142,15 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require(!s.leaves.empty() && s.leaves.size() <= CSG_MAX_LEAVES, when, ": CSG leaves");
                     require_finite(s.lo, when, ": CSG box");
                     require_finite(s.hi, when, ": CSG box");
-                    for (const Object& leaf : s.leaves)
-                        require(shape_has(shape_type(leaf.shape), SHAPE_SOLID) && leaf.material < scene.materials.size(), when,
-                                ": CSG leaf");
+                    for (const Object& leaf : s.leaves) {
+                        const std::uint32_t kind = shape_type(leaf.shape);
+                        const auto* cone = std::get_if<Cone>(&leaf.shape);
+                        const auto* sor = std::get_if<Sor>(&leaf.shape);
+                        require((shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED) ||
+                                 (shape_has(kind, SHAPE_ORIENTED) && outward_side(leaf.shape) != 0)) &&
+                                    !(cone && cone->open) && !(sor && sor->open) && leaf.material < scene.materials.size(),
+                                when, ": CSG leaf");
+                    }
                 } else if constexpr (std::is_same_v<T, Torus>) {
                     require_finite(s.center, when, ": torus");
                     require_finite(s.axis, when, ": torus axis");
