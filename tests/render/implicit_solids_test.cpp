@@ -86,33 +86,6 @@ Rgb8Image expect_backends_agree(const std::string& name, const Scene& scene) {
     return gpu;
 }
 
-// kTwinStage's light, floor and material "m", seen by a camera of the test's own; the text ends
-// inside an [[object]] with its material set.
-std::string stage(const std::string& eye, const std::string& look_at, double fov) {
-    return fmt::format(R"(
-    [render]
-    width = 120
-    height = 90
-    samples = 2
-    [camera]
-    eye = {}
-    look_at = {}
-    fov = {}
-    [[light]]
-    position = [-4, 6, -5]
-    [material.m]
-    color = [0.8, 0.5, 0.2]
-    specular = 0.6
-    shininess = 30
-    [[object]]
-    type = "plane"
-    point = [0, -1.5, 0]
-    normal = [0, 1, 0]
-    [[object]]
-    material = "m"
-)",
-                       eye, look_at, fov);
-}
 
 // A row of 60 sphere components along z, 0.15 apart, wriggling a little in x: the first 37 so
 // weak that their fields never reach the threshold (a fog of components that a ray crosses
@@ -133,7 +106,7 @@ std::string row(double radius) {
 // show it (against the stage with a sphere out of sight), so that the comparison cannot pass on
 // two pictures without it.
 TEST(Blob, RaysThroughMoreComponentsThanAWindowEndOn) {
-    const std::string end_on = stage("[0.05, 0.15, -2]", "[0, 0, 6]", 10);
+    const std::string end_on = test::twin_stage("[0.05, 0.15, -2]", "[0, 0, 6]", 10);
     const Rgb8Image empty = to_srgb8(test::render_on(
         test::Backend::Gpu, test::scene_from_text(end_on + "type = \"sphere\"\ncenter = [0, 50, 0]\nradius = 0.1\n")));
     for (double radius : {0.3, 0.59}) {
@@ -149,9 +122,9 @@ TEST(Blob, RaysThroughMoreComponentsThanAWindowEndOn) {
 TEST(Blob, RaysThroughMoreComponentsThanAWindowFromTheSide) {
     for (double radius : {0.3, 0.59}) {
         expect_backends_agree(fmt::format("blob-row-glancing-{}", radius),
-                              test::scene_from_text(stage("[0.8, 0.4, -1.5]", "[0, 0, 7.2]", 14) + row(radius)));
+                              test::scene_from_text(test::twin_stage("[0.8, 0.4, -1.5]", "[0, 0, 7.2]", 14) + row(radius)));
         expect_backends_agree(fmt::format("blob-row-across-{}", radius),
-                              test::scene_from_text(stage("[4, 1, 4.5]", "[0, 0, 5]", 30) + row(radius)));
+                              test::scene_from_text(test::twin_stage("[4, 1, 4.5]", "[0, 0, 5]", 30) + row(radius)));
     }
 }
 
@@ -216,7 +189,7 @@ TEST(Blob, BoxLessABlob) {
 TEST(Blob, CsgWalksAcrossItsSeparateLobes) {
     expect_backends_agree(
         "blob-csg-lobes",
-        test::scene_from_text(stage("[4.5, 1.2, -1.6]", "[0, 0, 0]", 40) +
+        test::scene_from_text(test::twin_stage("[4.5, 1.2, -1.6]", "[0, 0, 0]", 40) +
                               "type = \"difference\"\nobjects = [{ type = \"box\", min = [-1.8, -0.45, -0.45], max = "
                               "[1.8, 0.45, 0.45] }, { type = \"blob\", threshold = 0.5, spheres = [{ center = [-0.9, 0.2, "
                               "-0.2], radius = 0.8, strength = 1 }, { center = [0.9, 0.2, -0.2], radius = 0.8, strength = 1 "
@@ -235,36 +208,8 @@ TEST(Blob, BlobCutByASphere) {
 // within rounding of a checker edge, and such pixels grow with finer checkers and deeper rays:
 // 2 of these 10,800 (0.02%); with checkers of 0.4 and 8 levels, 17 (0.16%, over the metric's 0.1%).
 TEST(Blob, GlassBendsLightAsTheReferenceDoes) {
-    const Scene scene = test::scene_from_text(R"(
-        [render]
-        width = 120
-        height = 90
-        samples = 2
-        max_depth = 6
-        [camera]
-        eye = [0.5, 2.2, -4.5]
-        look_at = [0, -0.2, 0]
-        fov = 45
-        [[light]]
-        position = [-4, 6, -5]
-        [material.floor]
-        checker = { colors = [[0.9, 0.9, 0.9], [0.2, 0.3, 0.6]], size = 0.5 }
-        [material.glass]
-        color = [0, 0, 0]
-        ambient = 0
-        diffuse = 0
-        transmission = [0.9, 0.95, 0.9]
-        ior = 1.5
-        specular = 0.8
-        shininess = 200
-        [[object]]
-        type = "plane"
-        point = [0, -1.2, 0]
-        normal = [0, 1, 0]
-        material = "floor"
-        [[object]]
+    const Scene scene = test::scene_from_text(std::string(test::kGlassStage) + R"(
         type = "blob"
-        material = "glass"
         threshold = 0.5
         spheres = [{ center = [-0.7, 0, 0], radius = 1.1, strength = 1 }, { center = [0.7, 0.1, 0.2], radius = 1, strength = 1 },
                    { center = [0, 0.5, -0.6], radius = 0.5, strength = -0.8 }]

@@ -60,34 +60,9 @@ TEST(Sor, CsgCutsItAndIsCutByIt) {
 }
 
 TEST(Sor, GlassBendsLightAsTheReferenceDoes) {
-    const Scene scene = test::scene_from_text(R"(
-        [render]
-        width = 120
-        height = 90
-        samples = 2
-        max_depth = 6
-        [camera]
-        eye = [0.5, 2.2, -4.5]
-        look_at = [0, -0.2, 0]
-        fov = 45
-        [[light]]
-        position = [-4, 6, -5]
-        [material.floor]
-        checker = { colors = [[0.9, 0.9, 0.9], [0.2, 0.2, 0.25]], size = 0.5 }
-        [material.glass]
-        transmission = [0.9, 0.95, 0.9]
-        ior = 1.5
-        specular = 0.8
-        shininess = 200
-        [[object]]
-        type = "plane"
-        point = [0, -1.3, 0]
-        normal = [0, 1, 0]
-        material = "floor"
-        [[object]]
+    const Scene scene = test::scene_from_text(std::string(test::kGlassStage) + R"(
         type = "sor"
         points = [[0, -1.2], [0.5, -1], [0.8, -0.5], [0.35, 0.3], [0.3, 0.6], [0.55, 1], [0.5, 1.2]]
-        material = "glass"
     )");
     test::expect_same_picture("sor-glass", to_srgb8(test::render_on(test::Backend::Gpu, scene)),
                               to_srgb8(test::render_on(test::Backend::Cpu, scene)));
