@@ -24,6 +24,7 @@ packages=(
   glslang-dev glslang-tools spirv-tools
   libglm-dev libstb-dev libdeflate-dev liblapacke-dev libopenblas-dev libopenexr-dev libssl-dev
   libtomlplusplus-dev libcli11-dev libfmt-dev
+  libfreetype-dev fonts-dejavu-core fonts-povray
   libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg
   libsdl2-dev xvfb xdotool x11-apps
