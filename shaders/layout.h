@@ -208,6 +208,13 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     VEC4(coefficients) /* a, b, c, d */                 \
     VEC4(span)         /* y0, y1, largest radius, 0 */
 
+// A segment of a prism's outline (shapes/prism.glsl): a 2-D Bezier of degree 1 to 3, its control
+// points' x and z (those beyond its degree repeat its last), and its degree.
+#define LANCER_ROWS_PrismCurve(VEC4, VEC4S, SCALARS, UVEC4S) \
+    VEC4(xs)   /* x of control points 0..3 */              \
+    VEC4(zs)   /* z of control points 0..3 */              \
+    VEC4(info) /* degree, 0, 0, 0 */
+
 #define LANCER_ROWS_CsgNode(VEC4, VEC4S, SCALARS, UVEC4S) \
     SCALARS(uint, first_leaf, uint, leaf_count, uint, first_op, uint, op_count)
 
@@ -413,6 +420,7 @@ LANCER_STRUCT(MeshTriangle)
 LANCER_STRUCT(SetSphere)
 LANCER_STRUCT(BlobElement)
 LANCER_STRUCT(SorBand)
+LANCER_STRUCT(PrismCurve)
 LANCER_STRUCT(BvhNode)
 LANCER_STRUCT(Material)
 LANCER_STRUCT(TextureInfo)
@@ -476,6 +484,7 @@ LANCER_CONST RESOURCE_INT = 4;
     X(SET_SPHERES, 41, RESOURCE_ROWS, SetSphere, set_spheres, set_sphere_at, "sphere set spheres")     \
     X(BLOB_ELEMENTS, 42, RESOURCE_ROWS, BlobElement, blob_elements, blob_element_at, "blob components") \
     X(SOR_BANDS, 43, RESOURCE_ROWS, SorBand, sor_bands, sor_band_at, "sor segments")                   \
+    X(PRISM_CURVES, 44, RESOURCE_ROWS, PrismCurve, prism_curves, prism_curve_at, "prism segments")     \
     X(GRIDS, 31, RESOURCE_ROWS, DirectionGrid, grids, grid_at, "direction grids")                        \
     X(GRID_CELLS, 32, RESOURCE_UINT, uint, grid_cells, grid_cell_at, "direction grid cells")             \
     X(GRID_ENTRIES, 33, RESOURCE_UINT, uint, grid_entries, grid_entry_at, "direction grid entries") /* pairs: primitive, float bits of its nearest distance */
@@ -567,6 +576,7 @@ LANCER_ASSERT_SIZE(MeshTriangle)
 LANCER_ASSERT_SIZE(SetSphere)
 LANCER_ASSERT_SIZE(BlobElement)
 LANCER_ASSERT_SIZE(SorBand)
+LANCER_ASSERT_SIZE(PrismCurve)
 LANCER_ASSERT_SIZE(BvhNode)
 LANCER_ASSERT_SIZE(Material)
 LANCER_ASSERT_SIZE(TextureInfo)

@@ -348,10 +348,11 @@ struct ObjectReading {
                                            "that its patches meet edge to edge)",
                                            type));
             const auto* sor = std::get_if<Sor>(&leaf.shape);
-            const bool open = (cone && cone->open) || (sor && sor->open);
+            const auto* prism = std::get_if<Prism>(&leaf.shape);
+            const bool open = (cone && cone->open) || (sor && sor->open) || (prism && prism->open);
             if (!(shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED) || shape_has(kind, SHAPE_ORIENTED)) || open)
                 t.fail(open ? "open" : "type",
-                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder, cone and sor, torus, "
+                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder, cone, sor and prism, torus, "
                                    "blob, implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, "
                                    "closed meshes, plane as the half-space behind its normal) and CSG objects and groups of them",
                                    open ? "an open " : "a ", type == "spheres" ? "sphere set" : type));

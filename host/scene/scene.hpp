@@ -1,6 +1,7 @@
 #pragma once
 // The scene model: what a scene file describes, independent of how it is rendered.
 // Both renderers (cpu/, gpu/) read this; it knows about neither of them.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -379,6 +381,27 @@ struct Sor {
     double r_max = 1.0;                  // the largest radius of all
 };
 
+// POV-Ray's prism (linear sweep): an outline in the x-z plane of its own coordinates, extruded
+// along y between y0 and y1 and closed by caps there unless `open`. The outline is closed contours
+// of 2-D Bezier segments (POV-Ray's linear, quadratic, cubic and Bezier splines all convert
+// exactly); inside is the even-odd rule over all of them (nested contours make holes), which makes
+// a closed prism a solid for CSG, refraction and photons. Built by make_prism (scene/prism.hpp),
+// for the reader and for anything else that makes outlines. Texture (u, v): (x, z).
+struct PrismSegment {
+    int degree = 1;                      // 1, 2 or 3
+    std::array<glm::dvec2, 4> p{};       // control points (x, z), p[0] .. p[degree]
+    glm::dvec2 start() const { return p[0]; }
+    glm::dvec2 end() const { return p[static_cast<std::size_t>(degree)]; }
+};
+struct Prism {
+    std::vector<PrismSegment> segments;  // closed contours, one after another: each segment starts where the last ended
+    double y0 = 0.0, y1 = 1.0;           // the heights, y0 < y1
+    bool open = false;
+    // Set by prepare_prism (scene/prism.hpp) whenever the segments change:
+    glm::dvec2 lo{0.0}, hi{0.0};               // the outline's box (its control points')
+    std::shared_ptr<const ElementTree> tree;  // over the segments' boxes (the CPU reference's own)
+};
+
 struct Object;
 
 // Constructive solid geometry: POV-Ray's intersection, difference and merge (docs/scene-format.md,
@@ -395,7 +418,7 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus, Csg, Mesh,
-                           SphereSet, Blob, Sor>;
+                           SphereSet, Blob, Sor, Prism>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \

@@ -17,6 +17,7 @@
 
 #include "accel/bvh.hpp"
 #include "scene/shape_bounds.hpp"
+#include "scene/prism.hpp"
 #include "cpu/cpu_renderer.hpp"
 #include "cpu/shapes/shapes.hpp"
 #include "gpu/packing/scene_packing.hpp"
@@ -146,9 +147,11 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                         const std::uint32_t kind = shape_type(leaf.shape);
                         const auto* cone = std::get_if<Cone>(&leaf.shape);
                         const auto* sor = std::get_if<Sor>(&leaf.shape);
+                        const auto* prism = std::get_if<Prism>(&leaf.shape);
                         require((shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED) ||
                                  (shape_has(kind, SHAPE_ORIENTED) && outward_side(leaf.shape) != 0)) &&
-                                    !(cone && cone->open) && !(sor && sor->open) && leaf.material < scene.materials.size(),
+                                    !(cone && cone->open) && !(sor && sor->open) && !(prism && prism->open) &&
+                                    leaf.material < scene.materials.size(),
                                 when, ": CSG leaf");
                     }
                 } else if constexpr (std::is_same_v<T, Torus>) {
@@ -177,6 +180,17 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     }
                     require(std::isfinite(s.r_max) && s.r_max > 0.0, when, ": sor radius");
                     require(o.placement && o.placement->shape_in_object_space, when, ": a sor is always placed");
+                } else if constexpr (std::is_same_v<T, Prism>) {
+                    require(!s.segments.empty(), when, ": prism without segments");
+                    for (const PrismSegment& g : s.segments) {
+                        require(g.degree >= 1 && g.degree <= 3, when, ": prism segment degree");
+                        for (int i = 0; i <= g.degree; ++i)
+                            require(std::isfinite(g.p[i].x) && std::isfinite(g.p[i].y), when, ": prism control point");
+                    }
+                    require(prism_open_contour(s.segments) < 0, when, ": a prism contour that does not close");
+                    require(std::isfinite(s.y0) && std::isfinite(s.y1) && s.y0 < s.y1, when, ": prism heights");
+                    require(s.tree && !s.tree->nodes.empty(), when, ": prism without its tree");
+                    require(o.placement && o.placement->shape_in_object_space, when, ": a prism is always placed");
                 } else if constexpr (std::is_same_v<T, Mesh>) {
                     require(s.geometry && !s.geometry->mesh().triangles.empty(), when, ": mesh without triangles");
                     const TriangleMesh& m = s.geometry->mesh();

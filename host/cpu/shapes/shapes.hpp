@@ -47,6 +47,11 @@ std::optional<SurfaceHit> intersect(const Blob& o, const Ray& ray, double t_min,
 // isolated by Bernstein subdivision (certified, as the torus's); the base and cap discs unless
 // open. Any ray direction length.
 std::optional<SurfaceHit> intersect(const Sor& o, const Ray& ray, double t_min, double t_max);
+// The nearest hit on the prism (prism.cpp): one walk of the outline's tree along the ray's line in
+// the outline plane, from the slab's entry: every crossing beyond it (certified roots of each
+// segment's Bezier of its side of the line), the nearest a wall, their parity the caps'. Any ray
+// direction length.
+std::optional<SurfaceHit> intersect(const Prism& o, const Ray& ray, double t_min, double t_max);
 // Certified (interval Newton) search for the nearest root; `normal` is surface_normal() there
 // and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
 std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
@@ -79,6 +84,8 @@ std::vector<double> roots_on_line(const Blob& o, const Ray& ray);
 bool inside(const Blob& o, const dvec3& p);
 std::vector<double> roots_on_line(const Sor& o, const Ray& ray);  // the curve's and the discs'
 bool inside(const Sor& o, const dvec3& p);
+std::vector<double> roots_on_line(const Prism& o, const Ray& ray);  // the walls' and the caps'
+bool inside(const Prism& o, const dvec3& p);
 
 // The surfaces that close a solid (SHAPE_ORIENTED: CSG walks their inside along a line):
 // every point where the ray's line crosses the surface with t in (t0, t1), nearest first, and
@@ -134,6 +141,7 @@ glm::dvec2 texture_uv(const Cone& c, const dvec3& p, int part);
 glm::dvec2 texture_uv(const Torus& o, const dvec3& p);
 glm::dvec2 texture_uv(const Blob& o, const dvec3& p);  // x and y across its box
 glm::dvec2 texture_uv(const Sor& o, const dvec3& p);   // the angle about y, the height from bottom to top
+glm::dvec2 texture_uv(const Prism& o, const dvec3& p); // (x, z): planar
 
 // Bicubic (rational) Bezier patches, exactly, by resultant + generalized eigenvalues (bezier.cpp).
 // The ray's direction need not be unit length: t is in units of it. intersect_all returns every

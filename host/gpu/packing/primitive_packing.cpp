@@ -281,6 +281,40 @@ struct PrimitivePacker {
              vec4(float(o.base_r2), float(o.cap_r2), float(o.segments.size()), 0.0f), {}},
             shape_bounds(o));
     }
+    // One primitive, in its own coordinates (always placed): p0 = (bottom, top, 1 where open, the
+    // outline's size), p1 = the outline's box (x, z low; x, z high), data its MeshInfo: a tree over
+    // the segments' boxes (x and z; y in [-1, 1]: shapes/prism.glsl walks the plane y = 0), the
+    // segments (PRISM_CURVES) in leaf order.
+    void operator()(const Prism& o) {
+        std::vector<Aabb> boxes;
+        boxes.reserve(o.segments.size());
+        for (const PrismSegment& s : o.segments) {
+            Aabb box;
+            for (int i = 0; i <= s.degree; ++i) {
+                box.extend(dvec3(s.p[i].x, -1.0, s.p[i].y));
+                box.extend(dvec3(s.p[i].x, 1.0, s.p[i].y));
+            }
+            boxes.push_back(box);
+        }
+        const Bvh bvh = build_bvh(boxes, BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
+        const auto index = static_cast<uint>(out.meshes.size());
+        out.meshes.push_back(pack_element_tree(bvh, static_cast<uint>(out.prism_curves.size()), static_cast<uint>(o.segments.size())));
+        for (std::uint32_t i : bvh.order) {
+            const PrismSegment& s = o.segments[i];
+            PrismCurve g{};
+            for (int k = 0; k < 4; ++k) {
+                const glm::dvec2& c = s.p[std::min(k, s.degree)];
+                g.xs[k] = float(c.x);
+                g.zs[k] = float(c.y);
+            }
+            g.info = vec4(float(s.degree), 0.0f, 0.0f, 0.0f);
+            out.prism_curves.push_back(g);
+        }
+        const float size = float(std::max({std::abs(o.lo.x), std::abs(o.lo.y), std::abs(o.hi.x), std::abs(o.hi.y)}));
+        add({SHAPE_PRISM, material, index, object, vec4(float(o.y0), float(o.y1), o.open ? 1.0f : 0.0f, size),
+             vec4(float(o.lo.x), float(o.lo.y), float(o.hi.x), float(o.hi.y)), {}},
+            shape_bounds(o));
+    }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
     // Each cell of the surface's domain is a primitive with the cell's proved box; the surface
