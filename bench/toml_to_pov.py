@@ -60,6 +60,7 @@ TRANSLATED = {
     "superellipsoid": {"e", "n"},
     "blob": {"threshold", "spheres", "cylinders"},
     "sor": {"points", "open"},
+    "text": {"text", "font", "thickness", "offset"},
     "mesh": {"file", "smooth", "transform"},
     "spheres": {"file", "radius", "transform"},
 }
@@ -460,6 +461,27 @@ def angle_weighted_normals(positions, faces):
     return [[x / length(s) for x in s] if length(s) > 0.0 else [0.0, 1.0, 0.0] for s in sums]
 
 
+def find_font(name, base):
+    """The font file lancer reads for `font`: beside the scene file, else the system's fonts."""
+    if os.path.dirname(name) or os.path.isabs(name) or os.path.isfile(os.path.join(base, name)):
+        return os.path.join(base, name)
+    found = sorted(os.path.join(folder, name) for root in ("/usr/share/fonts", "/usr/local/share/fonts")
+                   for folder, _, files in os.walk(root) if name in files)
+    if not found:
+        sys.exit(f"toml_to_pov: no font '{name}' beside the scene or in /usr/share/fonts")
+    return found[0]
+
+
+def text(o, base):
+    """POV-Ray's own text object: the same font file, thickness and offset."""
+    string = o["text"]
+    if not string.isascii() or '"' in string or "\\" in string:
+        sys.exit("toml_to_pov: only ASCII text without quotes or backslashes is translated")
+    font = find_font(o.get("font", "DejaVuSans.ttf"), base)
+    ox, oy = o.get("offset", [0, 0])
+    return f'text {{ ttf "{font}" "{string}" {o["thickness"]:.9g}, <{ox:.9g}, {oy:.9g}, 0>\n'
+
+
 def mesh(o, base):
     """POV-Ray's mesh2 with the file's triangles (and, shaded smooth, lancer's vertex normals)."""
     path = os.path.join(base, o["file"])
@@ -593,6 +615,8 @@ def shape_body(o, base, torus_as, implicit_as, accuracy, scene):
     if t == "sor":  # the same points, POV-Ray's order (radius, height)
         points = ", ".join(f"<{r:.9g}, {y:.9g}>" for r, y in o["points"])
         return f"sor {{ {len(o['points'])}, {points}{' open' if o.get('open') else ''}\n"
+    if t == "text":
+        return text(o, base)
     sys.exit(f"toml_to_pov: object type {t} is not supported")
 
 

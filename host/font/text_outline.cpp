@@ -14,9 +14,23 @@
 namespace lancer::font {
 namespace {
 
+// FreeType's messages, by its documented way of building them from its list of errors (Debian's
+// FreeType is built without FT_Error_String's).
+struct FreeTypeMessage {
+    int code;
+    const char* text;
+};
+#undef FTERRORS_H_
+#define FT_ERRORDEF(e, v, s) {v, s},
+#define FT_ERROR_START_LIST {
+#define FT_ERROR_END_LIST {0, nullptr}};
+constexpr FreeTypeMessage kFreeTypeMessages[] =
+#include FT_ERRORS_H
+
 std::string reason(FT_Error error) {
-    const char* text = FT_Error_String(error);  // null where FreeType was built without its messages
-    return text ? std::string(text) : fmt::format("FreeType error {:#x}", error);
+    for (const FreeTypeMessage* m = kFreeTypeMessages; m->text; ++m)
+        if (m->code == error) return m->text;
+    return fmt::format("FreeType error {:#x}", error);
 }
 
 class Library {
@@ -37,7 +51,7 @@ class Face {
 public:
     Face(const Library& library, const std::string& path) {
         if (FT_Error e = FT_New_Face(library.get(), path.c_str(), 0, &handle_))
-            throw UserError(fmt::format("the font '{}' could not be read: {}", path, reason(e)));
+            throw FontFileError(fmt::format("the font '{}' could not be read: {}", path, reason(e)));
     }
     ~Face() { FT_Done_Face(handle_); }
     Face(const Face&) = delete;
@@ -121,7 +135,7 @@ TextOutline outline_text(const std::string& font_path, std::string_view utf8, gl
     Face face(library, font_path);
     FT_Face f = face.get();
     if (!FT_IS_SCALABLE(f) || f->units_per_EM == 0)
-        throw UserError(fmt::format("the font '{}' has no outlines (a bitmap font)", font_path));
+        throw FontFileError(fmt::format("the font '{}' has no outlines (a bitmap font)", font_path));
 
     TextOutline result;
     Collector collect{&result.segments, glm::dvec2(0.0), 1.0 / f->units_per_EM};

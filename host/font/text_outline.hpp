@@ -10,6 +10,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/error.hpp"
+
 namespace lancer::font {
 
 // One piece of a contour: a Bézier curve of degree 1 (a line), 2 (TrueType's) or 3 (CFF's), its
@@ -25,9 +27,16 @@ struct TextOutline {
     int glyphs = 0;                        // glyphs with an outline (spaces have none)
 };
 
+// A font file that cannot be read as a font of outlines (the file's fault, not the text's).
+class FontFileError : public UserError {
+public:
+    using UserError::UserError;
+};
+
 // The text's outline in the font at `font_path`, each glyph after the first moved on by `offset`
-// (POV-Ray's text offset) besides its advance. Throws UserError for a file FreeType cannot read, a
-// character the font has no glyph for (naming it and its code point), or UTF-8 that is not.
+// (POV-Ray's text offset) besides its advance. Throws FontFileError for a file FreeType cannot
+// read, UserError for a character the font has no glyph for (naming it and its code point) or
+// UTF-8 that is not.
 TextOutline outline_text(const std::string& font_path, std::string_view utf8, glm::dvec2 offset);
 
 // The code points of UTF-8 text; throws UserError at the first byte that is not UTF-8.

@@ -32,6 +32,8 @@ constexpr long long kMaxMeshTriangles = 1LL << 24;
 constexpr long long kMaxSetSpheres = 1LL << 24;
 // Components of a scene's blobs together: 32 bytes each on the GPU, with their trees.
 constexpr long long kMaxBlobComponents = 1LL << 22;
+// Outline pieces of one prism or text object (a text's glyphs are a few dozen each).
+constexpr std::size_t kMaxPrismSegments = std::size_t{1} << 20;
 constexpr int kMaxParametricSurfaces = 32;
 constexpr int kMaxImplicitSurfaces = 32;  // each also a function in the shader
 // Operations of a parametric surface's equations after simplification, and of all surfaces of a

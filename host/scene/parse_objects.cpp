@@ -59,7 +59,7 @@ Object read_object(TableReader& t, const std::string& type, const MaterialChoice
     }
     Object o;
     o.where = t.location();
-    const glm::dmat4 to_world = read_transform(t, parent);
+    const glm::dmat4 to_world = type == "text" ? read_transform(t, parent) * text_frame() : read_transform(t, parent);
     o.shape = reader->second(t, to_world);
     place(o, to_world);
     o.material = read_material_reference(t, materials, inherited_material);

@@ -24,6 +24,10 @@ Shape read_spheres(TableReader& t, const glm::dmat4& to_world);  // parse_sphere
 Shape read_superellipsoid(TableReader& t, const glm::dmat4& to_world);
 Shape read_blob(TableReader& t, const glm::dmat4& to_world);  // parse_blob.cpp: POV-Ray's blob
 Shape read_sor(TableReader& t, const glm::dmat4& to_world);   // parse_sor.cpp: POV-Ray's surface of revolution
+Shape read_text(TableReader& t, const glm::dmat4& to_world);  // parse_text.cpp: POV-Ray's text, a prism
+// The frame text is built in: its prism's outline is in x-z and extrudes along y; this turns it
+// to POV-Ray's text (glyphs in x-y, extruded along +z). read_object places text through it.
+glm::dmat4 text_frame();
 Shape read_prism(TableReader& t, const glm::dmat4& to_world); // parse_prism.cpp: POV-Ray's prism
 
 // Where in the scene file a column of f's text is: inside the `function` string, or the key
