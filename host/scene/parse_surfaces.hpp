@@ -25,8 +25,8 @@ Shape read_superellipsoid(TableReader& t, const glm::dmat4& to_world);
 Shape read_blob(TableReader& t, const glm::dmat4& to_world);  // parse_blob.cpp: POV-Ray's blob
 Shape read_sor(TableReader& t, const glm::dmat4& to_world);   // parse_sor.cpp: POV-Ray's surface of revolution
 Shape read_text(TableReader& t, const glm::dmat4& to_world);  // parse_text.cpp: POV-Ray's text, a prism
-// The frame text is built in: its prism's outline is in x-z and extrudes along y; this turns it
-// to POV-Ray's text (glyphs in x-y, extruded along +z). read_object places text through it.
+// The frame text is built in: its prism's outline is in x-z and extrudes along y; this mirror (y
+// and z swapped) makes it POV-Ray's text (glyphs in x-y, extruded along +z). read_object uses it.
 glm::dmat4 text_frame();
 Shape read_prism(TableReader& t, const glm::dmat4& to_world); // parse_prism.cpp: POV-Ray's prism
 

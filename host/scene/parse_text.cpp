@@ -11,7 +11,7 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat4x4.hpp>
 
 #include "font/text_outline.hpp"
 #include "scene/limits.hpp"
@@ -64,11 +64,14 @@ glm::dvec2 read_offset(TableReader& t) {
 
 }  // namespace
 
-// Text is a prism (outlines in x-z, extruded along y) turned a quarter about x, so that the
-// glyphs' (x, y) are the scene's and the extrusion runs along +z: the prism's point (x, h, -y)
-// lands on (x, y, h).
+// Text is a prism (outlines in x-z, extruded along y) with its y and z swapped: the glyphs'
+// (x, y) are the outline's (x, z), and the extrusion runs along +z. A mirror, so that the prism's
+// texture (u, v) = (x, z) is the text's (x, y), as POV-Ray's planar image map on text.
 glm::dmat4 text_frame() {
-    return glm::rotate(glm::dmat4(1.0), glm::radians(90.0), glm::dvec3(1.0, 0.0, 0.0));
+    glm::dmat4 swap(1.0);
+    swap[1] = glm::dvec4(0.0, 0.0, 1.0, 0.0);  // the prism's y (the extrusion) to z
+    swap[2] = glm::dvec4(0.0, 1.0, 0.0, 0.0);  // its z (the glyphs' y) to y
+    return swap;
 }
 
 Shape read_text(TableReader& t, const glm::dmat4&) {
@@ -95,7 +98,7 @@ Shape read_text(TableReader& t, const glm::dmat4&) {
     for (const font::OutlineSegment& g : outline.segments) {
         PrismSegment s;
         s.degree = g.degree;
-        for (int k = 0; k <= g.degree; ++k) s.p[k] = glm::dvec2(g.points[k].x, -g.points[k].y);  // text_frame turns z = -y up
+        for (int k = 0; k <= g.degree; ++k) s.p[k] = g.points[k];
         segments.push_back(s);
     }
     Prism prism;
