@@ -4,8 +4,9 @@
 // baseline on the x axis from the origin, their fronts in the plane z = 0, extruded along +z by
 // the thickness. Each glyph's outline (quadratic or cubic Bézier contours, FreeType reads the
 // font) becomes the outline of one prism for the whole string, exact on both backends.
-#include <algorithm>
 #include <filesystem>
+#include <map>
+#include <mutex>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -27,9 +28,26 @@ namespace fs = std::filesystem;
 // POV-Ray's own timrom.ttf, cyrvetic.ttf, crystal.ttf and povlogo.ttf under the first).
 constexpr const char* kFontFolders[] = {"/usr/share/fonts", "/usr/local/share/fonts"};
 
+// The system font of that file name (empty where none): the first in path order, so that the
+// choice does not depend on the file system's order; remembered, as a scene may name it often.
+fs::path find_system_font(const fs::path& name) {
+    static std::mutex mutex;
+    static std::map<fs::path, fs::path> known;
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (auto k = known.find(name); k != known.end()) return k->second;
+    fs::path first;
+    std::error_code ec;
+    for (const char* folder : kFontFolders) {
+        fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec), end;
+        for (; !ec && it != end; it.increment(ec))
+            if (it->path().filename() == name && it->is_regular_file(ec) && (first.empty() || it->path() < first))
+                first = it->path();
+    }
+    return known[name] = first;
+}
+
 // A font named in a scene: a path with a folder is the scene file's relative one; a bare file
-// name is looked for beside the scene file, then among the system's fonts (the first in name order
-// where several folders have it, so that the choice does not depend on the file system's order).
+// name is looked for beside the scene file, then among the system's fonts.
 std::string find_font(TableReader& t, const std::string& name) {
     const fs::path scene_folder = fs::path(t.file()).parent_path();
     const fs::path named(name);
@@ -40,17 +58,12 @@ std::string find_font(TableReader& t, const std::string& name) {
         return path.string();
     }
     if (fs::is_regular_file(scene_folder / named, ec)) return (scene_folder / named).string();
-    std::vector<fs::path> found;
-    for (const char* folder : kFontFolders) {
-        fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec), end;
-        for (; !ec && it != end; it.increment(ec))
-            if (it->path().filename() == named && it->is_regular_file(ec)) found.push_back(it->path());
-    }
+    const fs::path found = find_system_font(named);
     if (found.empty())
         t.fail("font", fmt::format("no font '{}' beside the scene file or among the system's fonts (/usr/share/fonts); "
                                    "DejaVu comes with Debian's fonts-dejavu-core, POV-Ray's own fonts with fonts-povray",
                                    name));
-    return std::min(found.begin(), found.end())->string();
+    return found.string();
 }
 
 // POV-Ray's offset: how far each glyph moves besides its advance, [x, y] in em units.
