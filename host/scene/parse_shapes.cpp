@@ -167,6 +167,7 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"superellipsoid", read_superellipsoid},
         {"blob", read_blob},
         {"sor", read_sor},
+        {"lathe", read_lathe},
         {"disc", read_disc},
         {"cylinder", read_cylinder},
         {"cone", read_cone},

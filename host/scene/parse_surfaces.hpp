@@ -24,6 +24,7 @@ Shape read_spheres(TableReader& t, const glm::dmat4& to_world);  // parse_sphere
 Shape read_superellipsoid(TableReader& t, const glm::dmat4& to_world);
 Shape read_blob(TableReader& t, const glm::dmat4& to_world);  // parse_blob.cpp: POV-Ray's blob
 Shape read_sor(TableReader& t, const glm::dmat4& to_world);   // parse_sor.cpp: POV-Ray's surface of revolution
+Shape read_lathe(TableReader& t, const glm::dmat4& to_world); // parse_lathe.cpp: POV-Ray's lathe
 
 // Where in the scene file a column of f's text is: inside the `function` string, or the key
 // whose values the function was written from.

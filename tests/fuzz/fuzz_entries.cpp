@@ -177,6 +177,19 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     }
                     require(std::isfinite(s.r_max) && s.r_max > 0.0, when, ": sor radius");
                     require(o.placement && o.placement->shape_in_object_space, when, ": a sor is always placed");
+                } else if constexpr (std::is_same_v<T, Lathe>) {
+                    require(!s.segments.empty() && s.degree >= 1 && s.degree <= 3, when, ": lathe without segments");
+                    for (const LatheSegment& g : s.segments) {
+                        for (int i = 0; i <= s.degree; ++i) {
+                            require_finite(g.r[i], when, ": lathe radius");
+                            require_finite(g.y[i], when, ": lathe height");
+                        }
+                        require(g.r[0] >= 0.0 && g.r[s.degree] >= 0.0 && g.r_max >= 0.0 && g.y_lo <= g.y_hi, when,
+                                ": lathe segment");
+                        require(g.side == 1 || g.side == -1, when, ": lathe side");
+                    }
+                    require(std::isfinite(s.r_max) && s.r_max > 0.0, when, ": lathe radius");
+                    require(o.placement && o.placement->shape_in_object_space, when, ": a lathe is always placed");
                 } else if constexpr (std::is_same_v<T, Mesh>) {
                     require(s.geometry && !s.geometry->mesh().triangles.empty(), when, ": mesh without triangles");
                     const TriangleMesh& m = s.geometry->mesh();
