@@ -210,8 +210,10 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
                 float sa = s0, sb = s1;
                 float slo = ylo < Ylo ? lathe_height_root(band.height, Ylo, s0, s1, y0 - Ylo) : (rising ? s0 : s1);
                 float shi = yhi > Yhi ? lathe_height_root(band.height, Yhi, s0, s1, y0 - Yhi) : (rising ? s1 : s0);
-                sa = min(slo, shi);
-                sb = max(slo, shi);
+                // Widened by a few of float's steps in s: the ends are found within them, and F's
+                // root (its constant term rounded to the ray's heights) may lie a little beyond.
+                sa = max(s0, min(slo, shi) - 4e-7);
+                sb = min(s1, max(slo, shi) + 4e-7);
                 // t grows with s where y does and the ray rises, or neither.
                 bool forward = rising == (d.y >= 0.0);
                 float s_root = -1.0;

@@ -12,13 +12,15 @@
 // (cpu/shapes/bernstein_roots.hpp: a piece is dropped only on a proof that F keeps one sign
 // over it), each found by bisection on F evaluated directly from the curve.
 //
-// The ray's sigma at a root s: where the ray runs more along the axis than across it,
-// (y(s) - c.y) / d.y; else from the circle of radius r(s) the ray crosses, sigma_m +- reach
-// about its point nearest the axis, the one nearer (y(s) - c.y) / d.y, or both where the root
-// was only told to within rounding (a ray level within rounding, for which F is a square whose
-// double roots are each the two crossings of the circle at that height: POV-Ray's special case
-// of the horizontal ray). Roots of neighbouring segments at their shared point, and the two
-// candidates of a root that touches, are merged when within 1e-9 of the lathe's size.
+// For a ray more along the axis than across it, F is taken over the whole segment and sigma is
+// (y(s) - c.y) / d.y. Else F's roots come in pairs about the ray's point nearest the axis (it
+// nears the axis and leaves it at almost one height), as close as the ray is level: so the ray's
+// stretch through the segment's band is cut there, and each half taken over the pieces of s where
+// y(s) is monotone and lies within the half's heights (F's Bernstein form built over each piece
+// from the piece's own control points, so that it is resolved however narrow the piece); sigma is
+// then where the circle of radius r(s) crosses the line on that half's side (POV-Ray's special case
+// of the level ray, made general). Roots of neighbouring segments at their shared point, and of
+// neighbouring pieces, are merged when within 1e-9 of the lathe's size.
 //
 // inside: POV-Ray's even-odd rule: the half-line from the point away from the axis at its height
 // crosses the curve where y(s) = p.y and r(s) > rho, counted per segment by isolating the roots
@@ -93,7 +95,146 @@ struct LatheRoot {
     glm::dvec2 uv;  // (segment, s)
 };
 
-// The roots of F on segment k with sigma in (s_min, s_max), appended to `out` (any order).
+// The piece [s0, s1] of a segment's curve (de Casteljau twice): control values of degree n.
+std::array<double, 4> lathe_piece(const std::array<double, 4>& b, int n, double s0, double s1) {
+    auto right_of = [n](std::array<double, 4> w, double s) {  // the part over [s, 1]
+        std::array<double, 4> out{};
+        for (int level = n; level >= 0; --level) {
+            out[level] = w[level];
+            for (int i = 0; i < level; ++i) w[i] = (1.0 - s) * w[i] + s * w[i + 1];
+        }
+        return out;
+    };
+    auto left_of = [n](std::array<double, 4> w, double s) {  // the part over [0, s]
+        std::array<double, 4> out{};
+        for (int level = n; level >= 0; --level) {
+            out[n - level] = w[0];
+            for (int i = 0; i < level; ++i) w[i] = (1.0 - s) * w[i] + s * w[i + 1];
+        }
+        return out;
+    };
+    if (s0 > 0.0) {
+        std::array<double, 4> r = right_of(b, s0);
+        return s1 < 1.0 ? left_of(r, (s1 - s0) / (1.0 - s0)) : r;
+    }
+    return s1 < 1.0 ? left_of(b, s1) : b;
+}
+
+// Where the segment's y(s) turns (y'(s) = 0 in (0, 1)), with 0 and 1, in order.
+std::vector<double> lathe_monotone_ends(const std::array<double, 4>& y, int n) {
+    std::vector<double> ends{0.0};
+    if (n >= 2) {
+        // y'(s)/n: the Bezier of the differences, in power form c0 + c1 s + c2 s^2.
+        const double d0 = y[1] - y[0], d1 = y[2] - y[1], d2 = n == 3 ? y[3] - y[2] : 0.0;
+        const double c0 = d0, c1 = n == 3 ? 2.0 * (d1 - d0) : d1 - d0, c2 = n == 3 ? d0 - 2.0 * d1 + d2 : 0.0;
+        std::vector<double> roots;
+        if (c2 != 0.0) {
+            const double disc = c1 * c1 - 4.0 * c2 * c0;
+            if (disc > 0.0) {
+                const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+                roots.push_back(q / c2);
+                if (q != 0.0) roots.push_back(c0 / q);
+            }
+        } else if (c1 != 0.0) {
+            roots.push_back(-c0 / c1);
+        }
+        std::sort(roots.begin(), roots.end());
+        for (double s : roots)
+            if (s > 0.0 && s < 1.0 && s > ends.back()) ends.push_back(s);
+    }
+    ends.push_back(1.0);
+    return ends;
+}
+
+// The s in [a, b] where y(s) = Y, y monotone there, y(a) - Y of sign `a_above` (bisection).
+double lathe_height_at(const std::array<double, 4>& y, int n, double Y, double a, double b, bool a_above) {
+    for (int i = 0; i < 200; ++i) {
+        const double m = 0.5 * (a + b);
+        if (!(m > a && m < b)) break;
+        if ((lathe_at(y, n, m) - Y > 0.0) == a_above) a = m; else b = m;
+    }
+    return 0.5 * (a + b);
+}
+
+// What a segment's roots need to know of the ray.
+struct LatheAcross {
+    double s_min, s_max;  // the sigma range wanted
+    double middle;        // sigma nearest the axis
+    double rho0_2;        // the line's distance from the axis there, squared
+    double across;        // d.x^2 + d.z^2
+};
+
+// The roots of F over the piece [s0, s1] of segment k (sigma from y(s) where side is 0, else
+// from the circle of radius r(s) on that side of `middle`), appended to `out`.
+template <int n>
+void lathe_piece_roots(const Lathe& o, std::size_t k, const LatheLine& line, const LatheAcross& w, double s0, double s1,
+                       double side, std::vector<LatheRoot>& out) {
+    const LatheSegment& g = o.segments[k];
+    const dvec3& c = line.c;
+    const dvec3& d = line.d;
+    const std::array<double, 4> pr = lathe_piece(g.r, n, s0, s1), py = lathe_piece(g.y, n, s0, s1);
+    // F's Bernstein coefficients over the piece from the control values of its factors.
+    constexpr int N = 2 * n;
+    std::array<double, n + 1> A{}, B{}, E{}, mA{}, mB{}, mE{};
+    for (int i = 0; i <= n; ++i) {
+        const double q = py[i] - c.y;
+        A[i] = d.y * c.x + q * d.x;
+        B[i] = d.y * c.z + q * d.z;
+        E[i] = d.y * pr[i];
+        const double mq = std::abs(py[i]) + std::abs(c.y);
+        mA[i] = std::abs(d.y * c.x) + mq * std::abs(d.x);
+        mB[i] = std::abs(d.y * c.z) + mq * std::abs(d.z);
+        mE[i] = std::abs(E[i]);
+    }
+    auto binomial = [](int a, int b) {
+        double v = 1.0;
+        for (int j = 0; j < b; ++j) v = v * double(a - j) / double(j + 1);
+        return v;
+    };
+    std::array<double, N + 1> F{};
+    double magnitude = 0.0;
+    for (int m = 0; m <= N; ++m) {
+        double sum = 0.0, sum_mag = 0.0;
+        for (int i = std::max(0, m - n); i <= std::min(n, m); ++i) {
+            const int j = m - i;
+            const double weight = binomial(n, i) * binomial(n, j) / binomial(N, m);
+            sum += weight * (A[i] * A[j] + B[i] * B[j] - E[i] * E[j]);
+            sum_mag += weight * (mA[i] * mA[j] + mB[i] * mB[j] + mE[i] * mE[j]);
+        }
+        F[m] = sum;
+        magnitude = std::max(magnitude, sum_mag);
+    }
+    if (!(magnitude > 0.0)) return;  // the line along the axis, level: no crossing
+    // A few roundings per control value (the pieces' de Casteljau too) and per product and sum.
+    const double error = 256.0 * bernstein::kEpsilon * magnitude;
+    auto value = [&](double u) {
+        const double q = lathe_at(py, n, u) - c.y, r = lathe_at(pr, n, u);
+        const double a = d.y * c.x + q * d.x, b = d.y * c.z + q * d.z, e = d.y * r;
+        return a * a + b * b - e * e;
+    };
+    auto accept = [&](double u, double, double) {
+        const double s = s0 + (s1 - s0) * u;
+        double sigma;
+        if (side == 0.0) {
+            sigma = (lathe_at(g.y, n, s) - c.y) / d.y;
+        } else {
+            const double r = lathe_at(g.r, n, s), gap = r * r - w.rho0_2;
+            if (gap < -64.0 * bernstein::kEpsilon * (r * r + w.rho0_2)) return false;  // the circle misses the line
+            sigma = w.middle + side * std::sqrt(std::max(gap, 0.0) / w.across);
+        }
+        if (sigma > w.s_min && sigma < w.s_max)
+            out.push_back({sigma, lathe_normal(o, g, s, c + sigma * d, d), glm::dvec2(double(k), s)});
+        return false;
+    };
+    bernstein::isolate(F, 0.0, 1.0, error, value, accept, true);
+}
+
+// The roots on segment k with sigma in (s_min, s_max), appended to `out` (any order). A ray more
+// along the axis than across it: F over the whole segment, sigma from y(s). Else the ray's
+// stretch through the segment's band is cut at its point nearest the axis, and each half taken
+// over the pieces of s where y(s) is monotone and within the half's heights: F's roots come in
+// pairs about that point, as close as the ray is level, and the pieces part them (and shrink
+// with the half's heights, so that F is resolved on them however level the ray).
 template <int n>
 void lathe_segment_roots(const Lathe& o, std::size_t k, const LatheLine& line, double s_min, double s_max,
                          std::vector<LatheRoot>& out) {
@@ -112,83 +253,63 @@ void lathe_segment_roots(const Lathe& o, std::size_t k, const LatheLine& line, d
     } else if (c.y < g.y_lo - widen || c.y > g.y_hi + widen) {
         return;
     }
-    const double across = d.x * d.x + d.z * d.z;
+    LatheAcross w{s_min, s_max, 0.0, 0.0, d.x * d.x + d.z * d.z};
+    w.middle = w.across > 0.0 ? -(c.x * d.x + c.z * d.z) / w.across : 0.0;
+    const double nx = c.x + w.middle * d.x, nz = c.z + w.middle * d.z;
+    w.rho0_2 = nx * nx + nz * nz;
     const double R = g.r_max + widen;
-    const double middle = across > 0.0 ? -(c.x * d.x + c.z * d.z) / across : 0.0;  // nearest the axis
-    const double nx = c.x + middle * d.x, nz = c.z + middle * d.z;
-    const double rho0_2 = nx * nx + nz * nz;  // the line's distance from the axis, squared
-    if (rho0_2 > R * R) return;
-    if (across > 0.0) {
-        const double reach = std::sqrt((R * R - rho0_2) / across);
-        lo = std::max(lo, middle - reach);
-        hi = std::min(hi, middle + reach);
+    if (w.rho0_2 > R * R) return;
+    if (w.across > 0.0) {
+        const double reach = std::sqrt((R * R - w.rho0_2) / w.across);
+        lo = std::max(lo, w.middle - reach);
+        hi = std::min(hi, w.middle + reach);
     }
     if (!(lo <= hi)) return;
-
-    // F's Bernstein coefficients over [0, 1] from the control values of its factors.
-    constexpr int N = 2 * n;
-    std::array<double, n + 1> A{}, B{}, E{}, mA{}, mB{}, mE{};
-    for (int i = 0; i <= n; ++i) {
-        const double q = g.y[i] - c.y;
-        A[i] = d.y * c.x + q * d.x;
-        B[i] = d.y * c.z + q * d.z;
-        E[i] = d.y * g.r[i];
-        const double mq = std::abs(g.y[i]) + std::abs(c.y);
-        mA[i] = std::abs(d.y * c.x) + mq * std::abs(d.x);
-        mB[i] = std::abs(d.y * c.z) + mq * std::abs(d.z);
-        mE[i] = std::abs(E[i]);
-    }
-    auto binomial = [](int a, int b) {
-        double v = 1.0;
-        for (int j = 0; j < b; ++j) v = v * double(a - j) / double(j + 1);
-        return v;
-    };
-    std::array<double, N + 1> F{};
-    double magnitude = 0.0;
-    for (int m = 0; m <= N; ++m) {
-        double sum = 0.0, sum_mag = 0.0;
-        for (int i = std::max(0, m - n); i <= std::min(n, m); ++i) {
-            const int j = m - i;
-            const double w = binomial(n, i) * binomial(n, j) / binomial(N, m);
-            sum += w * (A[i] * A[j] + B[i] * B[j] - E[i] * E[j]);
-            sum_mag += w * (mA[i] * mA[j] + mB[i] * mB[j] + mE[i] * mE[j]);
+    if (w.across == 0.0) {
+        // Along the axis: where r(s) is the line's distance from it (F, d.y^2 (rho0^2 - r^2),
+        // would square it: a double root where the curve meets the axis).
+        const double rho0 = std::sqrt(w.rho0_2);
+        std::array<double, n + 1> f{};
+        double magnitude = rho0;
+        for (int i = 0; i <= n; ++i) {
+            f[i] = g.r[i] - rho0;
+            magnitude = std::max(magnitude, std::abs(g.r[i]) + rho0);
         }
-        F[m] = sum;
-        magnitude = std::max(magnitude, sum_mag);
-    }
-    // A few roundings per control value and per product and sum: 256 is generous.
-    const double error = 256.0 * bernstein::kEpsilon * magnitude;
-    if (!(magnitude > 0.0)) return;  // d.y = 0 and the line along the axis: no crossing
-
-    auto value = [&](double s) {
-        const double q = lathe_at(g.y, n, s) - c.y, r = lathe_at(g.r, n, s);
-        const double a = d.y * c.x + q * d.x, b = d.y * c.z + q * d.z, e = d.y * r;
-        return a * a + b * b - e * e;
-    };
-    const bool steep = d.y * d.y >= across;
-    auto push = [&](double sigma, double s) {
-        if (!(sigma > s_min && sigma < s_max)) return;
-        out.push_back({sigma, lathe_normal(o, g, s, c + sigma * d, d), glm::dvec2(double(k), s)});
-    };
-    auto accept = [&](double s, double from, double to) {
-        const double q = lathe_at(g.y, n, s) - c.y;
-        if (steep) {
-            push(q / d.y, s);
+        auto value = [&](double s) { return lathe_at(g.r, n, s) - rho0; };
+        auto accept = [&](double s, double, double) {
+            const double sigma = (lathe_at(g.y, n, s) - c.y) / d.y;
+            if (sigma > s_min && sigma < s_max) out.push_back({sigma, lathe_normal(o, g, s, c + sigma * d, d), glm::dvec2(double(k), s)});
             return false;
+        };
+        bernstein::isolate(f, 0.0, 1.0, 8.0 * bernstein::kEpsilon * magnitude, value, accept, true);
+        return;
+    }
+    if (d.y * d.y >= w.across) {
+        lathe_piece_roots<n>(o, k, line, w, 0.0, 1.0, 0.0, out);
+        return;
+    }
+    const std::vector<double> ends = lathe_monotone_ends(g.y, n);
+    for (double side : {-1.0, 1.0}) {
+        const double a = side < 0.0 ? lo : std::max(lo, w.middle), b = side < 0.0 ? std::min(hi, w.middle) : hi;
+        if (!(a <= b)) continue;
+        const double Ya = c.y + a * d.y, Yb = c.y + b * d.y;
+        const double Ylo = std::min(Ya, Yb), Yhi = std::max(Ya, Yb);
+        for (std::size_t e = 0; e + 1 < ends.size(); ++e) {
+            const double p0 = ends[e], p1 = ends[e + 1];
+            const double y0 = lathe_at(g.y, n, p0), y1 = lathe_at(g.y, n, p1);
+            if (y0 == y1) {  // level along the piece: a flat ring, which a level line in its plane only grazes
+                if (d.y == 0.0 || y0 < Ylo || y0 > Yhi) continue;
+                lathe_piece_roots<n>(o, k, line, w, p0, p1, side, out);
+                continue;
+            }
+            const bool rising = y1 > y0;
+            const double ylo = std::min(y0, y1), yhi = std::max(y0, y1);
+            if (yhi < Ylo || ylo > Yhi) continue;
+            const double at_lo = ylo < Ylo ? lathe_height_at(g.y, n, Ylo, p0, p1, y0 > Ylo) : (rising ? p0 : p1);
+            const double at_hi = yhi > Yhi ? lathe_height_at(g.y, n, Yhi, p0, p1, y0 > Yhi) : (rising ? p1 : p0);
+            lathe_piece_roots<n>(o, k, line, w, std::min(at_lo, at_hi), std::max(at_lo, at_hi), side, out);
         }
-        const double r = lathe_at(g.r, n, s);
-        const double reach = std::sqrt(std::max(r * r - rho0_2, 0.0) / across);
-        const double near = middle - reach, far = middle + reach;
-        if (from == to && d.y != 0.0) {
-            const double sigma_y = q / d.y;
-            push(std::abs(near - sigma_y) <= std::abs(far - sigma_y) ? near : far, s);
-        } else {
-            push(near, s);
-            if (far > near) push(far, s);
-        }
-        return false;
-    };
-    bernstein::isolate(F, 0.0, 1.0, error, value, accept, true);
+    }
 }
 
 // Every root with sigma in (s_min, s_max), nearest first, those within rounding of each other one.
