@@ -237,6 +237,10 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
                     for (int j = 0; j < 7; ++j) c[j] = 0.0;
                     for (int a = 0; a <= degree; ++a)
                         for (int b = 0; b <= degree; ++b) c[a + b] += A[a] * A[b] + B[a] * B[b] - E[a] * E[b];
+                    // No root in [-1, 1] where the constant term outweighs all the others.
+                    float others = 0.0;
+                    for (int j = 1; j <= 2 * degree; ++j) others += abs(c[j]);
+                    if (abs(c[0]) > others) continue;
                     float x = lathe_first_root(c, 2 * degree);
                     if (x == INFINITY) continue;
                     s_root = sm + (forward ? x : -x) * w;

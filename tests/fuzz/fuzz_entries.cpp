@@ -286,6 +286,8 @@ void check_renderers_input(const Scene& accepted, const std::string& when) {
     for (const auto& s : packed.surfaces)
         for (const auto& v : {s.row0, s.row1, s.row2, s.inverse0, s.inverse1, s.inverse2, s.domain})
             require_finite_floats(v, when, ": surface info");
+    for (const auto& b : packed.lathe_bands)
+        for (const auto& v : {b.radius, b.height, b.band}) require_finite_floats(v, when, ": lathe segment");
     for (const auto& m : packed.materials)
         for (const auto& v : {m.color, m.color2, m.phong}) require_finite_floats(v, when, ": material");
     for (const auto& l : packed.lights) {
