@@ -471,6 +471,21 @@ TEST(LatheReader, RefusesWhatPovRayRefusesAndCurvesBelowTheAxis) {
     expect_lathe_refused("points = [[0, 0], [1, 0], [1, 0], [0, 0]]\n", "encloses no area");
 }
 
+// Texture (u, v): the angle about y from +x toward +z, and POV-Ray's v, (segment + s) / count,
+// from the hit's (segment, s).
+TEST(Lathe, TextureIsTheAngleAndPovRaysV) {
+    const Lathe o = lathe_of("linear", {{0, 0}, {1, 0}, {1, 2}, {0, 2}});
+    const auto h = intersect(o, {{0, 0.5, -5}, {0, 0, 1}}, 0.0, kFar);  // the side at y = 0.5, from -z
+    ASSERT_TRUE(h);
+    EXPECT_EQ(h->uv.x, 1.0);
+    EXPECT_NEAR(h->uv.y, 0.25, 1e-12);
+    const glm::dvec2 uv = texture_uv(o, dvec3(0, 0.5, -1), h->uv);
+    EXPECT_NEAR(uv.x, 0.75, 1e-12);  // -z: three quarters of the way round from +x toward +z
+    EXPECT_NEAR(uv.y, (1.0 + 0.25) / 3.0, 1e-12);
+    EXPECT_NEAR(texture_uv(o, dvec3(0, 0.5, 1), h->uv).x, 0.25, 1e-12);
+    EXPECT_NEAR(texture_uv(o, dvec3(1, 0.5, 0), h->uv).x, 0.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace lathe_test
 }  // namespace lancer::cpu
