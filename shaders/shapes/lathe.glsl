@@ -189,13 +189,12 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
         float bp[4];
         int pieces = lathe_monotone_pieces(band.height, bp);
         // Each half of the stretch about the point nearest the axis (one where the ray is steep).
-        for (int part = 0; part < 2; ++part) {
+        int parts = steep ? 1 : 2;  // (a bound the compiler cannot unroll: the body is large)
+        for (int part = 0; part < parts; ++part) {
             float ta = t_lo, tb = t_hi, side = 1.0;
             if (!steep) {
                 side = part == 0 ? -1.0 : 1.0;
                 if (part == 0) tb = min(tb, tm); else ta = max(ta, tm);
-            } else if (part == 1) {
-                break;
             }
             if (!(ta <= tb) || ta + m >= best) continue;
             float Ya = o.y + ta * d.y, Yb = o.y + tb * d.y;
@@ -208,8 +207,13 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
                 if (yhi < Ylo || ylo > Yhi) continue;
                 // The piece's s where y is within [Ylo, Yhi].
                 float sa = s0, sb = s1;
-                float slo = ylo < Ylo ? lathe_height_root(band.height, Ylo, s0, s1, y0 - Ylo) : (rising ? s0 : s1);
-                float shi = yhi > Yhi ? lathe_height_root(band.height, Yhi, s0, s1, y0 - Yhi) : (rising ? s1 : s0);
+                float ends[2];
+                for (int e = 0; e < pieces - k + 1 && e < 2; ++e) {  // (one call site: a bound not unrolled)
+                    float Y = e == 0 ? Ylo : Yhi;
+                    bool beyond = e == 0 ? ylo < Ylo : yhi > Yhi;
+                    ends[e] = beyond ? lathe_height_root(band.height, Y, s0, s1, y0 - Y) : ((e == 0) == rising ? s0 : s1);
+                }
+                float slo = ends[0], shi = ends[1];
                 // Widened by a few of float's steps in s: the ends are found within them, and F's
                 // root (its constant term rounded to the ray's heights) may lie a little beyond.
                 sa = max(s0, min(slo, shi) - 4e-7);
