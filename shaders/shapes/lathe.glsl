@@ -152,9 +152,33 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
     int degree = int(p.p0.w);
     for (uint i = 0u; i < count; ++i) {
         LatheBand band = lathe_band_at(p.data + i);
-        // The ray's stretch through the segment's band: its slab and its bounding cylinder.
+        if (band.band.y == band.band.z) {
+            // A flat ring (a base, a cap, a rim): where the ray crosses its plane, a radius the
+            // curve takes (r(s) is continuous: between its least and its most), its s found on
+            // the monotone piece of r that holds it. (Its slab would have no width in float.)
+            if (d.y == 0.0) continue;
+            float t = (band.band.y - ray.origin.y) / d.y;
+            if (!(t > t_min && t < best)) continue;
+            float rho = length(ray.origin.xz + t * d.xz);
+            float rp[4];
+            int r_pieces = lathe_monotone_pieces(band.radius, rp);
+            float f_lo = lathe_cubic(band.radius, rp[0]) - rho;
+            for (int k = 1; k < r_pieces; ++k) {
+                float f_hi = lathe_cubic(band.radius, rp[k]) - rho;
+                if ((f_lo > 0.0) != (f_hi > 0.0)) {
+                    best = t;
+                    hit = true;
+                    uv = vec2(float(i), lathe_height_root(band.radius, rho, rp[k - 1], rp[k], f_lo));
+                    break;
+                }
+                f_lo = f_hi;
+            }
+            continue;
+        }
+        // The ray's stretch through the segment's band: its slab and its bounding cylinder (the
+        // slab widened by the rounding of the ray's height too, for rays from far away).
         float lo = t_min, hi = best;
-        float widen = 1e-5 * p.p0.z;
+        float widen = 1e-5 * p.p0.z + 2.4e-7 * abs(ray.origin.y);
         if (d.y != 0.0) {
             float a = (band.band.y - widen - ray.origin.y) / d.y, b = (band.band.z + widen - ray.origin.y) / d.y;
             lo = max(lo, min(a, b));
@@ -222,7 +246,7 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
                 bool forward = rising == (d.y >= 0.0);
                 float s_root = -1.0;
                 float w = 0.5 * (sb - sa), sm = 0.5 * (sa + sb);
-                if (w > 4e-6) {
+                if (w > 1e-6) {
                     // F about sm in x = (s - sm) / w, x in [-1, 1]: its factors' Taylor coefficients.
                     float u = sm - 0.5;
                     vec4 yc = band.height, rc = band.radius;
@@ -266,8 +290,31 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
                     t = (lathe_cubic(band.height, s_root) - o.y) / d.y;
                 } else {
                     float r = lathe_cubic(band.radius, s_root);
-                    if (w <= 4e-6 && r * r < rho2) continue;
                     t = lathe_circle_t(r, tm, rho2, across, side);
+                    // A narrow piece was not solved but taken whole: its circle must meet the
+                    // half where the half is (else the curve's height is the ray's there only
+                    // because the half is short, cut by a nearer hit, and the crossing is elsewhere).
+                    float slack = 0.01 * (tb - ta) + 1e-6 * (abs(m) + p.p0.z);
+                    if (w <= 1e-6 && (r * r < rho2 || t < ta - slack || t > tb + slack)) continue;
+                    // The circle's t takes the ray at r(s) whatever its height there: one Newton
+                    // step on (s, t) for y(s) = the ray's height and r(s) = its distance from the
+                    // axis. A small step that leaves the segment says the crossing is beyond its
+                    // end (a ray grazing a corner within rounding, which meets the next segment).
+                    float ys = lathe_cubic(band.height, s_root);
+                    vec2 at = o.xz + t * d.xz;
+                    float g1 = ys - (o.y + t * d.y), g2 = dot(at, at) - r * r;
+                    float j11 = lathe_cubic_slope(band.height, s_root), j21 = -2.0 * r * lathe_cubic_slope(band.radius, s_root);
+                    float j12 = -d.y, j22 = 2.0 * dot(at, d.xz);
+                    float det = j11 * j22 - j12 * j21;
+                    if (det != 0.0) {
+                        float ds = -(g1 * j22 - j12 * g2) / det, dt = -(j11 * g2 - j21 * g1) / det;
+                        if (abs(ds) < 1e-3) {
+                            float s_new = s_root + ds;
+                            if (s_new < -2e-7 || s_new > 1.0 + 2e-7) continue;
+                            s_root = clamp(s_new, 0.0, 1.0);
+                            t += dt;
+                        }
+                    }
                 }
                 t = clamp(t, ta, tb) + m;
                 if (t > t_min && t < best) {
