@@ -17,8 +17,10 @@
 // narrow for float's s (a ray level within rounding) is solved as POV-Ray's level ray is: the
 // circle of radius r(s) at the ray's height, s refined once from the ray's height there. t is then
 // (y(s) - o.y) / d.y for a ray more along the axis than across it, else the crossing of the
-// circle of radius r(s) on the half's side. A ray within rounding of touching the surface may be
-// called a hit or a miss either way.
+// circle of radius r(s) on the half's side, polished by one Newton step on (s, t) (a small step
+// beyond the segment's end drops the root: the ray meets the next segment there). A flat ring (a
+// segment of one height: a base, a cap) is solved where the ray crosses its plane. A ray within
+// rounding of touching the surface may be called a hit or a miss either way.
 
 // A cubic given about s = 1/2 at s, and its derivative.
 float lathe_cubic(vec4 c, float s) {
