@@ -402,7 +402,9 @@ TEST(Lathe, BezierCircleIsTheTorusWithinTheArcsError) {
                 w.minor_radius = a * 1.001;
                 return intersect(w, ray, 0.0, kFar);
             }();
-            if (!wider) EXPECT_FALSE(l) << i;
+            if (!wider) {
+                EXPECT_FALSE(l) << i;
+            }
             continue;
         }
         ASSERT_TRUE(l) << i;
