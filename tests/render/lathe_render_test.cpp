@@ -3,6 +3,7 @@
 // cylinder, a trapezoid the capped cone), and the backends against each other where no other
 // shape is the same (a cubic vase, Bezier pieces, an open quadratic urn, CSG both ways, glass).
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include <gtest/gtest.h>
@@ -40,6 +41,23 @@ TEST(Lathe, ATrapezoidTurnedIsTheCappedCone) {
                        std::string("type = \"cone\"\nbase_point = [0, -1, 0]\nbase_radius = 0.7\ncap_point = [0, 1, 0]\n"
                                    "cap_radius = 0.3\n") +
                            kLatheTurn);
+}
+
+// Seen from its own heights, untilted: a row of rays level in the lathe's own coordinates (the
+// pairs of roots about the point nearest the axis, which a level ray makes into double roots),
+// and rays from a camera on the axis above, down it.
+TEST(Lathe, LevelRaysAndRaysDownTheAxisSeeTheCylinder) {
+    const std::string lathe = "type = \"lathe\"\npoints = [[0, -1], [0.6, -1], [0.6, 1], [0, 1]]\n";
+    const std::string cylinder = "type = \"cylinder\"\nbase_point = [0, -1, 0]\ncap_point = [0, 1, 0]\nradius = 0.6\n";
+    for (const auto& [name, eye, look_at] : {std::tuple{"level", "[0.3, 0.25, -4]", "[0, 0.25, 0]"},
+                                            std::tuple{"rim", "[0.2, 1, -4]", "[0, 1, 0]"},
+                                            std::tuple{"above", "[0, 4, 0.0001]", "[0, 0, 0]"}}) {
+        const Scene a = test::scene_from_text(test::twin_stage(eye, look_at, 30) + lathe);
+        const Scene b = test::scene_from_text(test::twin_stage(eye, look_at, 30) + cylinder);
+        for (test::Backend backend : {test::Backend::Gpu, test::Backend::Cpu})
+            test::expect_same_picture(std::string("lathe-") + name + "-" + test::backend_name(backend),
+                                      to_srgb8(test::render_on(backend, a)), to_srgb8(test::render_on(backend, b)));
+    }
 }
 
 const char* const kLatheVase =
