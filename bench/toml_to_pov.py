@@ -61,6 +61,7 @@ TRANSLATED = {
     "blob": {"threshold", "spheres", "cylinders"},
     "sor": {"points", "open"},
     "text": {"text", "font", "thickness", "offset"},
+    "lathe": {"spline", "points"},
     "mesh": {"file", "smooth", "transform"},
     "spheres": {"file", "radius", "transform"},
 }
@@ -612,6 +613,10 @@ def shape_body(o, base, torus_as, implicit_as, accuracy, scene):
         parts += [f"  cylinder {{ {vec(c['base_point'])}, {vec(c['cap_point'])}, {c['radius']:.9g}, strength {c['strength']:.9g} }}\n"
                   for c in o.get("cylinders", [])]
         return f"blob {{ threshold {o['threshold']:.9g}\n" + "".join(parts)
+    if t == "lathe":  # the same points and spline (POV-Ray's default is linear_spline too)
+        points = ", ".join(f"<{r:.9g}, {y:.9g}>" for r, y in o["points"])
+        spline = o.get("spline", "linear") + "_spline"
+        return f"lathe {{ {spline} {len(o['points'])}, {points}\n"
     if t == "sor":  # the same points, POV-Ray's order (radius, height)
         points = ", ".join(f"<{r:.9g}, {y:.9g}>" for r, y in o["points"])
         return f"sor {{ {len(o['points'])}, {points}{' open' if o.get('open') else ''}\n"

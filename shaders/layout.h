@@ -214,6 +214,14 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
     VEC4(xs)   /* x of control points 0..3 */              \
     VEC4(zs)   /* z of control points 0..3 */              \
     VEC4(info) /* degree, 0, 0, 0 */
+// A segment of a lathe (shapes/lathe.glsl): its radius and height as cubics in its parameter s
+// in [0, 1], power coefficients about s = 1/2 (x + y h + z h^2 + w h^3 with h = s - 1/2), and its
+// band: the largest radius, the lowest and highest heights, and the side its outward normal
+// takes (+1: (y'(s), -r'(s)), -1: the opposite).
+#define LANCER_ROWS_LatheBand(VEC4, VEC4S, SCALARS, UVEC4S) \
+    VEC4(radius)  /* r(s) about s = 1/2 */                \
+    VEC4(height)  /* y(s) about s = 1/2 */                \
+    VEC4(band)    /* largest radius, lowest y, highest y, side */
 
 #define LANCER_ROWS_CsgNode(VEC4, VEC4S, SCALARS, UVEC4S) \
     SCALARS(uint, first_leaf, uint, leaf_count, uint, first_op, uint, op_count)
@@ -421,6 +429,7 @@ LANCER_STRUCT(SetSphere)
 LANCER_STRUCT(BlobElement)
 LANCER_STRUCT(SorBand)
 LANCER_STRUCT(PrismCurve)
+LANCER_STRUCT(LatheBand)
 LANCER_STRUCT(BvhNode)
 LANCER_STRUCT(Material)
 LANCER_STRUCT(TextureInfo)
@@ -485,6 +494,7 @@ LANCER_CONST RESOURCE_INT = 4;
     X(BLOB_ELEMENTS, 42, RESOURCE_ROWS, BlobElement, blob_elements, blob_element_at, "blob components") \
     X(SOR_BANDS, 43, RESOURCE_ROWS, SorBand, sor_bands, sor_band_at, "sor segments")                   \
     X(PRISM_CURVES, 44, RESOURCE_ROWS, PrismCurve, prism_curves, prism_curve_at, "prism segments")     \
+    X(LATHE_BANDS, 45, RESOURCE_ROWS, LatheBand, lathe_bands, lathe_band_at, "lathe segments")         \
     X(GRIDS, 31, RESOURCE_ROWS, DirectionGrid, grids, grid_at, "direction grids")                        \
     X(GRID_CELLS, 32, RESOURCE_UINT, uint, grid_cells, grid_cell_at, "direction grid cells")             \
     X(GRID_ENTRIES, 33, RESOURCE_UINT, uint, grid_entries, grid_entry_at, "direction grid entries") /* pairs: primitive, float bits of its nearest distance */
@@ -577,6 +587,7 @@ LANCER_ASSERT_SIZE(SetSphere)
 LANCER_ASSERT_SIZE(BlobElement)
 LANCER_ASSERT_SIZE(SorBand)
 LANCER_ASSERT_SIZE(PrismCurve)
+LANCER_ASSERT_SIZE(LatheBand)
 LANCER_ASSERT_SIZE(BvhNode)
 LANCER_ASSERT_SIZE(Material)
 LANCER_ASSERT_SIZE(TextureInfo)

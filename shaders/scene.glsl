@@ -22,6 +22,7 @@
 #include "shapes/blob.glsl"
 #include "shapes/sor.glsl"
 #include "shapes/prism.glsl"
+#include "shapes/lathe.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)
 #include "shapes/parametric.glsl"
@@ -65,7 +66,7 @@ bool leaf_hit(Primitive p, Ray world_ray, float t_min, float t_max, out float t_
 #undef LANCER_LEAF_CASE
 #undef csg_intersect
 
-// Whether a walked CSG leaf (SHAPE_CLOSED: the torus, the blob, the sor, the prism and the implicit surfaces, as the CPU
+// Whether a walked CSG leaf (SHAPE_CLOSED: the torus, the blob, the sor, the prism, the lathe and the implicit surfaces, as the CPU
 // reference's cpu/shapes/csg.cpp asserts) holds the world ray's point at t.
 bool leaf_inside(Primitive p, Ray world_ray, float t) {
     float k;
@@ -75,6 +76,7 @@ bool leaf_inside(Primitive p, Ray world_ray, float t) {
     if (p.type == SHAPE_BLOB) return CSG_HAS_BLOB && blob_inside(p, point);
     if (p.type == SHAPE_SOR) return CSG_HAS_SOR && sor_inside(p, point);
     if (p.type == SHAPE_PRISM) return CSG_HAS_PRISM && prism_inside(p, point);
+    if (p.type == SHAPE_LATHE) return CSG_HAS_LATHE && lathe_inside(p, point);
     if (p.type == SHAPE_IMPLICIT) return CSG_HAS_IMPLICIT && implicit_inside(p, point);
     return false;
 }

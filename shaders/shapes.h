@@ -46,7 +46,8 @@
     X(SPHERES, spheres, SphereSet, 12, SHAPE_BOUNDED)                                                   \
     X(BLOB, blob, Blob, 13, SHAPE_BOUNDED | SHAPE_CLOSED)                                                \
     X(SOR, sor, Sor, 14, SHAPE_BOUNDED | SHAPE_CLOSED)                                                  \
-    X(PRISM, prism, Prism, 15, SHAPE_BOUNDED | SHAPE_CLOSED)
+    X(PRISM, prism, Prism, 15, SHAPE_BOUNDED | SHAPE_CLOSED)                                                \
+    X(LATHE, lathe, Lathe, 16, SHAPE_BOUNDED | SHAPE_CLOSED)
 
 #ifdef __cplusplus
 #include <cstdint>

@@ -347,12 +347,15 @@ struct ObjectReading {
                                            "solid only where it encloses one; if it does, say `closed = true` (lancer checks "
                                            "that its patches meet edge to edge)",
                                            type));
+            if (const auto* lathe = std::get_if<Lathe>(&leaf.shape); lathe && !lathe->closed)
+                t.fail("points", "this lathe's curve is open (it neither ends where it starts nor has both ends on the axis), "
+                                 "so it has no inside: CSG combines solids; close the curve");
             const auto* sor = std::get_if<Sor>(&leaf.shape);
             const auto* prism = std::get_if<Prism>(&leaf.shape);
             const bool open = (cone && cone->open) || (sor && sor->open) || (prism && prism->open);
             if (!(shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED) || shape_has(kind, SHAPE_ORIENTED)) || open)
                 t.fail(open ? "open" : "type",
-                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder, cone, sor and prism, torus, "
+                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder, cone, sor, prism and lathe, torus, "
                                    "blob, implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, "
                                    "closed meshes, plane as the half-space behind its normal) and CSG objects and groups of them",
                                    open ? "an open " : "a ", type == "spheres" ? "sphere set" : type));

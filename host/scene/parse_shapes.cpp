@@ -169,6 +169,7 @@ const std::map<std::string, ShapeReader, std::less<>>& shape_readers() {
         {"sor", read_sor},
         {"text", read_text},
         {"prism", read_prism},
+        {"lathe", read_lathe},
         {"disc", read_disc},
         {"cylinder", read_cylinder},
         {"cone", read_cone},

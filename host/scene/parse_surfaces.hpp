@@ -29,6 +29,7 @@ Shape read_text(TableReader& t, const glm::dmat4& to_world);  // parse_text.cpp:
 // and z swapped) makes it POV-Ray's text (glyphs in x-y, extruded along +z). read_object uses it.
 glm::dmat4 text_frame();
 Shape read_prism(TableReader& t, const glm::dmat4& to_world); // parse_prism.cpp: POV-Ray's prism
+Shape read_lathe(TableReader& t, const glm::dmat4& to_world); // parse_lathe.cpp: POV-Ray's lathe
 
 // Where in the scene file a column of f's text is: inside the `function` string, or the key
 // whose values the function was written from.

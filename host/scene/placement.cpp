@@ -116,6 +116,7 @@ struct Absorber {
     bool operator()(Mesh&) const { return false; }  // shared by its placements: never copied
     bool operator()(Sor&) const { return false; }   // about its own y axis, always
     bool operator()(Prism&) const { return false; } // along its own y axis, always
+    bool operator()(Lathe&) const { return false; }  // about its own y axis, always
     bool operator()(SphereSet&) const { return false; }
 };
 
@@ -123,7 +124,8 @@ struct Absorber {
 
 void place(Object& o, const glm::dmat4& m) {
     if (m == glm::dmat4(1.0) && !std::holds_alternative<Mesh>(o.shape) && !std::holds_alternative<SphereSet>(o.shape) &&
-        !std::holds_alternative<Sor>(o.shape) && !std::holds_alternative<Prism>(o.shape)) {
+        !std::holds_alternative<Sor>(o.shape) && !std::holds_alternative<Prism>(o.shape) &&
+        !std::holds_alternative<Lathe>(o.shape)) {
         o.placement.reset();
         return;
     }

@@ -50,7 +50,7 @@ std::string pov_ray_key_hint(std::string_view key) {
         {"spotlight", "a spot light is [[light]] type = \"spot\""},
         {"area_light", "an area light is [[light]] type = \"area\" with edge_u, edge_v and samples"},
         {"point_at", "only a spot light (type = \"spot\") takes point_at"},
-        {"sturm", "lancer's roots are exact without it (a sor's, a blob's, a torus's): leave it out"},
+        {"sturm", "lancer's roots are exact without it (a lathe's, a sor's, a blob's, a torus's): leave it out"},
     };
     return hint(hints, key);
 }
@@ -71,7 +71,6 @@ std::string pov_ray_type_hint(std::string_view type) {
         {"polygon", "a parallelogram is a rectangle; any other polygon, a mesh file"},
         {"light_source", "lights are [[light]] tables"},
         {"camera", "the camera is the [camera] table"},
-        {"lathe", "no lathe yet: a sor (type = \"sor\") where the outline is a function of height"},
     };
     return hint(hints, type);
 }

@@ -402,6 +402,30 @@ struct Prism {
     std::shared_ptr<const ElementTree> tree;  // over the segments' boxes (the CPU reference's own)
 };
 
+// POV-Ray's lathe: a 2-D spline in the (r, y) plane turned about the y axis of its own
+// coordinates. Each segment is a Bezier curve of the lathe's degree (1: linear_spline, 2:
+// quadratic_spline, 3: cubic_spline and bezier_spline), its control points (r[i], y[i]) for
+// i = 0 .. degree in s in [0, 1]: every POV-Ray spline piece is exactly one (parse_lathe.cpp).
+// The curve's radius stays >= 0 (the reader refuses one that dips below the axis). The lathe is
+// `closed` where the curve ends where it starts or both its ends lie on the axis: then its
+// inside is POV-Ray's even-odd rule (a point is inside where a half-line from it away from the
+// axis at its height crosses the curve an odd number of times), and it is a solid for CSG,
+// refraction and photons; an open one has no inside. `side` says which way each segment's
+// outward normal faces: +1 (y'(s), -r'(s)) in the (r, y) plane, -1 the opposite. Texture (u, v):
+// u the angle about y from +x toward +z over 2 pi, v POV-Ray's (segment + s) / segment count.
+struct LatheSegment {
+    std::array<double, 4> r{}, y{};  // the Bezier control points, degree + 1 of them
+    double r_max = 0.0;              // the largest control radius (the curve's bounding cylinder)
+    double y_lo = 0.0, y_hi = 0.0;   // the lowest and highest control heights
+    int side = 1;
+};
+struct Lathe {
+    int degree = 1;
+    std::vector<LatheSegment> segments;  // in the spline's order
+    bool closed = true;
+    double r_max = 0.0, y_lo = 0.0, y_hi = 0.0;  // over every segment
+};
+
 struct Object;
 
 // Constructive solid geometry: POV-Ray's intersection, difference and merge (docs/scene-format.md,
@@ -418,7 +442,7 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus, Csg, Mesh,
-                           SphereSet, Blob, Sor, Prism>;
+                           SphereSet, Blob, Sor, Prism, Lathe>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \

@@ -191,6 +191,19 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require(std::isfinite(s.y0) && std::isfinite(s.y1) && s.y0 < s.y1, when, ": prism heights");
                     require(s.tree && !s.tree->nodes.empty(), when, ": prism without its tree");
                     require(o.placement && o.placement->shape_in_object_space, when, ": a prism is always placed");
+                } else if constexpr (std::is_same_v<T, Lathe>) {
+                    require(!s.segments.empty() && s.degree >= 1 && s.degree <= 3, when, ": lathe without segments");
+                    for (const LatheSegment& g : s.segments) {
+                        for (int i = 0; i <= s.degree; ++i) {
+                            require_finite(g.r[i], when, ": lathe radius");
+                            require_finite(g.y[i], when, ": lathe height");
+                        }
+                        require(g.r[0] >= 0.0 && g.r[s.degree] >= 0.0 && g.r_max >= 0.0 && g.y_lo <= g.y_hi, when,
+                                ": lathe segment");
+                        require(g.side == 1 || g.side == -1, when, ": lathe side");
+                    }
+                    require(std::isfinite(s.r_max) && s.r_max > 0.0, when, ": lathe radius");
+                    require(o.placement && o.placement->shape_in_object_space, when, ": a lathe is always placed");
                 } else if constexpr (std::is_same_v<T, Mesh>) {
                     require(s.geometry && !s.geometry->mesh().triangles.empty(), when, ": mesh without triangles");
                     const TriangleMesh& m = s.geometry->mesh();
@@ -287,6 +300,8 @@ void check_renderers_input(const Scene& accepted, const std::string& when) {
     for (const auto& s : packed.surfaces)
         for (const auto& v : {s.row0, s.row1, s.row2, s.inverse0, s.inverse1, s.inverse2, s.domain})
             require_finite_floats(v, when, ": surface info");
+    for (const auto& b : packed.lathe_bands)
+        for (const auto& v : {b.radius, b.height, b.band}) require_finite_floats(v, when, ": lathe segment");
     for (const auto& m : packed.materials)
         for (const auto& v : {m.color, m.color2, m.phong}) require_finite_floats(v, when, ": material");
     for (const auto& l : packed.lights) {

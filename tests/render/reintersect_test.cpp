@@ -240,6 +240,14 @@ const char* const kStretch = "transform = { scale = [1.6, 0.6, 1.1], rotate = [1
 const char* const kSor =
     "type = \"sor\"\npoints = [[0, -1.2], [0.5, -1], [0.8, -0.5], [0.35, 0.3], [0.3, 0.6], [0.55, 1], [0.5, 1.2]]\n";
 
+// A lathe (a cubic vase with a wall: up the outside, over the lip, down the inside to the axis),
+// always traced in its own coordinates.
+const char* const kLathe =
+    "type = \"lathe\"\nspline = \"cubic\"\npoints = [[0, -1.2], [0, -1], [0.7, -0.9], [0.8, -0.3], [0.35, 0.4], [0.45, 1], "
+    "[0.3, 1.05], [0.25, 0.5], [0.6, -0.3], [0.3, -0.8], [0, -0.8], [-0.2, -0.8]]\n";
+// A linear lathe: a cup's polygon (corners at its rim and foot), closed on itself.
+const char* const kLatheCup = "type = \"lathe\"\npoints = [[0, -1], [0.9, -1], [1.1, 1], [0.9, 1], [0.7, -0.6], [0, -0.6], [0, -1]]\n";
+
 // A blob: two spheres and a cylinder merged, a negative sphere biting into them (the field's
 // quartic changes from stretch to stretch where the ray enters or leaves a component or crosses
 // the cylinder's end planes). The far rays found the cylinder's support computed from the ray's
@@ -299,6 +307,11 @@ const Case kCases[] = {
     {"torus_stretched_far_from_origin", [] { return moved_far(analytic(std::string(kTorus) + kStretch)); }},
     {"sor", [] { return analytic(kSor); }},
     {"sor_far_from_origin", [] { return moved_far(analytic(kSor)); }},
+    {"lathe", [] { return analytic(kLathe); }},
+    {"lathe_far_from_origin", [] { return moved_far(analytic(kLathe)); }},
+    {"lathe_cup", [] { return analytic(kLatheCup); }},
+    {"lathe_cup_far_from_origin", [] { return moved_far(analytic(kLatheCup)); }},
+    {"lathe_stretched", [] { return analytic(std::string(kLathe) + kStretch); }},
     {"blob", [] { return analytic(kBlob); }},
     {"blob_far_from_origin", [] { return moved_far(analytic(kBlob)); }},
     {"blob_stretched", [] { return analytic(std::string(kBlob) + kStretch); }},

@@ -35,6 +35,14 @@ bool leaf_contains(const Object& leaf, dvec3 p) {
     }
     if (const auto* i = std::get_if<ImplicitObject>(&leaf.shape))
         return surface::evaluate_implicit(i->surface, dvec3(i->surface.to_local * glm::dvec4(p, 1.0))).f < 0.0;
+    if (const auto* l = std::get_if<Lathe>(&leaf.shape)) {  // a linear lathe: its polygon in (r, y), even-odd
+        if (l->degree != 1) ADD_FAILURE() << "the point test knows linear lathes only";
+        const double rho = std::hypot(p.x, p.z);
+        bool in = false;
+        for (const LatheSegment& g : l->segments)
+            if ((g.y[0] > p.y) != (g.y[1] > p.y) && g.r[0] + (p.y - g.y[0]) * (g.r[1] - g.r[0]) / (g.y[1] - g.y[0]) > rho) in = !in;
+        return in;
+    }
     ADD_FAILURE() << "no point test for this solid";
     return false;
 }
@@ -143,6 +151,21 @@ TEST(Csg, ToriAndImplicitSurfacesAreWalkedRootByRoot) {
         objects = [
           { type = "superellipsoid", e = 0.3, n = 0.6, transform = { scale = 1.2 } },
           { type = "torus", major_radius = 0.8, minor_radius = 0.5, axis = [1, 1, 0], inverse = true },
+        ]
+    )");
+}
+
+// A lathe's inside is even-odd: a cup (a polygon with a wall and a foot) has several intervals
+// along a ray, its hollow outside it.
+TEST(Csg, ALatheIsWalkedRootByRoot) {
+    expect_membership_agrees(R"(
+        [[object]]
+        type = "difference"
+        transform = { rotate = [25, 0, 10] }
+        objects = [
+          { type = "lathe", points = [[0, -1], [0.9, -1], [1.1, 1], [0.9, 1], [0.7, -0.6], [0, -0.6], [0, -1]] },
+          { type = "box", min = [0, -2, -2], max = [2, 2, 0] },
+          { type = "sphere", center = [-0.9, 0.6, 0], radius = 0.45 },
         ]
     )");
 }

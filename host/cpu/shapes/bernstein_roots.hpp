@@ -2,6 +2,8 @@
 // Certified roots of a quartic g(tau) over tau in [-1, 1] by Bernstein subdivision, for the
 // reference's torus (torus.cpp) and blob (blob.cpp), whose surfaces are a quartic in t along a
 // ray (the torus's over its segment, the blob's over each stretch between its components' ends).
+// split and isolate take Bernstein coefficients of any degree (the lathe's sextics, lathe.cpp,
+// built in Bernstein form over their own interval).
 // g's Bernstein coefficients over a piece enclose g there (convex hull), and their sign
 // variations bound its roots there (Descartes' rule, which is exact for one variation):
 //   * every coefficient beyond its rounding bound on one side: no root in the piece;
@@ -59,8 +61,9 @@ inline Form from_power(const Quartic& p, const Quartic& m) {
 }
 
 // The halves [0, 1/2] and [1/2, 1] of a piece (de Casteljau).
-inline void split(const Quartic& c, Quartic& left, Quartic& right) {
-    Quartic w = c;
+template <std::size_t N>
+inline void split(const std::array<double, N>& c, std::array<double, N>& left, std::array<double, N>& right) {
+    std::array<double, N> w = c;
     const std::size_t n = c.size() - 1;
     left[0] = w[0];
     right[n] = w[n];
@@ -92,8 +95,8 @@ double bisect(const Value& value, double lo, double hi, bool lo_positive) {
 // whose coefficients all lie within rounding of 0 is one touching point (its middle), not halved
 // into 1e-12 pieces that would each be one: g is 0 to rounding along it (about a tangent point,
 // some 1e-6 of [-1, 1]; along a blob's capsule side, all of it).
-template <class Value, class Accept>
-bool isolate(const Quartic& c, double lo, double hi, double error, const Value& value, const Accept& accept, bool flat_runs = false) {
+template <class Value, class Accept, std::size_t N>
+bool isolate(const std::array<double, N>& c, double lo, double hi, double error, const Value& value, const Accept& accept, bool flat_runs = false) {
     double min = c[0], max = c[0];
     for (double x : c) {
         min = std::min(min, x);
@@ -112,7 +115,7 @@ bool isolate(const Quartic& c, double lo, double hi, double error, const Value& 
         return accept(root, root, root);
     }
     if (hi - lo <= kTouchingWidth) return accept(0.5 * (lo + hi), lo, hi);  // within rounding of a touching point
-    Quartic left, right;
+    std::array<double, N> left, right;
     split(c, left, right);
     const double mid = 0.5 * (lo + hi);
     // Each de Casteljau level averages: one more rounding of the largest coefficient.

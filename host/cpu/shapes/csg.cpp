@@ -73,6 +73,7 @@ std::vector<Interval> walked_inside(const Object& leaf, const Ray& ray) {
     if (const auto* blob = std::get_if<Blob>(&leaf.shape)) return walk(*blob);
     if (const auto* sor = std::get_if<Sor>(&leaf.shape)) return walk(*sor);
     if (const auto* prism = std::get_if<Prism>(&leaf.shape)) return walk(*prism);
+    if (const auto* lathe = std::get_if<Lathe>(&leaf.shape)) return walk(*lathe);
     return walk(std::get<ImplicitObject>(leaf.shape));
 }
 
@@ -134,7 +135,7 @@ bool walked(const Object& leaf) {
 constexpr bool closed_shapes_are_known() {
     for (std::uint32_t t = 0; t < SHAPE_COUNT; ++t)
         if (shape_has(t, SHAPE_CLOSED) != (t == SHAPE_TORUS || t == SHAPE_IMPLICIT || t == SHAPE_BLOB || t == SHAPE_SOR ||
-                                         t == SHAPE_PRISM))
+                                         t == SHAPE_PRISM || t == SHAPE_LATHE))
             return false;
     return true;
 }

@@ -52,6 +52,12 @@ std::optional<SurfaceHit> intersect(const Sor& o, const Ray& ray, double t_min, 
 // segment's Bezier of its side of the line), the nearest a wall, their parity the caps'. Any ray
 // direction length.
 std::optional<SurfaceHit> intersect(const Prism& o, const Ray& ray, double t_min, double t_max);
+// The nearest hit on the lathe (lathe.cpp): on each segment whose band the ray crosses, the ray's
+// distance from the axis squared less r(s)^2, with t eliminated through y(s), is a polynomial of
+// degree 2 x the lathe's degree in the curve's parameter s, its roots isolated by Bernstein
+// subdivision (certified, as the torus's), t then from y(s) or, for a ray more across the axis
+// than along it, from the circle of radius r(s). uv = (segment, s). Any ray direction length.
+std::optional<SurfaceHit> intersect(const Lathe& o, const Ray& ray, double t_min, double t_max);
 // Certified (interval Newton) search for the nearest root; `normal` is surface_normal() there
 // and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
 std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
@@ -86,6 +92,8 @@ std::vector<double> roots_on_line(const Sor& o, const Ray& ray);  // the curve's
 bool inside(const Sor& o, const dvec3& p);
 std::vector<double> roots_on_line(const Prism& o, const Ray& ray);  // the walls' and the caps'
 bool inside(const Prism& o, const dvec3& p);
+std::vector<double> roots_on_line(const Lathe& o, const Ray& ray);
+bool inside(const Lathe& o, const dvec3& p);  // even-odd, as POV-Ray's; never for an open lathe
 
 // The surfaces that close a solid (SHAPE_ORIENTED: CSG walks their inside along a line):
 // every point where the ray's line crosses the surface with t in (t0, t1), nearest first, and
@@ -142,6 +150,7 @@ glm::dvec2 texture_uv(const Torus& o, const dvec3& p);
 glm::dvec2 texture_uv(const Blob& o, const dvec3& p);  // x and y across its box
 glm::dvec2 texture_uv(const Sor& o, const dvec3& p);   // the angle about y, the height from bottom to top
 glm::dvec2 texture_uv(const Prism& o, const dvec3& p); // (x, z): planar
+glm::dvec2 texture_uv(const Lathe& o, const dvec3& p, const glm::dvec2& hit_uv);  // the angle, POV-Ray's v
 
 // Bicubic (rational) Bezier patches, exactly, by resultant + generalized eigenvalues (bezier.cpp).
 // The ray's direction need not be unit length: t is in units of it. intersect_all returns every

@@ -315,6 +315,36 @@ struct PrimitivePacker {
              vec4(float(o.lo.x), float(o.lo.y), float(o.hi.x), float(o.hi.y)), {}},
             shape_bounds(o));
     }
+    // One primitive, in its own coordinates (always placed): p0 = (lowest y, highest y, largest
+    // radius, degree), p1 = (segment count, 1 where closed), data its first segment (LATHE_BANDS),
+    // each segment's r(s) and y(s) as power coefficients about s = 1/2.
+    void operator()(const Lathe& o) {
+        const auto first = static_cast<uint>(out.lathe_bands.size());
+        for (const LatheSegment& g : o.segments) {
+            // Bezier (degree n) to power form in h = s - 1/2: the derivatives at s = 1/2 over k!.
+            auto about_half = [&](const std::array<double, 4>& b) {
+                std::array<double, 4> w = b, c{};
+                const int n = o.degree;
+                for (int k = 0; k <= n; ++k) {
+                    // w holds the k-th forward differences; the k-th derivative at 1/2 is
+                    // n!/(n-k)! times the Bezier of degree n - k of them at 1/2.
+                    std::array<double, 4> v = w;
+                    for (int level = n - k; level > 0; --level)
+                        for (int i = 0; i < level; ++i) v[i] = 0.5 * (v[i] + v[i + 1]);
+                    double scale = 1.0;  // n!/(n-k)!/k!
+                    for (int j = 0; j < k; ++j) scale = scale * double(n - j) / double(j + 1);
+                    c[k] = scale * v[0];
+                    for (int i = 0; i + k < n; ++i) w[i] = w[i + 1] - w[i];
+                }
+                return vec4(float(c[0]), float(c[1]), float(c[2]), float(c[3]));
+            };
+            out.lathe_bands.push_back(LatheBand{about_half(g.r), about_half(g.y),
+                                                vec4(float(g.r_max), float(g.y_lo), float(g.y_hi), float(g.side))});
+        }
+        add({SHAPE_LATHE, material, first, object, vec4(float(o.y_lo), float(o.y_hi), float(o.r_max), float(o.degree)),
+             vec4(float(o.segments.size()), o.closed ? 1.0f : 0.0f, 0.0f, 0.0f), {}},
+            shape_bounds(o));
+    }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
     // Each cell of the surface's domain is a primitive with the cell's proved box; the surface

@@ -1,0 +1,389 @@
+// Ray/lathe (POV-Ray's lathe), exactly, in float, in its own coordinates (it is always placed:
+// placement.glsl carries rays there, with unit directions). Twin of host/cpu/shapes/lathe.cpp
+// (which isolates the roots of one polynomial per segment by Bernstein subdivision in double).
+// p.p0 = (lowest y, highest y, largest radius, degree), p.p1 = (segment count, 1 where closed),
+// p.data its first segment (LATHE_BANDS: r(s) and y(s) as cubics about s = 1/2, and the band).
+//
+// On a segment the curve is (r(s), y(s)), s in [0, 1]. Where the ray y = o.y + t d.y meets it,
+// F(s) = (d.y o.x + (y(s) - o.y) d.x)^2 + (d.y o.z + (y(s) - o.y) d.z)^2 - (d.y r(s))^2 = 0, a
+// polynomial of degree 2n in s (n the lathe's degree). For a ray nearly level, F's roots come in
+// pairs (the ray nears the axis and leaves it again at almost one height), too close for float:
+// so the ray's stretch through the segment's band is cut at its point nearest the axis, and each
+// half is taken on its own over the pieces of s where y(s) is monotone and within the half's
+// heights. On such a piece t and s grow together (or against each other), the half meets the
+// curve at most where F does, and F is re-expanded about the piece's middle, scaled to x in
+// [-1, 1], its first root in t's order found from its derivatives' roots (each derivative's roots
+// split [-1, 1] into pieces where the next is monotone; safeguarded Newton on each). A piece too
+// narrow for float's s (a ray level within rounding) is solved as POV-Ray's level ray is: the
+// circle of radius r(s) at the ray's height, s refined once from the ray's height there. t is then
+// (y(s) - o.y) / d.y for a ray more along the axis than across it, else the crossing of the
+// circle of radius r(s) on the half's side, polished by one Newton step on (s, t) (a small step
+// beyond the segment's end drops the root: the ray meets the next segment there). A flat ring (a
+// segment of one height: a base, a cap) is solved where the ray crosses its plane. A ray within
+// rounding of touching the surface may be called a hit or a miss either way.
+
+// A cubic given about s = 1/2 at s, and its derivative.
+float lathe_cubic(vec4 c, float s) {
+    float h = s - 0.5;
+    return ((c.w * h + c.z) * h + c.y) * h + c.x;
+}
+float lathe_cubic_slope(vec4 c, float s) {
+    float h = s - 0.5;
+    return (3.0 * c.w * h + 2.0 * c.z) * h + c.y;
+}
+
+// The s in [a, b] where y(s) = Y, y monotone there and y(a) - Y = fa of the other sign than at b:
+// safeguarded Newton.
+float lathe_height_root(vec4 yc, float Y, float a, float b, float fa) {
+    float x = 0.5 * (a + b);
+    for (int i = 0; i < 60; ++i) {
+        float v = lathe_cubic(yc, x) - Y;
+        if (v == 0.0) break;
+        if ((v > 0.0) == (fa > 0.0)) a = x; else b = x;
+        float next = x - v / lathe_cubic_slope(yc, x);
+        if (!(next > a && next < b)) next = 0.5 * (a + b);
+        bool done = abs(next - x) <= 6e-8 * max(abs(x), 1e-3) || !(b > a);
+        x = next;
+        if (done) break;
+    }
+    return x;
+}
+
+// The breakpoints of a segment's s where y'(s) = 0 (y a cubic about 1/2), with 0 and 1, in order;
+// returns their count (2 to 4).
+int lathe_monotone_pieces(vec4 yc, out float bp[4]) {
+    int n = 0;
+    bp[n++] = 0.0;
+    float a = 3.0 * yc.w, b = 2.0 * yc.z, c = yc.y;  // y' in h = s - 1/2
+    float h1 = INFINITY, h2 = INFINITY;
+    if (a != 0.0) {
+        float disc = b * b - 4.0 * a * c;
+        if (disc > 0.0) {
+            float q = -0.5 * (b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
+            h1 = q / a;
+            h2 = q != 0.0 ? c / q : h1;
+        }
+    } else if (b != 0.0) {
+        h1 = -c / b;
+    }
+    float first = min(h1, h2), second = max(h1, h2);
+    if (first > -0.5 && first < 0.5) bp[n++] = first + 0.5;
+    if (second > -0.5 && second < 0.5 && second > first) bp[n++] = second + 0.5;
+    bp[n++] = 1.0;
+    return n;
+}
+
+// The k-th derivative at x of the polynomial sum c[i] x^i of degree n.
+float lathe_poly(float c[7], int n, int k, float x) {
+    float v = 0.0;
+    for (int i = n; i >= k; --i) {
+        float f = 1.0;
+        for (int j = 0; j < k; ++j) f *= float(i - j);
+        v = v * x + f * c[i];
+    }
+    return v;
+}
+
+// The root in [lo, hi] of the k-th derivative, monotone there, whose value at lo is v_lo, of the
+// other sign than at hi: safeguarded Newton.
+float lathe_monotone_root(float c[7], int n, int k, float lo, float hi, float v_lo) {
+    float x = 0.5 * (lo + hi);
+    for (int i = 0; i < 50; ++i) {
+        float v = lathe_poly(c, n, k, x);
+        if (v == 0.0) break;
+        if ((v > 0.0) == (v_lo > 0.0)) lo = x; else hi = x;
+        float next = x - v / lathe_poly(c, n, k + 1, x);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        bool done = abs(next - x) <= 1.2e-7 || hi - lo <= 1.2e-7;
+        x = next;
+        if (done) break;
+    }
+    return x;
+}
+
+// The first root in (-1, 1) of the polynomial of degree n <= 6, or INFINITY: from the (n-1)-th
+// derivative down, each one's roots split [-1, 1] into pieces where the one below is monotone.
+float lathe_first_root(float c[7], int n) {
+    float bp[8];
+    int nb = 2;
+    bp[0] = -1.0;
+    bp[1] = 1.0;
+    for (int k = n - 1; k >= 0; --k) {
+        float next[8];
+        int nn = 0;
+        next[nn++] = -1.0;
+        float v_lo = lathe_poly(c, n, k, bp[0]);
+        for (int i = 1; i < nb; ++i) {
+            float v_hi = lathe_poly(c, n, k, bp[i]);
+            if ((v_lo > 0.0) != (v_hi > 0.0)) {
+                float root = lathe_monotone_root(c, n, k, bp[i - 1], bp[i], v_lo);
+                if (k == 0) return root;
+                next[nn++] = root;
+            }
+            v_lo = v_hi;
+        }
+        if (k == 0) return INFINITY;
+        next[nn++] = 1.0;
+        for (int i = 0; i < nn; ++i) bp[i] = next[i];
+        nb = nn;
+    }
+    return INFINITY;
+}
+
+// F at s (o the ray's origin, rebased near the segment), evaluated from the curve.
+float lathe_f(LatheBand band, vec3 o, vec3 d, float s) {
+    float q = lathe_cubic(band.height, s) - o.y;
+    float a = d.y * o.x + q * d.x, b = d.y * o.z + q * d.z, e = d.y * lathe_cubic(band.radius, s);
+    return a * a + b * b - e * e;
+}
+
+// The ray's t (about the rebased origin) where it crosses the circle of radius r at the height
+// it has there, on the side `side` of its point nearest the axis tm; rho2 its distance from the
+// axis there, squared; across = d.x^2 + d.z^2.
+float lathe_circle_t(float r, float tm, float rho2, float across, float side) {
+    return tm + side * sqrt(max(r * r - rho2, 0.0) / across);
+}
+
+bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
+    float best = t_max;
+    bool hit = false;
+    vec3 d = ray.dir;
+    float across = dot(d.xz, d.xz);
+    bool steep = d.y * d.y >= across;
+    uint count = uint(p.p1.x);
+    int degree = int(p.p0.w);
+    for (uint i = 0u; i < count; ++i) {
+        LatheBand band = lathe_band_at(p.data + i);
+        if (band.band.y == band.band.z) {
+            // A flat ring (a base, a cap, a rim): where the ray crosses its plane, a radius the
+            // curve takes (r(s) is continuous: between its least and its most), its s found on
+            // the monotone piece of r that holds it. (Its slab would have no width in float.)
+            if (d.y == 0.0) continue;
+            float t = (band.band.y - ray.origin.y) / d.y;
+            if (!(t > t_min && t < best)) continue;
+            float rho = length(ray.origin.xz + t * d.xz);
+            float rp[4];
+            int r_pieces = lathe_monotone_pieces(band.radius, rp);
+            float f_lo = lathe_cubic(band.radius, rp[0]) - rho;
+            for (int k = 1; k < r_pieces; ++k) {
+                float f_hi = lathe_cubic(band.radius, rp[k]) - rho;
+                if ((f_lo > 0.0) != (f_hi > 0.0)) {
+                    best = t;
+                    hit = true;
+                    uv = vec2(float(i), lathe_height_root(band.radius, rho, rp[k - 1], rp[k], f_lo));
+                    break;
+                }
+                f_lo = f_hi;
+            }
+            continue;
+        }
+        // The ray's stretch through the segment's band: its slab and its bounding cylinder (the
+        // slab widened by the rounding of the ray's height too, for rays from far away).
+        float lo = t_min, hi = best;
+        float widen = 1e-5 * p.p0.z + 2.4e-7 * abs(ray.origin.y);
+        if (d.y != 0.0) {
+            float a = (band.band.y - widen - ray.origin.y) / d.y, b = (band.band.z + widen - ray.origin.y) / d.y;
+            lo = max(lo, min(a, b));
+            hi = min(hi, max(a, b));
+        } else if (ray.origin.y < band.band.y - widen || ray.origin.y > band.band.z + widen) {
+            continue;
+        }
+        float R = band.band.x * 1.00001 + widen;
+        float tm = 0.0;  // about the original origin: the point nearest the axis
+        if (across > 0.0) {
+            tm = -dot(ray.origin.xz, d.xz) / across;
+            vec2 nearest = ray.origin.xz + tm * d.xz;
+            float reach2 = (R * R - dot(nearest, nearest)) / across;
+            if (!(reach2 >= 0.0)) continue;
+            float reach = sqrt(reach2);
+            lo = max(lo, tm - reach);
+            hi = min(hi, tm + reach);
+        } else if (dot(ray.origin.xz, ray.origin.xz) > R * R) {
+            continue;
+        }
+        if (!(lo < hi)) continue;
+        // Rebased at the stretch's middle: o = origin + m d, and t about it.
+        float m = 0.5 * (lo + hi);
+        vec3 o = ray.origin + m * d;
+        float rho2 = 0.0;
+        if (across > 0.0) {
+            vec2 nearest = ray.origin.xz + tm * d.xz;
+            rho2 = dot(nearest, nearest);
+        }
+        tm -= m;
+        float t_lo = lo - m, t_hi = hi - m;
+        float bp[4];
+        int pieces = lathe_monotone_pieces(band.height, bp);
+        // Each half of the stretch about the point nearest the axis (one where the ray is steep).
+        int parts = steep ? 1 : 2;  // (a bound the compiler cannot unroll: the body is large)
+        for (int part = 0; part < parts; ++part) {
+            float ta = t_lo, tb = t_hi, side = 1.0;
+            if (!steep) {
+                side = part == 0 ? -1.0 : 1.0;
+                if (part == 0) tb = min(tb, tm); else ta = max(ta, tm);
+            }
+            if (!(ta <= tb) || ta + m >= best) continue;
+            float Ya = o.y + ta * d.y, Yb = o.y + tb * d.y;
+            float Ylo = min(Ya, Yb), Yhi = max(Ya, Yb);
+            for (int k = 1; k < pieces; ++k) {
+                float s0 = bp[k - 1], s1 = bp[k];
+                float y0 = lathe_cubic(band.height, s0), y1 = lathe_cubic(band.height, s1);
+                bool rising = y1 >= y0;
+                float ylo = min(y0, y1), yhi = max(y0, y1);
+                if (yhi < Ylo || ylo > Yhi) continue;
+                // The piece's s where y is within [Ylo, Yhi].
+                float sa = s0, sb = s1;
+                float ends[2];
+                for (int e = 0; e < pieces - k + 1 && e < 2; ++e) {  // (one call site: a bound not unrolled)
+                    float Y = e == 0 ? Ylo : Yhi;
+                    bool beyond = e == 0 ? ylo < Ylo : yhi > Yhi;
+                    ends[e] = beyond ? lathe_height_root(band.height, Y, s0, s1, y0 - Y) : ((e == 0) == rising ? s0 : s1);
+                }
+                float slo = ends[0], shi = ends[1];
+                // Widened by a few of float's steps in s: the ends are found within them, and F's
+                // root (its constant term rounded to the ray's heights) may lie a little beyond.
+                sa = max(s0, min(slo, shi) - 4e-7);
+                sb = min(s1, max(slo, shi) + 4e-7);
+                // t grows with s where y does and the ray rises, or neither.
+                bool forward = rising == (d.y >= 0.0);
+                float s_root = -1.0;
+                float w = 0.5 * (sb - sa), sm = 0.5 * (sa + sb);
+                if (w > 1e-6) {
+                    // F about sm in x = (s - sm) / w, x in [-1, 1]: its factors' Taylor coefficients.
+                    float u = sm - 0.5;
+                    vec4 yc = band.height, rc = band.radius;
+                    vec4 Y = vec4(((yc.w * u + yc.z) * u + yc.y) * u + yc.x - o.y, (3.0 * yc.w * u + 2.0 * yc.z) * u + yc.y,
+                                  3.0 * yc.w * u + yc.z, yc.w);
+                    vec4 Rr = vec4(((rc.w * u + rc.z) * u + rc.y) * u + rc.x, (3.0 * rc.w * u + 2.0 * rc.z) * u + rc.y,
+                                   3.0 * rc.w * u + rc.z, rc.w);
+                    vec4 scale = vec4(1.0, w, w * w, w * w * w);
+                    if (!forward) scale.yw = -scale.yw;  // x -> -x: the first root in t's order
+                    Y *= scale;
+                    Rr *= scale;
+                    vec4 A = Y * d.x, B = Y * d.z, E = Rr * d.y;
+                    A.x += d.y * o.x;
+                    B.x += d.y * o.z;
+                    float c[7];
+                    for (int j = 0; j < 7; ++j) c[j] = 0.0;
+                    for (int a = 0; a <= degree; ++a)
+                        for (int b = 0; b <= degree; ++b) c[a + b] += A[a] * A[b] + B[a] * B[b] - E[a] * E[b];
+                    // No root in [-1, 1] where the constant term outweighs all the others.
+                    float others = 0.0;
+                    for (int j = 1; j <= 2 * degree; ++j) others += abs(c[j]);
+                    if (abs(c[0]) > others) continue;
+                    float x = lathe_first_root(c, 2 * degree);
+                    if (x == INFINITY) continue;
+                    s_root = sm + (forward ? x : -x) * w;
+                } else {
+                    // A piece narrow within float's s: the ray is level there within rounding.
+                    if (steep) {
+                        if ((lathe_f(band, o, d, sa) > 0.0) == (lathe_f(band, o, d, sb) > 0.0)) continue;
+                        s_root = sm;
+                    } else {
+                        float r = lathe_cubic(band.radius, sm);
+                        if (r * r < rho2) continue;
+                        float t = lathe_circle_t(r, tm, rho2, across, side);
+                        float Y = o.y + t * d.y;
+                        s_root = clamp(lathe_height_root(band.height, Y, s0, s1, y0 - Y), sa, sb);
+                    }
+                }
+                float t;
+                if (steep) {
+                    t = (lathe_cubic(band.height, s_root) - o.y) / d.y;
+                } else {
+                    float r = lathe_cubic(band.radius, s_root);
+                    t = lathe_circle_t(r, tm, rho2, across, side);
+                    // A narrow piece was not solved but taken whole: its circle must meet the
+                    // half where the half is (else the curve's height is the ray's there only
+                    // because the half is short, cut by a nearer hit, and the crossing is elsewhere).
+                    float slack = 0.01 * (tb - ta) + 1e-6 * (abs(m) + p.p0.z);
+                    if (w <= 1e-6 && (r * r < rho2 || t < ta - slack || t > tb + slack)) continue;
+                    // The circle's t takes the ray at r(s) whatever its height there: one Newton
+                    // step on (s, t) for y(s) = the ray's height and r(s) = its distance from the
+                    // axis. A small step that leaves the segment says the crossing is beyond its
+                    // end (a ray grazing a corner within rounding, which meets the next segment).
+                    float ys = lathe_cubic(band.height, s_root);
+                    vec2 at = o.xz + t * d.xz;
+                    float g1 = ys - (o.y + t * d.y), g2 = dot(at, at) - r * r;
+                    float j11 = lathe_cubic_slope(band.height, s_root), j21 = -2.0 * r * lathe_cubic_slope(band.radius, s_root);
+                    float j12 = -d.y, j22 = 2.0 * dot(at, d.xz);
+                    float det = j11 * j22 - j12 * j21;
+                    if (det != 0.0) {
+                        float ds = -(g1 * j22 - j12 * g2) / det, dt = -(j11 * g2 - j21 * g1) / det;
+                        if (abs(ds) < 1e-3) {
+                            float s_new = s_root + ds;
+                            if (s_new < -2e-7 || s_new > 1.0 + 2e-7) continue;
+                            s_root = clamp(s_new, 0.0, 1.0);
+                            t += dt;
+                        }
+                    }
+                }
+                t = clamp(t, ta, tb) + m;
+                if (t > t_min && t < best) {
+                    best = t;
+                    hit = true;
+                    uv = vec2(float(i), s_root);
+                }
+            }
+        }
+    }
+    t_hit = best;
+    return hit;
+}
+
+// Whether a point is inside (CSG's walked leaves, csg.glsl; its reader lets only a closed lathe
+// in): POV-Ray's even-odd rule, the crossings of the curve by the half-line from the point away
+// from the axis at its height, one per monotone piece of y(s) whose ends lie either side of it.
+bool lathe_inside(Primitive p, vec3 point) {
+    if (p.p1.y == 0.0 || point.y < p.p0.x || point.y > p.p0.y) return false;
+    float rho = length(point.xz);
+    uint count = uint(p.p1.x);
+    int crossings = 0;
+    for (uint i = 0u; i < count; ++i) {
+        LatheBand band = lathe_band_at(p.data + i);
+        if (point.y < band.band.y || point.y > band.band.z || rho >= band.band.x) continue;
+        float bp[4];
+        int pieces = lathe_monotone_pieces(band.height, bp);
+        float f_lo = lathe_cubic(band.height, bp[0]) - point.y;
+        for (int k = 1; k < pieces; ++k) {
+            float f_hi = lathe_cubic(band.height, bp[k]) - point.y;
+            if ((f_lo > 0.0) != (f_hi > 0.0)) {
+                float s = lathe_height_root(band.height, point.y, bp[k - 1], bp[k], f_lo);
+                if (lathe_cubic(band.radius, s) > rho) ++crossings;
+            }
+            f_lo = f_hi;
+        }
+    }
+    return (crossings & 1) != 0;
+}
+
+// The hit's error (Hit.error): the polynomial is formed about the stretch's middle from the
+// ray's point there (a few roundings of |o| + t) and the segment's cubics (of the lathe's size),
+// its root found within 1.2e-7 of its piece, and a level ray's circle taken at the ray's height
+// within rounding: as the torus's and the sor's, 64 roundings of max |o| + t + the lathe's size.
+float lathe_hit_error(Primitive p, Ray ray, float t) {
+    return rounding_bound(64.0, max_abs(ray.origin) + t + max(p.p0.z, max(abs(p.p0.x), abs(p.p0.y))));
+}
+
+// The outward normal: the curve's (y'(s), -r'(s)) on the segment's side, turned about the axis
+// to the point (uv = (segment, s)); on the axis, along it.
+vec3 lathe_hit_normal(Primitive p, Ray ray, float t, vec3 point, vec2 uv, inout float error) {
+    error = lathe_hit_error(p, ray, t);
+    LatheBand band = lathe_band_at(p.data + uint(uv.x));
+    float rp = lathe_cubic_slope(band.radius, uv.y), yp = lathe_cubic_slope(band.height, uv.y);
+    if (rp == 0.0 && yp == 0.0) {
+        rp = lathe_cubic(band.radius, 1.0) - lathe_cubic(band.radius, 0.0);
+        yp = lathe_cubic(band.height, 1.0) - lathe_cubic(band.height, 0.0);
+    }
+    float nr = band.band.w * yp, ny = -band.band.w * rp;
+    float rho = length(point.xz);
+    vec3 n = rho > 0.0 ? vec3(nr * point.x / rho, ny, nr * point.z / rho) : vec3(0.0, ny, 0.0);
+    float len = length(n);
+    return len > 0.0 ? n / len : -ray.dir;
+}
+
+// Texture (u, v): the angle about y from +x toward +z over 2 pi (torus.glsl's turn), and
+// POV-Ray's v: (segment + s) over the segment count.
+vec2 lathe_texture_uv(Primitive p, Hit hit, vec3 point) {
+    return vec2(torus_turn(point.z, point.x), clamp((hit.uv.x + hit.uv.y) / p.p1.x, 0.0, 1.0));
+}
