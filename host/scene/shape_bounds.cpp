@@ -56,6 +56,7 @@ struct BoundsOf {
     }
     std::optional<Aabb> operator()(const Prism& o) const {  // its own coordinates (it is always placed)
         return Aabb{dvec3(o.lo.x, o.y0, o.lo.y), dvec3(o.hi.x, o.y1, o.hi.y)};
+    }
     std::optional<Aabb> operator()(const Lathe& o) const {  // its own coordinates (it is always placed)
         return Aabb{dvec3(-o.r_max, o.y_lo, -o.r_max), dvec3(o.r_max, o.y_hi, o.r_max)};
     }
