@@ -240,6 +240,13 @@ const char* const kStretch = "transform = { scale = [1.6, 0.6, 1.1], rotate = [1
 const char* const kSor =
     "type = \"sor\"\npoints = [[0, -1.2], [0.5, -1], [0.8, -0.5], [0.35, 0.3], [0.3, 0.6], [0.55, 1], [0.5, 1.2]]\n";
 
+// A prism: a quadratic outline with a quadratic hole (even-odd), always traced in its own
+// coordinates; its walls meet its caps at rims.
+const char* const kPrism =
+    "type = \"prism\"\nspline = \"quadratic\"\nheight1 = -0.6\nheight2 = 0.7\npoints = [[0.6, -0.9], [1, 0], [0.6, 0.9], [0, 1], "
+    "[-0.6, 0.9], [-1, 0], [-0.6, -0.9], [0, -1], [0.6, -0.9], [1, 0], [0.5, 0], [0.4, 0], [0.4, 0.3], [0.1, 0.2], [0.3, -0.2], "
+    "[0.4, 0]]\n";
+
 // A blob: two spheres and a cylinder merged, a negative sphere biting into them (the field's
 // quartic changes from stretch to stretch where the ray enters or leaves a component or crosses
 // the cylinder's end planes). The far rays found the cylinder's support computed from the ray's
@@ -299,6 +306,9 @@ const Case kCases[] = {
     {"torus_stretched_far_from_origin", [] { return moved_far(analytic(std::string(kTorus) + kStretch)); }},
     {"sor", [] { return analytic(kSor); }},
     {"sor_far_from_origin", [] { return moved_far(analytic(kSor)); }},
+    {"prism", [] { return analytic(kPrism); }},
+    {"prism_far_from_origin", [] { return moved_far(analytic(kPrism)); }},
+    {"prism_stretched", [] { return analytic(std::string(kPrism) + kStretch); }},
     {"blob", [] { return analytic(kBlob); }},
     {"blob_far_from_origin", [] { return moved_far(analytic(kBlob)); }},
     {"blob_stretched", [] { return analytic(std::string(kBlob) + kStretch); }},
