@@ -34,6 +34,30 @@ TEST(Prism, SquareIsTheBox) {
                        std::string("type = \"box\"\nmin = [-1, -0.6, -0.7]\nmax = [0.9, 0.8, 1]\n") + kPrismTurn);
 }
 
+// A conic sweep of a square is a pyramid's frustum: four half-spaces through the apex and a slab.
+TEST(Prism, ConicSweepOfASquareIsThePyramid) {
+    const char* const turn = "transform = { rotate = [15, 25, 0], translate = [0, -1, 0] }\n";
+    expect_prism_twins("prism-pyramid",
+                       std::string("type = \"prism\"\nsweep = \"conic\"\nheight1 = 0.6\nheight2 = 1.8\npoints = [[-1, -0.8], [0.9, -0.8], "
+                                   "[0.9, 1], [-1, 1], [-1, -0.8]]\n") + turn,
+                       std::string("type = \"intersection\"\nobjects = [{ type = \"box\", min = [-2, 0.6, -2], max = [2, 1.8, 2] }, "
+                                   "{ type = \"plane\", normal = [1, -0.9, 0] }, { type = \"plane\", normal = [-1, -1, 0] }, "
+                                   "{ type = \"plane\", normal = [0, -1, 1] }, { type = \"plane\", normal = [0, -0.8, -1] }]\n") + turn);
+}
+
+TEST(Prism, ConicSweepsRenderAsTheReferenceDoes) {
+    // To the apex, a curved outline with a hole; and below the apex, upside down.
+    expect_prism_backends_agree("prism-conic-apex",
+                                "type = \"prism\"\nsweep = \"conic\"\nspline = \"quadratic\"\nheight1 = 0\nheight2 = 1.6\npoints = [[0.6, -0.9], "
+                                "[1, 0], [0.6, 0.9], [0, 1], [-0.6, 0.9], [-1, 0], [-0.6, -0.9], [0, -1], [0.6, -0.9], [1, 0], [0.3, -0.3], "
+                                "[0.5, 0], [0.3, 0.3], [0, 0.5], [-0.3, 0.3], [-0.5, 0], [-0.3, -0.3], [0, -0.5], [0.3, -0.3], [0.5, 0]]\n"
+                                "transform = { rotate = [-20, 0, 10], translate = [0, -1, 0] }\n");
+    expect_prism_backends_agree("prism-conic-below",
+                                "type = \"prism\"\nsweep = \"conic\"\nspline = \"bezier\"\nheight1 = -0.5\nheight2 = -1.5\npoints = [[0, -0.9], "
+                                "[0.9, -0.1], [0.7, 0.9], [0, 0.4], [0, 0.4], [-0.7, 0.9], [-0.9, -0.1], [0, -0.9]]\n"
+                                "transform = { rotate = [10, 30, 0], translate = [0, 1, 0] }\n");
+}
+
 // A square with a square hole, and a second contour inside the hole: even-odd.
 const char* const kPrismHoled =
     "type = \"prism\"\nheight1 = -0.5\nheight2 = 0.5\npoints = [[-1.2, -1.2], [1.2, -1.2], [1.2, 1.2], [-1.2, 1.2], [-1.2, -1.2], "

@@ -247,6 +247,14 @@ const char* const kPrism =
     "[-0.6, 0.9], [-1, 0], [-0.6, -0.9], [0, -1], [0.6, -0.9], [1, 0], [0.5, 0], [0.4, 0], [0.4, 0.3], [0.1, 0.2], [0.3, -0.2], "
     "[0.4, 0]]\n";
 
+// A conic sweep of the prism's outline (smooth, with a hole) down to its apex. (A Bezier heart's
+// concave cusp fails the clearance check: a restarted ray's line back meets the other wall within
+// the error bound, as at the stretched sor's base rim; not yet resolved.)
+const char* const kConicPrism =
+    "type = \"prism\"\nsweep = \"conic\"\nspline = \"quadratic\"\nheight1 = 0\nheight2 = 1.4\npoints = [[0.6, -0.9], [1, 0], [0.6, 0.9], [0, 1], "
+    "[-0.6, 0.9], [-1, 0], [-0.6, -0.9], [0, -1], [0.6, -0.9], [1, 0], [0.5, 0], [0.4, 0], [0.4, 0.3], [0.1, 0.2], [0.3, -0.2], "
+    "[0.4, 0]]\ntransform = { translate = [0, -0.7, 0] }\n";
+
 // A blob: two spheres and a cylinder merged, a negative sphere biting into them (the field's
 // quartic changes from stretch to stretch where the ray enters or leaves a component or crosses
 // the cylinder's end planes). The far rays found the cylinder's support computed from the ray's
@@ -309,6 +317,8 @@ const Case kCases[] = {
     {"prism", [] { return analytic(kPrism); }},
     {"prism_far_from_origin", [] { return moved_far(analytic(kPrism)); }},
     {"prism_stretched", [] { return analytic(std::string(kPrism) + kStretch); }},
+    {"prism_conic", [] { return analytic(kConicPrism); }},
+    {"prism_conic_far_from_origin", [] { return moved_far(analytic(kConicPrism)); }},
     {"blob", [] { return analytic(kBlob); }},
     {"blob_far_from_origin", [] { return moved_far(analytic(kBlob)); }},
     {"blob_stretched", [] { return analytic(std::string(kBlob) + kStretch); }},

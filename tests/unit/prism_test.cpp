@@ -402,6 +402,106 @@ TEST(Prism, FarFromTheOriginAndFarAwayItKeepsItsPrecision) {
     EXPECT_EQ(h->normal, dvec3(-1, 0, 0));
 }
 
+// A convex polyhedron as half-spaces n . p <= c: the ray's first entry (or exit, from inside) by
+// clipping (Cyrus-Beck), with the plane's outward normal.
+struct PrismTestPlane {
+    dvec3 n;
+    double c;
+};
+
+std::optional<SurfaceHit> prism_test_clip(const std::vector<PrismTestPlane>& planes, const Ray& ray, double t_min) {
+    double enter = -1e300, leave = 1e300;
+    dvec3 enter_n(0.0), leave_n(0.0);
+    for (const PrismTestPlane& h : planes) {
+        const double dn = glm::dot(h.n, ray.dir), dist = h.c - glm::dot(h.n, ray.origin);
+        if (dn == 0.0) {
+            if (dist < 0.0) return std::nullopt;
+            continue;
+        }
+        const double t = dist / dn;
+        if (dn < 0.0 && t > enter) {
+            enter = t;
+            enter_n = glm::normalize(h.n);
+        }
+        if (dn > 0.0 && t < leave) {
+            leave = t;
+            leave_n = glm::normalize(h.n);
+        }
+    }
+    if (!(enter < leave)) return std::nullopt;
+    if (enter > t_min) return SurfaceHit{enter, enter_n};
+    if (leave > t_min) return SurfaceHit{leave, leave_n};
+    return std::nullopt;
+}
+
+// How near p is to two of the planes (an edge, where either answer goes).
+double prism_test_plane_edge_distance(const std::vector<PrismTestPlane>& planes, const dvec3& p) {
+    std::vector<double> d;
+    for (const PrismTestPlane& h : planes) d.push_back(std::abs(glm::dot(h.n, p) - h.c) / glm::length(h.n));
+    std::sort(d.begin(), d.end());
+    return d[1];
+}
+
+TEST(Prism, ConicSweepOfASquareIsThePyramid) {
+    for (double y0 : {0.5, 0.0}) {  // a frustum, and the pyramid to its apex
+        const double y1 = 1.5;
+        std::vector<PrismSegment> s;
+        prism_test_polygon(s, {{-1, -0.8}, {1.2, -0.8}, {1.2, 1}, {-1, 1}});
+        const Prism o = make_prism(std::move(s), y1, y0, false, true);
+        // x <= 1.2 y, -x <= y, z <= y, -z <= 0.8 y, y0 <= y <= y1.
+        const std::vector<PrismTestPlane> planes = {{{1, -1.2, 0}, 0}, {{-1, -1, 0}, 0}, {{0, -1, 1}, 0}, {{0, -0.8, -1}, 0},
+                                                    {{0, 1, 0}, y1}, {{0, -1, 0}, -y0}};
+        std::mt19937 rng(17);
+        int hits = 0, compared = 0;
+        for (int i = 0; i < 6000; ++i) {
+            Ray ray;
+            if (i % 3 == 2) {  // from inside
+                const double y = y0 + 0.05 + 0.9 * (y1 - y0 - 0.05) * std::uniform_real_distribution<double>(0, 1)(rng);
+                ray.origin = prism_test_random_point(rng, {-0.9 * y, y, -0.7 * y}, {1.1 * y, y, 0.9 * y});
+                ray.dir = prism_test_random_direction(rng);
+            } else {
+                ray.origin = 6.0 * prism_test_random_direction(rng);
+                ray.dir = glm::normalize(prism_test_random_point(rng, {-2, -0.2, -1.6}, {2, 1.8, 1.8}) - ray.origin);
+            }
+            const auto want = prism_test_clip(planes, ray, 1e-9);
+            const auto got = intersect(o, ray, 1e-9, 1e30);
+            if (want.has_value() != got.has_value()) {
+                const auto& one = want ? *want : *got;
+                const dvec3 at = ray.origin + one.t * ray.dir;
+                // An edge, or (the pyramid) the apex's sliver, 1e-7 of its height.
+                EXPECT_TRUE(prism_test_plane_edge_distance(planes, at) < 1e-9 || (y0 == 0.0 && at.y < 2e-7)) << "ray " << i << " y0 " << y0;
+                continue;
+            }
+            if (!want) continue;
+            ++hits;
+            EXPECT_NEAR(got->t, want->t, 1e-10 * (1.0 + want->t)) << "ray " << i << " y0 " << y0;
+            if (prism_test_plane_edge_distance(planes, ray.origin + want->t * ray.dir) < 1e-7) continue;
+            ++compared;
+            EXPECT_NEAR(glm::distance(got->normal, want->normal), 0.0, 1e-10) << "ray " << i << " y0 " << y0;
+            // Inside agrees just past the hit.
+            EXPECT_EQ(inside(o, ray.origin + (got->t + 1e-6) * ray.dir), glm::dot(want->normal, ray.dir) < 0.0) << "ray " << i;
+        }
+        EXPECT_GT(hits, 2500);
+        EXPECT_GT(compared, 2500);
+    }
+}
+
+TEST(Prism, ConicSweepBelowTheApexIsTheMirroredPyramid) {
+    // Heights below 0: the outline scaled by a negative y, turned half round.
+    std::vector<PrismSegment> s;
+    prism_test_polygon(s, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+    const Prism o = make_prism(std::move(s), -2.0, -1.0, false, true);
+    EXPECT_TRUE(inside(o, {-0.5, -1.5, -0.5}));   // (x / y, z / y) = (1/3, 1/3)
+    EXPECT_FALSE(inside(o, {0.5, -1.5, 0.5}));
+    const auto h = intersect(o, {{-0.5, 5.0, -0.5}, {0, -1, 0}}, 0.0, 1e30);  // down onto the top cap at y = -1? (x/y = 0.5: inside)
+    ASSERT_TRUE(h);
+    EXPECT_DOUBLE_EQ(h->t, 6.0);
+    EXPECT_EQ(h->normal, dvec3(0, 1, 0));
+    EXPECT_THROW(make_prism({prism_test_line({0, 0}, {1, 0}), prism_test_line({1, 0}, {0, 1}), prism_test_line({0, 1}, {0, 0})}, -1.0, 1.0,
+                            false, true),
+                 std::invalid_argument);
+}
+
 TEST(Prism, TextureIsPlanarXZ) {
     const Prism o = prism_test_box_prism({-1, -1}, {1, 1}, 0.0, 1.0);
     EXPECT_EQ(texture_uv(o, {0.25, 0.5, -0.75}), dvec2(0.25, -0.75));
