@@ -62,6 +62,7 @@ TRANSLATED = {
     "sor": {"points", "open"},
     "text": {"text", "font", "thickness", "offset"},
     "lathe": {"spline", "points"},
+    "prism": {"sweep", "spline", "height1", "height2", "points", "open"},
     "mesh": {"file", "smooth", "transform"},
     "spheres": {"file", "radius", "transform"},
 }
@@ -613,6 +614,11 @@ def shape_body(o, base, torus_as, implicit_as, accuracy, scene):
         parts += [f"  cylinder {{ {vec(c['base_point'])}, {vec(c['cap_point'])}, {c['radius']:.9g}, strength {c['strength']:.9g} }}\n"
                   for c in o.get("cylinders", [])]
         return f"blob {{ threshold {o['threshold']:.9g}\n" + "".join(parts)
+    if t == "prism":  # the same points and splines: lancer reads them as POV-Ray does
+        points = ", ".join(f"<{x:.9g}, {z:.9g}>" for x, z in o["points"])
+        return (f"prism {{ {o.get('sweep', 'linear')}_sweep {o.get('spline', 'linear')}_spline "
+                f"{o.get('height1', 0.0):.9g}, {o.get('height2', 1.0):.9g}, {len(o['points'])}, {points}"
+                f"{' open' if o.get('open') else ''}\n")
     if t == "lathe":  # the same points and spline (POV-Ray's default is linear_spline too)
         points = ", ".join(f"<{r:.9g}, {y:.9g}>" for r, y in o["points"])
         spline = o.get("spline", "linear") + "_spline"

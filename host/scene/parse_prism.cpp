@@ -1,7 +1,7 @@
 // POV-Ray's prism:
-//   type = "prism"   sweep = "linear"   spline = "linear" | "quadratic" | "cubic" | "bezier"
+//   type = "prism"   sweep = "linear" | "conic"   spline = "linear" | "quadratic" | "cubic" | "bezier"
 //   height1 = 0   height2 = 1   points = [[x, z], ...]   open = false
-// POV-Ray's prism { linear_sweep <spline> h1, h2, N, <x, z>, ... [open] }: sub-paths that close
+// POV-Ray's prism { linear_sweep|conic_sweep <spline> h1, h2, N, <x, z>, ... [open] }: sub-paths that close
 // where a point repeats the sub-path's first (POV-Ray's rules per spline: a quadratic sub-path
 // has one control point before it, a cubic one before and one after; a Bezier segment is 4
 // points, and consecutive segments that share their end and start are one sub-path). Each piece
@@ -14,6 +14,7 @@
 
 #include "scene/parse_surfaces.hpp"
 #include "scene/prism.hpp"
+#include "scene/shape_bounds.hpp"
 
 namespace lancer {
 namespace {
@@ -129,11 +130,14 @@ std::vector<PrismSegment> prism_segments(const TableReader& t, const std::vector
 }  // namespace
 
 Shape read_prism(TableReader& t, const glm::dmat4&) {
-    const std::size_t sweep = one_of(t, "sweep", "sweep", {"linear", "conic"}, "linear");
-    if (sweep == 1) t.fail("sweep", "sweep = \"conic\" (POV-Ray's conic_sweep) is not supported yet: use sweep = \"linear\"");
+    const bool conic = one_of(t, "sweep", "sweep", {"linear", "conic"}, "linear") == 1;
     const auto spline = static_cast<int>(one_of(t, "spline", "spline", {"linear", "quadratic", "cubic", "bezier"}, "linear"));
     const double height1 = t.number("height1", 0.0), height2 = t.number("height2", 1.0);
     if (height1 == height2) t.fail("height2", fmt::format("{}: height1 and height2 are both {:g}: the prism would be flat", t.what(), height1));
+    if (conic && height1 * height2 < 0.0)
+        t.fail("height2", fmt::format("{}: a conic sweep's heights {:g} and {:g} lie on both sides of its apex (y = 0): POV-Ray's "
+                                      "conic_sweep scales the outline by y, so each must be at or beyond 0 on one side",
+                                      t.what(), height1, height2));
     const bool open = t.boolean("open", false);
     const std::vector<PrismPoint> points = read_prism_points(t);
     static constexpr std::size_t kLeast[4] = {3, 5, 6, 4};
@@ -141,8 +145,9 @@ Shape read_prism(TableReader& t, const glm::dmat4&) {
     if (points.size() < kLeast[spline])
         t.fail("points", fmt::format("a {}_spline prism needs at least {} points, not {} (as POV-Ray's)", kNames[spline], kLeast[spline],
                                      points.size()));
-    Prism o = make_prism(prism_segments(t, points, spline), height1, height2, open);
-    check_world_extent(t, "points", glm::dvec3(o.lo.x, o.y0, o.lo.y), glm::dvec3(o.hi.x, o.y1, o.hi.y));
+    Prism o = make_prism(prism_segments(t, points, spline), height1, height2, open, conic);
+    const std::optional<Aabb> box = shape_bounds(o);
+    check_world_extent(t, "points", box->lo, box->hi);
     return o;
 }
 

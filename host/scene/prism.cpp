@@ -19,6 +19,21 @@ long prism_open_contour(const std::vector<PrismSegment>& segments) {
     return -1;
 }
 
+void prism_walk_heights(const Prism& o, double& y0, double& y1, bool& cap0, bool& cap1) {
+    y0 = o.y0;
+    y1 = o.y1;
+    cap0 = cap1 = !o.open;
+    if (!o.conic) return;
+    if (y0 == 0.0) {
+        y0 = 1e-7 * y1;
+        cap0 = false;
+    }
+    if (y1 == 0.0) {
+        y1 = 1e-7 * y0;
+        cap1 = false;
+    }
+}
+
 void prepare_prism(Prism& o) {
     o.lo = glm::dvec2(std::numeric_limits<double>::infinity());
     o.hi = -o.lo;
@@ -41,7 +56,7 @@ void prepare_prism(Prism& o) {
         }));
 }
 
-Prism make_prism(std::vector<PrismSegment> segments, double height1, double height2, bool open) {
+Prism make_prism(std::vector<PrismSegment> segments, double height1, double height2, bool open, bool conic) {
     if (segments.empty()) throw std::invalid_argument("a prism needs at least one segment");
     for (std::size_t k = 0; k < segments.size(); ++k) {
         const PrismSegment& s = segments[k];
@@ -57,11 +72,14 @@ Prism make_prism(std::vector<PrismSegment> segments, double height1, double heig
                                     " does not close (its last segment must end exactly where its first starts)");
     if (!std::isfinite(height1) || !std::isfinite(height2) || height1 == height2)
         throw std::invalid_argument("prism: the heights must be finite and differ");
+    if (conic && height1 * height2 < 0.0)
+        throw std::invalid_argument("prism: a conic sweep's heights must not lie on both sides of 0 (its apex)");
     Prism o;
     o.segments = std::move(segments);
     o.y0 = std::min(height1, height2);
     o.y1 = std::max(height1, height2);
     o.open = open;
+    o.conic = conic;
     prepare_prism(o);
     return o;
 }

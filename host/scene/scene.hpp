@@ -381,8 +381,10 @@ struct Sor {
     double r_max = 1.0;                  // the largest radius of all
 };
 
-// POV-Ray's prism (linear sweep): an outline in the x-z plane of its own coordinates, extruded
-// along y between y0 and y1 and closed by caps there unless `open`. The outline is closed contours
+// POV-Ray's prism: an outline in the x-z plane of its own coordinates, extruded along y between y0
+// and y1 (linear sweep) or, with `conic`, its copies scaled by y about the y axis (the outline at
+// y = 1, the apex at the origin: POV-Ray's conic_sweep, y0 and y1 on one side of 0), closed by
+// caps there unless `open` (a conic sweep's end at its apex has none). The outline is closed contours
 // of 2-D Bezier segments (POV-Ray's linear, quadratic, cubic and Bezier splines all convert
 // exactly); inside is the even-odd rule over all of them (nested contours make holes), which makes
 // a closed prism a solid for CSG, refraction and photons. Built by make_prism (scene/prism.hpp),
@@ -397,6 +399,7 @@ struct Prism {
     std::vector<PrismSegment> segments;  // closed contours, one after another: each segment starts where the last ended
     double y0 = 0.0, y1 = 1.0;           // the heights, y0 < y1
     bool open = false;
+    bool conic = false;                  // POV-Ray's conic_sweep
     // Set by prepare_prism (scene/prism.hpp) whenever the segments change:
     glm::dvec2 lo{0.0}, hi{0.0};               // the outline's box (its control points')
     std::shared_ptr<const ElementTree> tree;  // over the segments' boxes (the CPU reference's own)

@@ -55,7 +55,13 @@ struct BoundsOf {
         return Aabb{dvec3(-o.r_max, o.segments.front().y0, -o.r_max), dvec3(o.r_max, o.segments.back().y1, o.r_max)};
     }
     std::optional<Aabb> operator()(const Prism& o) const {  // its own coordinates (it is always placed)
-        return Aabb{dvec3(o.lo.x, o.y0, o.lo.y), dvec3(o.hi.x, o.y1, o.hi.y)};
+        if (!o.conic) return Aabb{dvec3(o.lo.x, o.y0, o.lo.y), dvec3(o.hi.x, o.y1, o.hi.y)};
+        Aabb box;  // the outline's box scaled by each end's height (the ends' boxes hold the copies between)
+        for (double y : {o.y0, o.y1}) {
+            box.extend(dvec3(o.lo.x * y, y, o.lo.y * y));
+            box.extend(dvec3(o.hi.x * y, y, o.hi.y * y));
+        }
+        return box;
     }
     std::optional<Aabb> operator()(const Lathe& o) const {  // its own coordinates (it is always placed)
         return Aabb{dvec3(-o.r_max, o.y_lo, -o.r_max), dvec3(o.r_max, o.y_hi, o.r_max)};

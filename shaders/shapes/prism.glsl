@@ -1,8 +1,9 @@
-// Ray/prism (POV-Ray's prism, linear sweep), exactly, in float, in its own coordinates (it is
-// always placed: placement.glsl carries rays there). Twin of host/cpu/shapes/prism.cpp (which
-// isolates the roots by Bernstein subdivision in double).
-// p.p0 = (bottom y0, top y1, 1 where open, the outline's size), p.p1 = the outline's box (x, z
-// low, x, z high), p.data its MeshInfo: a tree (MESH_NODES) over its segments (PRISM_CURVES, in
+// Ray/prism (POV-Ray's prism, linear and conic sweeps), exactly, in float, in its own coordinates
+// (it is always placed: placement.glsl carries rays there). Twin of host/cpu/shapes/prism.cpp
+// (which isolates the roots by Bernstein subdivision in double).
+// p.p0 = (bottom y0, top y1 (scene/prism.hpp's prism_walk_heights), its caps: 1 the bottom's + 2
+// the top's, its size), p.p1 = the outline's box (x, z low, x, z high), p.p2.x = 1 for a conic
+// sweep (the outline at y = 1 scaled by y about the apex at the origin), p.data its MeshInfo: a tree (MESH_NODES) over its segments (PRISM_CURVES, in
 // leaf order; each a 2-D Bezier of degree 1 to 3: xs, zs its control points' coordinates).
 //
 // The ray o + t d sees the outline plane along the line q + s e, e = (d.x, d.z), s = t - t_q. A
@@ -14,7 +15,10 @@
 // bracket). One walk of the half-line from the ray's entry into the slab through the tree counts
 // the crossings beyond it (the entry cap is hit where that count is odd), beyond the slab's exit
 // (the exit cap, where odd), and keeps the nearest (the first wall, where before the exit). A ray
-// along y sees a point: its parity from the half-line along +x, and no walls.
+// along y sees a point: its parity from the half-line along +x, and no walls. A conic sweep's line
+// is the ray's central projection from the apex onto y = 1 (the plane through the apex and the
+// ray, cut with y = 1), its s increasing with t inside the slab (which does not hold the apex);
+// a wall's t is where the ray meets the line from the apex through the crossing (B, 1).
 //
 // uv: x the hit segment's index in PRISM_CURVES (-1 the bottom cap, -2 the top), y the segment's
 // u where the ray enters there, -1 - u where it leaves (the normal's side).
@@ -165,6 +169,10 @@ PrismWalk prism_walk(Primitive p, vec2 q, vec2 e, float s_far) {
 // Whether the outline holds the plane's point q (the parity along +x).
 bool prism_holds(Primitive p, vec2 q) { return (prism_walk(p, q, vec2(1.0, 0.0), INFINITY).total & 1u) == 1u; }
 
+// The outline plane's point of a point of the prism's space: (x, z), or for a conic sweep its
+// central projection from the apex onto y = 1.
+vec2 prism_plane_point(Primitive p, vec3 x) { return p.p2.x != 0.0 ? x.xz / x.y : x.xz; }
+
 bool prism_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     float t_in = -INFINITY, t_out = INFINITY;
     if (ray.dir.y != 0.0) {
@@ -176,30 +184,90 @@ bool prism_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
     }
     float start = max(t_in, t_min), end = min(t_out, t_max);
     if (!(start < end)) return false;
-    bool capped = p.p0.z == 0.0;
-    float entry_cap = ray.dir.y > 0.0 ? -1.0 : -2.0, exit_cap = ray.dir.y > 0.0 ? -2.0 : -1.0;
+    bool up = ray.dir.y > 0.0;
+    uint caps = uint(p.p0.z);
+    bool entry_cap = (caps & (up ? 1u : 2u)) != 0u, exit_cap = (caps & (up ? 2u : 1u)) != 0u;
+    float entry_id = up ? -1.0 : -2.0, exit_id = up ? -2.0 : -1.0;
+    // The outline plane's line of the ray, from its point at `start`, and its s at t_out.
+    // A conic sweep's: Q(tau) = (x0.xz + tau d.xz) / (x0.y + tau d.y) = q + s e with
+    // e = d.xz x0.y - x0.xz d.y and s = tau / (x0.y (x0.y + tau d.y)), whose last factor at t_out
+    // is the exit's height itself (the far end's own projection, near an apex, would cancel).
+    // Near the apex q is far off (1 / y): the line is taken from the plane through the apex and the
+    // ray instead (normal n3 = x0 x d: n3.x X + n3.z Z + n3.y = 0 at y = 1; e = (-n3.z, n3.x) is the
+    // e above), walked from its point nearest the outline's box centre, or from q where q is nearer
+    // than the box's reach (s then counted from there), and not at all where q is beyond the box.
+    bool conic = p.p2.x != 0.0;
+    vec3 x0 = ray.origin + start * ray.dir;
+    if (start == t_in) x0.y = up ? p.p0.x : p.p0.y;  // on the entry cap exactly
+    vec2 q = prism_plane_point(p, x0);
     vec2 e = ray.dir.xz;
-    vec2 q = ray.origin.xz + start * e;
-    bool along_y = dot(e, e) < 1e-24;
-    PrismWalk w = prism_walk(p, q, along_y ? vec2(1.0, 0.0) : e, along_y ? INFINITY : t_out - start);
-    if (along_y) {
+    float s_out = t_out - start;
+    bool beyond = false;
+    bool point;
+    if (conic) {
+        vec3 n3 = cross(x0, ray.dir);
+        e = vec2(-n3.z, n3.x);
+        float ee = dot(e, e);
+        point = !(ee > 1e-12 * dot(x0, x0) * dot(ray.dir, ray.dir)) || ee < 1e-30;
+        if (!point) {
+            vec2 centre = 0.5 * (p.p1.xy + p.p1.zw), normal = n3.xz;
+            vec2 foot = centre - ((dot(normal, centre) + n3.y) / dot(normal, normal)) * normal;
+            float sigma0 = dot(q - foot, e) / ee;
+            // Where the ray leaves the slab, from that point's own projection (its height exact):
+            // near the apex one of q and it is far off, but then only its side of the box counts.
+            float sigma_out = sigma0 + s_out / (x0.y * x0.y);  // at a fixed height, s = tau / y^2
+            if (ray.dir.y != 0.0) {
+                vec3 x1 = ray.origin + t_out * ray.dir;
+                x1.y = up ? p.p0.y : p.p0.x;
+                sigma_out = dot(prism_plane_point(p, x1) - foot, e) / ee;
+            }
+            float reach = (0.5 * length(p.p1.zw - p.p1.xy) * 1.01 + 1e-30) / sqrt(ee);
+            beyond = sigma0 > reach;
+            float sigma_start = max(sigma0, -reach);
+            s_out = sigma_out - sigma_start;
+            q = foot + sigma_start * e;
+        }
+    } else {
+        // A point (a ray along y): no walls, the parity there.
+        point = dot(e, e) < 1e-30;
+    }
+    PrismWalk w;
+    if (beyond) {
+        w.total = 0u;
+        w.far = 0u;
+        w.s_near = INFINITY;
+    } else {
+        w = prism_walk(p, q, point ? vec2(1.0, 0.0) : e, point ? INFINITY : s_out);
+    }
+    if (point) {
         w.far = w.total;
         w.s_near = INFINITY;
     }
-    if (capped && t_in > t_min && (w.total & 1u) == 1u) {
+    if (entry_cap && t_in > t_min && (w.total & 1u) == 1u) {
         t_hit = t_in;
-        uv = vec2(entry_cap, 0.0);
+        uv = vec2(entry_id, 0.0);
         return true;
     }
-    if (start + w.s_near < end) {
-        t_hit = start + w.s_near;
-        bool entering = ((w.total - 1u) & 1u) == 1u;
-        uv = vec2(float(w.segment), entering ? w.u : -1.0 - w.u);
-        return true;
+    if (w.s_near < s_out) {
+        float t = start + w.s_near;
+        if (conic) {  // where the ray meets the line from the apex through (B, 1)
+            PrismCurve g = prism_curve_at(w.segment);
+            vec2 b = prism_point(g, int(g.info.x), w.u);
+            vec3 along = vec3(b.x, 1.0, b.y);
+            vec3 dw = cross(ray.dir, along);
+            float den = dot(dw, dw);
+            t = den > 0.0 ? start - dot(cross(x0, along), dw) / den : start;
+        }
+        if (t > t_min && t < end) {  // (a conic sweep's t, from the apex's line, may round to the start)
+            t_hit = t;
+            bool entering = ((w.total - 1u) & 1u) == 1u;
+            uv = vec2(float(w.segment), entering ? w.u : -1.0 - w.u);
+            return true;
+        }
     }
-    if (capped && t_out < t_max && (w.far & 1u) == 1u) {
+    if (exit_cap && t_out < t_max && (w.far & 1u) == 1u) {
         t_hit = t_out;
-        uv = vec2(exit_cap, 0.0);
+        uv = vec2(exit_id, 0.0);
         return true;
     }
     return false;
@@ -207,15 +275,18 @@ bool prism_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
 
 // Whether a point is inside (CSG's walked leaves; its reader lets only a closed prism in).
 bool prism_inside(Primitive p, vec3 point) {
-    return point.y > p.p0.x && point.y < p.p0.y && prism_holds(p, point.xz);
+    return point.y > p.p0.x && point.y < p.p0.y && prism_holds(p, prism_plane_point(p, point));
 }
 
 // The hit's error (Hit.error): a wall's point is the ray's at t from the root u, whose f is within
 // a few roundings of the control points' and q's magnitudes (the outline's size and |o| + t), and
 // Newton stops within 1e-7 of u (of the segment's extent, at most the outline's size); a cap's is
-// the plane's. As the sor's: 64 roundings of max |o| + t + the prism's size.
+// the plane's. As the sor's: 64 roundings of max |o| + t + the prism's size. A conic sweep's
+// crossing is found in the plane y = 1 (the line from the plane through the apex and the ray) and
+// its t from two cross products with the line from the apex: 4 times that (its reintersection
+// family's worst distance was 1.67 of the 64 roundings).
 float prism_hit_error(Primitive p, Ray ray, float t) {
-    return rounding_bound(64.0, max_abs(ray.origin) + t + max(p.p0.w, max(abs(p.p0.x), abs(p.p0.y))));
+    return rounding_bound(p.p2.x != 0.0 ? 256.0 : 64.0, max_abs(ray.origin) + t + max(p.p0.w, max(abs(p.p0.x), abs(p.p0.y))));
 }
 
 // The outward normal: the caps' axis, or the segment's tangent turned in the plane, against the
@@ -228,7 +299,12 @@ vec3 prism_hit_normal(Primitive p, Ray ray, float t, vec3 point, vec2 uv, inout 
     bool entering = uv.y >= -0.5;
     float u = entering ? uv.y : -1.0 - uv.y;
     vec2 tangent = prism_tangent(g, int(g.info.x), u);
-    vec3 n = normalize(vec3(tangent.y, 0.0, -tangent.x));
+    vec3 n = vec3(tangent.y, 0.0, -tangent.x);
+    if (p.p2.x != 0.0) {  // a conic sweep: across its tangents (B', 0) and (B, 1)
+        vec2 b = prism_point(g, int(g.info.x), u);
+        n.y = tangent.x * b.y - tangent.y * b.x;
+    }
+    n = normalize(n);
     if ((dot(n, ray.dir) < 0.0) != entering) n = -n;
     return n;
 }

@@ -240,6 +240,29 @@ const char* const kStretch = "transform = { scale = [1.6, 0.6, 1.1], rotate = [1
 const char* const kSor =
     "type = \"sor\"\npoints = [[0, -1.2], [0.5, -1], [0.8, -0.5], [0.35, 0.3], [0.3, 0.6], [0.55, 1], [0.5, 1.2]]\n";
 
+// A prism: a quadratic outline with a quadratic hole (even-odd), always traced in its own
+// coordinates; its walls meet its caps at rims.
+const char* const kPrism =
+    "type = \"prism\"\nspline = \"quadratic\"\nheight1 = -0.6\nheight2 = 0.7\npoints = [[0.6, -0.9], [1, 0], [0.6, 0.9], [0, 1], "
+    "[-0.6, 0.9], [-1, 0], [-0.6, -0.9], [0, -1], [0.6, -0.9], [1, 0], [0.5, 0], [0.4, 0], [0.4, 0.3], [0.1, 0.2], [0.3, -0.2], "
+    "[0.4, 0]]\n";
+
+// A star of straight walls: convex and concave corners (a glyph's outline has both). (Moved far
+// from the origin, one grazing ray of 300 fails the clearance check at a corner: the line back
+// from its restarted origin passes just outside the corner and meets no wall, and the judge's
+// silhouette test does not excuse it; not yet resolved.)
+const char* const kPrismStar =
+    "type = \"prism\"\nheight1 = -0.5\nheight2 = 0.5\npoints = [[0, 1], [0.2245, 0.309], [0.9511, 0.309], [0.3633, -0.118], "
+    "[0.5878, -0.809], [0, -0.382], [-0.5878, -0.809], [-0.3633, -0.118], [-0.9511, 0.309], [-0.2245, 0.309], [0, 1]]\n";
+
+// A conic sweep of the prism's outline (smooth, with a hole) down to its apex. (A Bezier heart's
+// concave cusp fails the clearance check: a restarted ray's line back meets the other wall within
+// the error bound, as at the stretched sor's base rim; not yet resolved.)
+const char* const kConicPrism =
+    "type = \"prism\"\nsweep = \"conic\"\nspline = \"quadratic\"\nheight1 = 0\nheight2 = 1.4\npoints = [[0.6, -0.9], [1, 0], [0.6, 0.9], [0, 1], "
+    "[-0.6, 0.9], [-1, 0], [-0.6, -0.9], [0, -1], [0.6, -0.9], [1, 0], [0.5, 0], [0.4, 0], [0.4, 0.3], [0.1, 0.2], [0.3, -0.2], "
+    "[0.4, 0]]\ntransform = { translate = [0, -0.7, 0] }\n";
+
 // A lathe (a cubic vase with a wall: up the outside, over the lip, down the inside to the axis),
 // always traced in its own coordinates.
 const char* const kLathe =
@@ -307,6 +330,12 @@ const Case kCases[] = {
     {"torus_stretched_far_from_origin", [] { return moved_far(analytic(std::string(kTorus) + kStretch)); }},
     {"sor", [] { return analytic(kSor); }},
     {"sor_far_from_origin", [] { return moved_far(analytic(kSor)); }},
+    {"prism", [] { return analytic(kPrism); }},
+    {"prism_far_from_origin", [] { return moved_far(analytic(kPrism)); }},
+    {"prism_stretched", [] { return analytic(std::string(kPrism) + kStretch); }},
+    {"prism_star", [] { return analytic(kPrismStar); }},
+    {"prism_conic", [] { return analytic(kConicPrism); }},
+    {"prism_conic_far_from_origin", [] { return moved_far(analytic(kConicPrism)); }},
     {"lathe", [] { return analytic(kLathe); }},
     {"lathe_far_from_origin", [] { return moved_far(analytic(kLathe)); }},
     {"lathe_cup", [] { return analytic(kLatheCup); }},

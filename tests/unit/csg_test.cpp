@@ -35,6 +35,16 @@ bool leaf_contains(const Object& leaf, dvec3 p) {
     }
     if (const auto* i = std::get_if<ImplicitObject>(&leaf.shape))
         return surface::evaluate_implicit(i->surface, dvec3(i->surface.to_local * glm::dvec4(p, 1.0))).f < 0.0;
+    if (const auto* o = std::get_if<Prism>(&leaf.shape)) {  // even-odd over straight outlines: crossings along +x
+        if (!(p.y > o->y0 && p.y < o->y1)) return false;
+        bool in = false;
+        for (const PrismSegment& s : o->segments) {
+            EXPECT_EQ(s.degree, 1) << "the point test knows straight outlines";
+            const glm::dvec2 a = s.p[0], b = s.p[1];
+            if ((a.y > p.z) != (b.y > p.z) && p.x < (b.x - a.x) * (p.z - a.y) / (b.y - a.y) + a.x) in = !in;
+        }
+        return in;
+    }
     if (const auto* l = std::get_if<Lathe>(&leaf.shape)) {  // a linear lathe: its polygon in (r, y), even-odd
         if (l->degree != 1) ADD_FAILURE() << "the point test knows linear lathes only";
         const double rho = std::hypot(p.x, p.z);
@@ -151,6 +161,28 @@ TEST(Csg, ToriAndImplicitSurfacesAreWalkedRootByRoot) {
         objects = [
           { type = "superellipsoid", e = 0.3, n = 0.6, transform = { scale = 1.2 } },
           { type = "torus", major_radius = 0.8, minor_radius = 0.5, axis = [1, 1, 0], inverse = true },
+        ]
+    )");
+}
+
+TEST(Csg, PrismsWithHolesAreWalkedRootByRoot) {
+    expect_membership_agrees(R"(
+        [[object]]
+        type = "difference"
+        transform = { rotate = [20, 10, 0] }
+        objects = [
+          { type = "box", min = [-1.2, -1, -1.2], max = [1.2, 1, 1.2] },
+          { type = "prism", height1 = -1.5, height2 = 0.6, points = [[-1, -1], [1, -1], [1, 1], [-1, 1], [-1, -1],
+            [-0.6, -0.6], [0.6, -0.6], [0, 0.7], [-0.6, -0.6]], transform = { rotate = [70, 0, 20] } },
+        ]
+    )");
+    expect_membership_agrees(R"(
+        [[object]]
+        type = "intersection"
+        objects = [
+          { type = "sphere", center = [0, 0, 0], radius = 1.3 },
+          { type = "prism", height1 = -1, height2 = 1, points = [[0, 1.5], [0.35, 0.45], [1.4, 0.45], [0.55, -0.2], [0.9, -1.2],
+            [0, -0.55], [-0.9, -1.2], [-0.55, -0.2], [-1.4, 0.45], [-0.35, 0.45], [0, 1.5]], transform = { rotate = [-60, 15, 0] } },
         ]
     )");
 }

@@ -35,6 +35,7 @@
 #include "cpu/shapes/bernstein_roots.hpp"
 #include "cpu/shapes/element_walk.hpp"
 #include "cpu/shapes/shapes.hpp"
+#include "scene/prism.hpp"
 
 namespace lancer::cpu {
 namespace {
@@ -72,16 +73,30 @@ double prism_bezier_value(const double* c, int degree, double u) {
 }
 
 struct PrismCrossing {
-    double t;  // along the ray (the line's parameter)
+    double s;  // along the outline plane's line
+    double t;  // along the ray
     std::uint32_t segment;
     double u;
 };
 
-// The line q + s e in the plane (s = t - t_q), its normal n fixed by the caller (the same for both
-// ways along one line, so that the sign convention is one).
+// The line q + s e in the outline plane, its normal n fixed by the caller (the same for both ways
+// along one line, so that the sign convention is one). A linear sweep's is the ray's projection
+// (t = t_q + s); a conic sweep's the ray's central projection from the apex onto y = 1 (the
+// plane through the apex and the ray cut with y = 1), where t is where the ray meets the line
+// from the apex through (B, 1): x0 + tau d parallel to (B.x, 1, B.z), t = t_q + tau.
 struct PrismLine {
     dvec2 q, e, n;
     double t_q;
+    bool conic = false;
+    bool empty = false;     // no crossings beyond q (a conic sweep's q beyond the outline)
+    dvec3 x0{0.0}, d{0.0};  // the ray's point at t_q and its direction (conic)
+    double t_of(double s, const dvec2& b) const {
+        if (!conic) return t_q + s;
+        const dvec3 w(b.x, 1.0, b.y);
+        const dvec3 dw = glm::cross(d, w);
+        const double den = glm::dot(dw, dw);
+        return den > 0.0 ? t_q - glm::dot(glm::cross(x0, w), dw) / den : t_q;
+    }
 };
 
 // The crossings of segment `index` with the line whose s is beyond 0 in the direction `way` (+1
@@ -134,29 +149,21 @@ void prism_segment_crossings(const Prism& o, std::uint32_t index, const PrismLin
         // The root between samples k - 1 and k (there is one where roots were found; else the
         // change is at an end where f is 0).
         double u = roots.empty() ? (c[0] == 0.0 ? 0.0 : 1.0) : roots[std::min(k - 1, roots.size() - 1)];
-        const dvec2 r = prism_point(seg, u) - line.q;
+        const dvec2 b = prism_point(seg, u);
+        const dvec2 r = b - line.q;
         const double s = (line.e.x * r.x + line.e.y * r.y) / (line.e.x * line.e.x + line.e.y * line.e.y);
         if (!(s * way > 0.0)) continue;
-        out.push_back({line.t_q + s, index, u});
+        out.push_back({s, line.t_of(s, b), index, u});
     }
 }
 
 // Every crossing of the line beyond q in the direction `way`, through the tree.
 void prism_crossings(const Prism& o, const PrismLine& line, double way, std::vector<PrismCrossing>& out) {
-    if (!o.tree) return;
+    if (!o.tree || (line.empty && way > 0.0)) return;
     const Ray walk{dvec3(line.q.x, 0.0, line.q.y), dvec3(way * line.e.x, 0.0, way * line.e.y)};
     double reach = kInfinity;
     walk_element_tree(*o.tree, walk, reach,
                       [&](std::uint32_t index, double&) { prism_segment_crossings(o, index, line, way, out); });
-}
-
-PrismLine prism_line(const Ray& ray, double t) {
-    PrismLine line;
-    line.t_q = t;
-    line.q = dvec2(ray.origin.x + t * ray.dir.x, ray.origin.z + t * ray.dir.z);
-    line.e = dvec2(ray.dir.x, ray.dir.z);
-    line.n = dvec2(-line.e.y, line.e.x);
-    return line;
 }
 
 // Whether the outline holds the plane's point q: the parity of the half-line along +x.
@@ -167,26 +174,86 @@ bool prism_holds(const Prism& o, const dvec2& q) {
     return crossings.size() % 2 == 1;
 }
 
+// The outline plane's point of a point of the prism's space: (x, z), or for a conic sweep its
+// central projection (x / y, z / y).
+dvec2 prism_plane_point(const Prism& o, const dvec3& p) { return o.conic ? dvec2(p.x / p.y, p.z / p.y) : dvec2(p.x, p.z); }
+
 // The ray's stretch through the slab (t_in, t_out); false where it misses it.
-bool prism_slab(const Prism& o, const Ray& ray, double& t_in, double& t_out) {
+bool prism_slab(double y0, double y1, const Ray& ray, double& t_in, double& t_out) {
     if (ray.dir.y != 0.0) {
-        const double a = (o.y0 - ray.origin.y) / ray.dir.y, b = (o.y1 - ray.origin.y) / ray.dir.y;
+        const double a = (y0 - ray.origin.y) / ray.dir.y, b = (y1 - ray.origin.y) / ray.dir.y;
         t_in = std::min(a, b);
         t_out = std::max(a, b);
         return true;
     }
     t_in = -kInfinity;
     t_out = kInfinity;
-    return ray.origin.y > o.y0 && ray.origin.y < o.y1;
+    return ray.origin.y > y0 && ray.origin.y < y1;
 }
 
-bool prism_along_y(const Ray& ray) { return ray.dir.x == 0.0 && ray.dir.z == 0.0; }
+// The outline plane's line of the ray from its point at `start` (in the slab), and the line's s
+// at the ray's t_out (infinity where the ray does not leave the slab); false where the line is a
+// point (a ray along y, or for a conic sweep along a line through the apex).
+//
+// A conic sweep's line: Q(tau) = (x0.xz + tau d.xz) / (x0.y + tau d.y) = q + s e, with
+// e = d.xz x0.y - x0.xz d.y and s = tau / (x0.y (x0.y + tau d.y)), increasing with tau in the slab.
+bool prism_line(const Prism& o, const Ray& ray, double start, double start_y, double t_out, double y_out, PrismLine& line,
+                double& s_out) {
+    dvec3 x0 = ray.origin + start * ray.dir;
+    if (std::isfinite(start_y)) x0.y = start_y;  // on the entry cap exactly
+    line.t_q = start;
+    line.q = prism_plane_point(o, x0);
+    line.e = dvec2(ray.dir.x, ray.dir.z);
+    s_out = t_out - start;
+    if (!o.conic) {
+        line.n = dvec2(-line.e.y, line.e.x);
+        const double scale = std::max({std::abs(line.q.x), std::abs(line.q.y), std::abs(o.lo.x), std::abs(o.lo.y), std::abs(o.hi.x),
+                                       std::abs(o.hi.y)});
+        return std::abs(line.e.x) + std::abs(line.e.y) > 1e-14 * scale;
+    }
+    line.conic = true;
+    line.x0 = x0;
+    line.d = ray.dir;
+    // Near the apex q is far off (1 / y): the line is taken from the plane through the apex and the
+    // ray instead (normal n3 = x0 x d: n3.x X + n3.z Z + n3.y = 0 at y = 1; e = (-n3.z, n3.x) is the
+    // e above), walked from its point nearest the outline's box centre, or from q where q is
+    // nearer than the box's reach (s then counted from there: s = sigma - sigma_start).
+    const dvec3 n3 = glm::cross(x0, ray.dir);
+    line.e = dvec2(-n3.z, n3.x);
+    line.n = dvec2(-line.e.y, line.e.x);
+    const double ee = glm::dot(line.e, line.e);
+    if (!(ee > 1e-28 * glm::dot(x0, x0) * glm::dot(ray.dir, ray.dir))) return false;
+    const dvec2 centre = 0.5 * (o.lo + o.hi), normal(n3.x, n3.z);
+    const dvec2 foot = centre - ((glm::dot(normal, centre) + n3.y) / glm::dot(normal, normal)) * normal;
+    const double sigma0 = glm::dot(line.q - foot, line.e) / ee;
+    // Where the ray leaves the slab, from that point's own projection (its height exact): near the
+    // apex one of q and it is far off and its sigma huge, but then only its side of the box counts.
+    double sigma_out = sigma0 + s_out / (x0.y * x0.y);  // at a fixed height, s = tau / y^2
+    if (ray.dir.y != 0.0) {
+        dvec3 x1 = ray.origin + t_out * ray.dir;
+        x1.y = y_out;
+        sigma_out = glm::dot(prism_plane_point(o, x1) - foot, line.e) / ee;
+    }
+    const double reach = (0.5 * glm::length(o.hi - o.lo) * 1.01 + 1e-300) / std::sqrt(ee);
+    if (sigma0 > reach) line.empty = true;  // the box lies behind: no crossings beyond q
+    const double sigma_start = std::max(sigma0, -reach);
+    line.q = foot + sigma_start * line.e;
+    s_out = sigma_out - sigma_start;
+    return true;
+}
 
-// The wall's outward normal at a crossing: the tangent turned in the plane, facing against the
+// The wall's outward normal at a crossing: for a linear sweep the tangent turned in the plane, for
+// a conic sweep the cross product of the surface's tangents (B', 0) and (B, 1); facing against the
 // ray where it enters (an odd count of crossings beyond it).
 dvec3 prism_wall_normal(const Prism& o, const PrismCrossing& c, const dvec3& d, bool entering) {
-    const dvec2 tangent = prism_tangent(o.segments[c.segment], c.u);
-    dvec3 n = glm::normalize(dvec3(tangent.y, 0.0, -tangent.x));
+    const PrismSegment& seg = o.segments[c.segment];
+    const dvec2 tangent = prism_tangent(seg, c.u);
+    dvec3 n(tangent.y, 0.0, -tangent.x);
+    if (o.conic) {
+        const dvec2 b = prism_point(seg, c.u);
+        n = dvec3(tangent.y, tangent.x * b.y - tangent.y * b.x, -tangent.x);
+    }
+    n = glm::normalize(n);
     const bool faces_ray = glm::dot(n, d) < 0.0;
     if (faces_ray != entering) n = -n;
     return n;
@@ -195,62 +262,85 @@ dvec3 prism_wall_normal(const Prism& o, const PrismCrossing& c, const dvec3& d, 
 }  // namespace
 
 std::optional<SurfaceHit> intersect(const Prism& o, const Ray& ray, double t_min, double t_max) {
-    double t_in, t_out;
-    if (o.segments.empty() || !prism_slab(o, ray, t_in, t_out)) return std::nullopt;
+    double y0, y1, t_in, t_out;
+    bool cap0, cap1;
+    prism_walk_heights(o, y0, y1, cap0, cap1);
+    if (o.segments.empty() || !prism_slab(y0, y1, ray, t_in, t_out)) return std::nullopt;
     const double start = std::max(t_in, t_min), end = std::min(t_out, t_max);
     if (!(start < end)) return std::nullopt;
-    const double bottom_first = ray.dir.y > 0.0 ? -1.0 : 1.0;  // the entry cap's normal's y
-    if (prism_along_y(ray)) {
-        if (o.open || !prism_holds(o, dvec2(ray.origin.x, ray.origin.z))) return std::nullopt;
-        if (t_in > t_min) return SurfaceHit{t_in, dvec3(0.0, bottom_first, 0.0)};
-        if (t_out < t_max) return SurfaceHit{t_out, dvec3(0.0, -bottom_first, 0.0)};
+    // The caps the ray enters and leaves by, and their outward normals' y.
+    const bool up = ray.dir.y > 0.0;
+    const bool entry_cap = up ? cap0 : cap1, exit_cap = up ? cap1 : cap0;
+    const double entry_y = up ? -1.0 : 1.0;
+    PrismLine line;
+    double s_out;
+    const double entry_height = up ? y0 : y1, exit_height = up ? y1 : y0;
+    if (!prism_line(o, ray, start, start == t_in ? entry_height : kInfinity, t_out, exit_height, line, s_out)) {
+        // A point: no walls, the parity there.
+        if (!prism_holds(o, line.q)) return std::nullopt;
+        if (entry_cap && t_in > t_min) return SurfaceHit{t_in, dvec3(0.0, entry_y, 0.0)};
+        if (exit_cap && t_out < t_max) return SurfaceHit{t_out, dvec3(0.0, -entry_y, 0.0)};
         return std::nullopt;
     }
     std::vector<PrismCrossing> crossings;
-    prism_crossings(o, prism_line(ray, start), 1.0, crossings);
-    std::sort(crossings.begin(), crossings.end(), [](const PrismCrossing& a, const PrismCrossing& b) { return a.t < b.t; });
-    if (!o.open && t_in > t_min && crossings.size() % 2 == 1) return SurfaceHit{t_in, dvec3(0.0, bottom_first, 0.0)};
-    if (!crossings.empty() && crossings.front().t < end) {
-        const bool entering = (crossings.size() - 1) % 2 == 1;
-        return SurfaceHit{crossings.front().t, prism_wall_normal(o, crossings.front(), ray.dir, entering)};
+    prism_crossings(o, line, 1.0, crossings);
+    std::sort(crossings.begin(), crossings.end(), [](const PrismCrossing& a, const PrismCrossing& b) { return a.s < b.s; });
+    if (entry_cap && t_in > t_min && crossings.size() % 2 == 1) return SurfaceHit{t_in, dvec3(0.0, entry_y, 0.0)};
+    // The first wall: the nearest crossing whose t is beyond t_min (a conic sweep's t, from the
+    // line through the apex, may round to the start where the ray starts on the wall).
+    for (std::size_t k = 0; k < crossings.size() && crossings[k].s < s_out; ++k) {
+        if (!(crossings[k].t > t_min)) continue;
+        if (!(crossings[k].t < end)) break;
+        const bool entering = (crossings.size() - 1 - k) % 2 == 1;
+        return SurfaceHit{crossings[k].t, prism_wall_normal(o, crossings[k], ray.dir, entering)};
     }
-    if (!o.open && t_out < t_max) {
-        const auto beyond = std::count_if(crossings.begin(), crossings.end(), [&](const PrismCrossing& c) { return c.t > t_out; });
-        if (beyond % 2 == 1) return SurfaceHit{t_out, dvec3(0.0, -bottom_first, 0.0)};
+    if (exit_cap && t_out < t_max) {
+        const auto beyond = std::count_if(crossings.begin(), crossings.end(), [&](const PrismCrossing& c) { return c.s > s_out; });
+        if (beyond % 2 == 1) return SurfaceHit{t_out, dvec3(0.0, -entry_y, 0.0)};
     }
     return std::nullopt;
 }
 
 std::vector<double> roots_on_line(const Prism& o, const Ray& ray) {
-    double t_in, t_out;
-    if (o.segments.empty() || !prism_slab(o, ray, t_in, t_out)) return {};
+    double y0, y1, t_in, t_out;
+    bool cap0, cap1;
+    prism_walk_heights(o, y0, y1, cap0, cap1);
+    if (o.segments.empty() || !prism_slab(y0, y1, ray, t_in, t_out)) return {};
+    const bool up = ray.dir.y > 0.0;
+    const bool entry_cap = up ? cap0 : cap1, exit_cap = up ? cap1 : cap0;
     std::vector<double> roots;
-    if (prism_along_y(ray)) {
-        if (!o.open && prism_holds(o, dvec2(ray.origin.x, ray.origin.z))) roots = {t_in, t_out};
+    // From the slab's entry (a horizontal line: from t = 0, both ways, with one normal).
+    const double from = std::isfinite(t_in) ? t_in : 0.0;
+    PrismLine line;
+    double s_out;
+    if (!prism_line(o, ray, from, std::isfinite(t_in) ? (up ? y0 : y1) : kInfinity, t_out, up ? y1 : y0, line, s_out)) {
+        if (std::isfinite(t_in) && prism_holds(o, line.q)) {
+            if (entry_cap) roots.push_back(t_in);
+            if (exit_cap) roots.push_back(t_out);
+        }
         return roots;
     }
-    // Both ways from a point of the slab, with one normal for the line.
-    const double from = std::isfinite(t_in) ? t_in : 0.0;
-    const PrismLine line = prism_line(ray, from);
     std::vector<PrismCrossing> crossings;
     prism_crossings(o, line, 1.0, crossings);
     const std::size_t ahead = crossings.size();
-    prism_crossings(o, line, -1.0, crossings);
+    if (!std::isfinite(t_in)) prism_crossings(o, line, -1.0, crossings);
     for (const PrismCrossing& c : crossings)
-        if (c.t > t_in && c.t < t_out) roots.push_back(c.t);
-    if (!o.open && std::isfinite(t_in)) {
-        if (ahead % 2 == 1) roots.push_back(t_in);
-        const auto beyond = std::count_if(crossings.begin(), crossings.begin() + std::ptrdiff_t(ahead),
-                                          [&](const PrismCrossing& c) { return c.t > t_out; });
-        if (beyond % 2 == 1) roots.push_back(t_out);
+        if (c.s < s_out && (std::isfinite(t_in) || c.t > t_in)) roots.push_back(c.t);
+    if (std::isfinite(t_in)) {
+        if (entry_cap && ahead % 2 == 1) roots.push_back(t_in);
+        const auto beyond = std::count_if(crossings.begin(), crossings.end(), [&](const PrismCrossing& c) { return c.s > s_out; });
+        if (exit_cap && beyond % 2 == 1) roots.push_back(t_out);
     }
     std::sort(roots.begin(), roots.end());
     return roots;
 }
 
 bool inside(const Prism& o, const dvec3& p) {
-    if (o.segments.empty() || !(p.y > o.y0 && p.y < o.y1)) return false;
-    return prism_holds(o, dvec2(p.x, p.z));
+    double y0, y1;
+    bool cap0, cap1;
+    prism_walk_heights(o, y0, y1, cap0, cap1);
+    if (o.segments.empty() || !(p.y > y0 && p.y < y1)) return false;
+    return prism_holds(o, prism_plane_point(o, p));
 }
 
 // POV-Ray's default, planar: (x, z) of the prism's own coordinates.

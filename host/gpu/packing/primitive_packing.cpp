@@ -10,6 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include "scene/shape_bounds.hpp"
+#include "scene/prism.hpp"
 #include "core/finite.hpp"
 #include "core/huge_pages.hpp"
 #include "gpu/packing/float_bounds.hpp"
@@ -281,8 +282,9 @@ struct PrimitivePacker {
              vec4(float(o.base_r2), float(o.cap_r2), float(o.segments.size()), 0.0f), {}},
             shape_bounds(o));
     }
-    // One primitive, in its own coordinates (always placed): p0 = (bottom, top, 1 where open, the
-    // outline's size), p1 = the outline's box (x, z low; x, z high), data its MeshInfo: a tree over
+    // One primitive, in its own coordinates (always placed): p0 = (bottom, top: scene/prism.hpp's
+    // prism_walk_heights; its caps, 1 the bottom's + 2 the top's; its size), p1 = the outline's box
+    // (x, z low; x, z high), p2.x = 1 for a conic sweep, data its MeshInfo: a tree over
     // the segments' boxes (x and z; y in [-1, 1]: shapes/prism.glsl walks the plane y = 0), the
     // segments (PRISM_CURVES) in leaf order.
     void operator()(const Prism& o) {
@@ -310,10 +312,14 @@ struct PrimitivePacker {
             g.info = vec4(float(s.degree), 0.0f, 0.0f, 0.0f);
             out.prism_curves.push_back(g);
         }
-        const float size = float(std::max({std::abs(o.lo.x), std::abs(o.lo.y), std::abs(o.hi.x), std::abs(o.hi.y)}));
-        add({SHAPE_PRISM, material, index, object, vec4(float(o.y0), float(o.y1), o.open ? 1.0f : 0.0f, size),
-             vec4(float(o.lo.x), float(o.lo.y), float(o.hi.x), float(o.hi.y)), {}},
-            shape_bounds(o));
+        const Aabb box = *shape_bounds(o);
+        const float size = float(std::max({glm::length(box.lo), glm::length(box.hi)}));
+        double y0, y1;
+        bool cap0, cap1;
+        prism_walk_heights(o, y0, y1, cap0, cap1);
+        add({SHAPE_PRISM, material, index, object, vec4(float(y0), float(y1), float((cap0 ? 1 : 0) + (cap1 ? 2 : 0)), size),
+             vec4(float(o.lo.x), float(o.lo.y), float(o.hi.x), float(o.hi.y)), vec4(o.conic ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f)},
+            box);
     }
     // One primitive, in its own coordinates (always placed): p0 = (lowest y, highest y, largest
     // radius, degree), p1 = (segment count, 1 where closed), data its first segment (LATHE_BANDS),
