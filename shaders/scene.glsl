@@ -21,6 +21,7 @@
 #include "polynomial.glsl"
 #include "shapes/blob.glsl"
 #include "shapes/sor.glsl"
+#include "shapes/superellipsoid.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)
 #include "shapes/parametric.glsl"

@@ -45,7 +45,8 @@
     X(MESH, mesh, Mesh, 11, SHAPE_BOUNDED | SHAPE_ORIENTED)                                                             \
     X(SPHERES, spheres, SphereSet, 12, SHAPE_BOUNDED)                                                   \
     X(BLOB, blob, Blob, 13, SHAPE_BOUNDED | SHAPE_CLOSED)                                                \
-    X(SOR, sor, Sor, 14, SHAPE_BOUNDED | SHAPE_CLOSED)
+    X(SOR, sor, Sor, 14, SHAPE_BOUNDED | SHAPE_CLOSED)                                                  \
+    X(SUPERELLIPSOID, superellipsoid, Superellipsoid, 15, SHAPE_BOUNDED | SHAPE_SOLID)
 
 #ifdef __cplusplus
 #include <cstdint>

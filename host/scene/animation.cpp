@@ -45,6 +45,9 @@ void translate(Shape& shape, const dvec3& offset) {
         }
         void operator()(SphereSet&) const { throw std::logic_error("a sphere set is moved by its placement, not by its shape"); }
         void operator()(Sor&) const { throw std::logic_error("a sor is moved by its placement, not by its shape"); }
+        void operator()(Superellipsoid&) const {
+            throw std::logic_error("a superellipsoid is moved by its placement, not by its shape");
+        }
         void operator()(Csg& c) const {
             for (Object& leaf : c.leaves) translate(leaf, d);
             c.lo += d;

@@ -351,9 +351,10 @@ struct ObjectReading {
             const bool open = (cone && cone->open) || (sor && sor->open);
             if (!(shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED) || shape_has(kind, SHAPE_ORIENTED)) || open)
                 t.fail(open ? "open" : "type",
-                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder, cone and sor, torus, "
-                                   "blob, implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, "
-                                   "closed meshes, plane as the half-space behind its normal) and CSG objects and groups of them",
+                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, superellipsoid, capped cylinder, cone "
+                                   "and sor, torus, blob, implicit surfaces closed in their box, parametric and Bezier surfaces "
+                                   "declared closed, closed meshes, plane as the half-space behind its normal) and CSG objects and "
+                                   "groups of them",
                                    open ? "an open " : "a ", type == "spheres" ? "sphere set" : type));
             if (const auto* implicit = std::get_if<ImplicitObject>(&leaf.shape))
                 if (auto point = surface::not_proved_positive_on_faces(implicit->surface))

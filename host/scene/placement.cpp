@@ -115,6 +115,7 @@ struct Absorber {
     bool operator()(ImplicitObject&) const { return true; }
     bool operator()(Mesh&) const { return false; }  // shared by its placements: never copied
     bool operator()(Sor&) const { return false; }   // about its own y axis, always
+    bool operator()(Superellipsoid&) const { return false; }  // in [-1, 1]^3 of its own coordinates, always
     bool operator()(SphereSet&) const { return false; }
 };
 
@@ -122,7 +123,7 @@ struct Absorber {
 
 void place(Object& o, const glm::dmat4& m) {
     if (m == glm::dmat4(1.0) && !std::holds_alternative<Mesh>(o.shape) && !std::holds_alternative<SphereSet>(o.shape) &&
-        !std::holds_alternative<Sor>(o.shape)) {
+        !std::holds_alternative<Sor>(o.shape) && !std::holds_alternative<Superellipsoid>(o.shape)) {
         o.placement.reset();
         return;
     }
