@@ -23,6 +23,7 @@
 #include "shapes/sor.glsl"
 #include "shapes/prism.glsl"
 #include "shapes/lathe.glsl"
+#include "shapes/superellipsoid.glsl"
 #include "shapes/bezier.glsl"
 #include "surface_functions.glsl"  // the scene's expression surfaces, generated (host/gpu/shaders/surface_codegen.cpp)
 #include "shapes/parametric.glsl"

@@ -47,7 +47,8 @@
     X(BLOB, blob, Blob, 13, SHAPE_BOUNDED | SHAPE_CLOSED)                                                \
     X(SOR, sor, Sor, 14, SHAPE_BOUNDED | SHAPE_CLOSED)                                                  \
     X(PRISM, prism, Prism, 15, SHAPE_BOUNDED | SHAPE_CLOSED)                                                \
-    X(LATHE, lathe, Lathe, 16, SHAPE_BOUNDED | SHAPE_CLOSED)
+    X(LATHE, lathe, Lathe, 16, SHAPE_BOUNDED | SHAPE_CLOSED)                                                \
+    X(SUPERELLIPSOID, superellipsoid, Superellipsoid, 17, SHAPE_BOUNDED | SHAPE_SOLID)
 
 #ifdef __cplusplus
 #include <cstdint>

@@ -40,6 +40,7 @@ glm::dvec2 texture_uv(const Hit& hit, const dvec3& world_point) {
         glm::dvec2 operator()(const Sor& o) const { return cpu::texture_uv(o, p); }
         glm::dvec2 operator()(const Prism& o) const { return cpu::texture_uv(o, p); }
         glm::dvec2 operator()(const Lathe& o) const { return cpu::texture_uv(o, p, hit.uv); }  // uv: (segment, s)
+        glm::dvec2 operator()(const Superellipsoid& o) const { return cpu::texture_uv(o, p); }
     };
     return std::visit(Mapping{hit, p, normal}, hit.object->shape);
 }

@@ -47,6 +47,9 @@ void translate(Shape& shape, const dvec3& offset) {
         void operator()(Sor&) const { throw std::logic_error("a sor is moved by its placement, not by its shape"); }
         void operator()(Prism&) const { throw std::logic_error("a prism is moved by its placement, not by its shape"); }
         void operator()(Lathe&) const { throw std::logic_error("a lathe is moved by its placement, not by its shape"); }
+        void operator()(Superellipsoid&) const {
+            throw std::logic_error("a superellipsoid is moved by its placement, not by its shape");
+        }
         void operator()(Csg& c) const {
             for (Object& leaf : c.leaves) translate(leaf, d);
             c.lo += d;

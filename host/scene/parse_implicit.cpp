@@ -162,4 +162,6 @@ Shape prepared_implicit(TableReader& t, ImplicitObject object, const std::string
     return object;
 }
 
+bool is_implicit_type(std::string_view type) { return type == "implicit"; }
+
 }  // namespace lancer

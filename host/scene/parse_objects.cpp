@@ -355,7 +355,7 @@ struct ObjectReading {
             const bool open = (cone && cone->open) || (sor && sor->open) || (prism && prism->open);
             if (!(shape_has(kind, SHAPE_SOLID) || shape_has(kind, SHAPE_CLOSED) || shape_has(kind, SHAPE_ORIENTED)) || open)
                 t.fail(open ? "open" : "type",
-                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, capped cylinder, cone, sor, prism and lathe, torus, "
+                       fmt::format("{}{} has no inside: CSG combines solids (sphere, box, superellipsoid, capped cylinder, cone, sor, prism and lathe, torus, "
                                    "blob, implicit surfaces closed in their box, parametric and Bezier surfaces declared closed, "
                                    "closed meshes, plane as the half-space behind its normal) and CSG objects and groups of them",
                                    open ? "an open " : "a ", type == "spheres" ? "sphere set" : type));

@@ -20,7 +20,7 @@ Shape read_parametric(TableReader& t, const glm::dmat4& to_world);
 Shape read_implicit(TableReader& t, const glm::dmat4& to_world);
 Shape read_mesh(TableReader& t, const glm::dmat4& to_world);  // parse_mesh.cpp
 Shape read_spheres(TableReader& t, const glm::dmat4& to_world);  // parse_spheres.cpp: a sphere set
-// POV-Ray's superellipsoid, as the implicit surface it is (parse_implicit_solids.cpp).
+// POV-Ray's superellipsoid, a shape of its own (parse_superellipsoid.cpp).
 Shape read_superellipsoid(TableReader& t, const glm::dmat4& to_world);
 Shape read_blob(TableReader& t, const glm::dmat4& to_world);  // parse_blob.cpp: POV-Ray's blob
 Shape read_sor(TableReader& t, const glm::dmat4& to_world);   // parse_sor.cpp: POV-Ray's surface of revolution

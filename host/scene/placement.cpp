@@ -117,6 +117,7 @@ struct Absorber {
     bool operator()(Sor&) const { return false; }   // about its own y axis, always
     bool operator()(Prism&) const { return false; } // along its own y axis, always
     bool operator()(Lathe&) const { return false; }  // about its own y axis, always
+    bool operator()(Superellipsoid&) const { return false; }  // in [-1, 1]^3 of its own coordinates, always
     bool operator()(SphereSet&) const { return false; }
 };
 
@@ -125,7 +126,8 @@ struct Absorber {
 void place(Object& o, const glm::dmat4& m) {
     if (m == glm::dmat4(1.0) && !std::holds_alternative<Mesh>(o.shape) && !std::holds_alternative<SphereSet>(o.shape) &&
         !std::holds_alternative<Sor>(o.shape) && !std::holds_alternative<Prism>(o.shape) &&
-        !std::holds_alternative<Lathe>(o.shape)) {
+        !std::holds_alternative<Lathe>(o.shape) &&
+        !std::holds_alternative<Superellipsoid>(o.shape)) {
         o.placement.reset();
         return;
     }

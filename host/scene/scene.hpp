@@ -429,6 +429,16 @@ struct Lathe {
     double r_max = 0.0, y_lo = 0.0, y_hi = 0.0;  // over every segment
 };
 
+// POV-Ray's superellipsoid { <e, n> }: g(x, y, z) = (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) <= 1,
+// in [-1, 1]^3 of its own coordinates (it is always placed), e and n in [0.001, 2]. There the
+// exponents p = 2/e and q = 2/n are at least 1, so F = g^(1/q), the q-norm of (the p-norm of
+// (x, y), z), is a norm: the solid F <= 1 is convex (a solid for CSG: its inside along a line is
+// one interval) and F along a ray is convex. Texture (u, v): x and y across the box [-1.01, 1.01]^2
+// ((x + 1.01) / 2.02, (y + 1.01) / 2.02), as when it was drawn as an implicit surface in that box.
+struct Superellipsoid {
+    double e = 1.0, n = 1.0;
+};
+
 struct Object;
 
 // Constructive solid geometry: POV-Ray's intersection, difference and merge (docs/scene-format.md,
@@ -445,7 +455,7 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Plane, Rectangle, Box, BezierSurface, ParametricObject, ImplicitObject, Disc, Cone, Torus, Csg, Mesh,
-                           SphereSet, Blob, Sor, Prism, Lathe>;
+                           SphereSet, Blob, Sor, Prism, Lathe, Superellipsoid>;
 
 // The alternatives of Shape are the shape registry's rows, in order: index() is the shape type.
 #define LANCER_SHAPE_ALTERNATIVE(NAME, name, Type, type, traits) \

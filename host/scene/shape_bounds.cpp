@@ -66,6 +66,7 @@ struct BoundsOf {
     std::optional<Aabb> operator()(const Lathe& o) const {  // its own coordinates (it is always placed)
         return Aabb{dvec3(-o.r_max, o.y_lo, -o.r_max), dvec3(o.r_max, o.y_hi, o.r_max)};
     }
+    std::optional<Aabb> operator()(const Superellipsoid&) const { return Aabb{dvec3(-1.0), dvec3(1.0)}; }  // its own coordinates
     std::optional<Aabb> operator()(const Mesh& m) const { return Aabb{m.geometry->lo(), m.geometry->hi()}; }  // the file's
     std::optional<Aabb> operator()(const SphereSet& s) const { return Aabb{s.cloud->lo(), s.cloud->hi()}; }
     std::optional<Aabb> operator()(const ParametricObject& p) const { return Aabb{p.bounds_lo, p.bounds_hi}; }

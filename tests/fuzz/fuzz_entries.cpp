@@ -204,6 +204,9 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     }
                     require(std::isfinite(s.r_max) && s.r_max > 0.0, when, ": lathe radius");
                     require(o.placement && o.placement->shape_in_object_space, when, ": a lathe is always placed");
+                } else if constexpr (std::is_same_v<T, Superellipsoid>) {
+                    require(s.e >= 0.001 && s.e <= 2.0 && s.n >= 0.001 && s.n <= 2.0, when, ": superellipsoid exponents");
+                    require(o.placement && o.placement->shape_in_object_space, when, ": a superellipsoid is always placed");
                 } else if constexpr (std::is_same_v<T, Mesh>) {
                     require(s.geometry && !s.geometry->mesh().triangles.empty(), when, ": mesh without triangles");
                     const TriangleMesh& m = s.geometry->mesh();

@@ -1,4 +1,5 @@
-// POV-Ray's superellipsoid (read as an implicit surface, scene/parse_implicit_solids.cpp) and
+// POV-Ray's superellipsoid (a shape of its own, scene/parse_superellipsoid.cpp,
+// shaders/shapes/superellipsoid.glsl, cpu/shapes/superellipsoid.cpp) and
 // blob (a shape of its own, scene/parse_blob.cpp, shaders/shapes/blob.glsl, cpu/shapes/blob.cpp),
 // against the shapes they must be: the superellipsoid with e = n = 1 is the sphere, with
 // e = n = 0.001 the cube to within 0.06% of its size; a blob of one component is the sphere where
@@ -41,8 +42,8 @@ TEST(Superellipsoid, SmallExponentsAreTheCube) {
                  "type = \"box\"\nmin = [-1, -1, -1]\nmax = [1, 1, 1]\n" + turn);
 }
 
-// Mixed exponents are not polynomials: the CPU reference's interval Newton and the GPU's search
-// still agree (e = 0.3, n = 1.7: a pinched, rounded block).
+// Mixed exponents (e = 0.3, n = 1.7: a pinched, rounded block): the GPU's Newton search in float
+// and the CPU reference's, bracketed in double, agree.
 TEST(Superellipsoid, MixedExponentsRenderAsTheReferenceDoes) {
     const Scene scene = test::scene_from_text(std::string(test::kTwinStage) +
                                               "type = \"superellipsoid\"\ne = 0.3\nn = 1.7\n"

@@ -271,6 +271,19 @@ const char* const kLathe =
 // A linear lathe: a cup's polygon (corners at its rim and foot), closed on itself.
 const char* const kLatheCup = "type = \"lathe\"\npoints = [[0, -1], [0.9, -1], [1.1, 1], [0.9, 1], [0.7, -0.6], [0, -0.6], [0, -1]]\n";
 
+// Superellipsoids, always traced in their own coordinates: a rounded block (mixed exponents,
+// stretched and turned), a near-cube (exponents of 2000: flat faces, edges of 1/2000 of its
+// size) and a round slab (a cylinder's side, near-flat ends). All with e, n <= 1, where the
+// surface is smooth (C2). Above 1 its curvature is infinite along the coordinate planes (at 2 a
+// kink: the octahedron's edges), and grazing rays there fail the clearance check as at an edge:
+// an origin offset along the normal on one side of the ridge has the other side nearer (29 of
+// 300 grazing rays for e = n = 2, 1 of 300 for e = 0.3, n = 1.7): not yet resolved.
+const char* const kSuperellipsoid =
+    "type = \"superellipsoid\"\ne = 0.3\nn = 0.8\ntransform = { scale = [1.3, 0.8, 1.1], rotate = [10, 30, 20], "
+    "translate = [0.2, -0.1, 0.3] }\n";
+const char* const kSuperellipsoidCube = "type = \"superellipsoid\"\ne = 0.001\nn = 0.001\ntransform = { rotate = [20, 35, 5] }\n";
+const char* const kSuperellipsoidSlab = "type = \"superellipsoid\"\ne = 1\nn = 0.05\ntransform = { rotate = [20, 35, 5] }\n";
+
 // A blob: two spheres and a cylinder merged, a negative sphere biting into them (the field's
 // quartic changes from stretch to stretch where the ray enters or leaves a component or crosses
 // the cylinder's end planes). The far rays found the cylinder's support computed from the ray's
@@ -341,6 +354,12 @@ const Case kCases[] = {
     {"lathe_cup", [] { return analytic(kLatheCup); }},
     {"lathe_cup_far_from_origin", [] { return moved_far(analytic(kLatheCup)); }},
     {"lathe_stretched", [] { return analytic(std::string(kLathe) + kStretch); }},
+    {"superellipsoid", [] { return analytic(kSuperellipsoid); }},
+    {"superellipsoid_far_from_origin", [] { return moved_far(analytic(kSuperellipsoid)); }},
+    {"superellipsoid_cube", [] { return analytic(kSuperellipsoidCube); }},
+    {"superellipsoid_cube_far_from_origin", [] { return moved_far(analytic(kSuperellipsoidCube)); }},
+    {"superellipsoid_slab", [] { return analytic(kSuperellipsoidSlab); }},
+    {"superellipsoid_slab_far_from_origin", [] { return moved_far(analytic(kSuperellipsoidSlab)); }},
     {"blob", [] { return analytic(kBlob); }},
     {"blob_far_from_origin", [] { return moved_far(analytic(kBlob)); }},
     {"blob_stretched", [] { return analytic(std::string(kBlob) + kStretch); }},

@@ -33,6 +33,10 @@ bool leaf_contains(const Object& leaf, dvec3 p) {
         const double R = o->major_radius, r = o->minor_radius, s = glm::dot(q, q) + R * R - r * r;
         return s * s < 4.0 * R * R * rho2;
     }
+    if (const auto* s = std::get_if<Superellipsoid>(&leaf.shape)) {  // POV-Ray's g < 1, as written
+        const double a = 2.0 / s->e, b = 2.0 / s->n;
+        return std::pow(std::pow(std::abs(p.x), a) + std::pow(std::abs(p.y), a), b / a) + std::pow(std::abs(p.z), b) < 1.0;
+    }
     if (const auto* i = std::get_if<ImplicitObject>(&leaf.shape))
         return surface::evaluate_implicit(i->surface, dvec3(i->surface.to_local * glm::dvec4(p, 1.0))).f < 0.0;
     if (const auto* o = std::get_if<Prism>(&leaf.shape)) {  // even-odd over straight outlines: crossings along +x
@@ -139,6 +143,23 @@ TEST(Csg, HalfSpacesStretchedSolidsMergesAndInverses) {
           { type = "plane", normal = [1, 1, 0], point = [0.3, 0, 0] },
           { type = "box", min = [-0.3, -0.3, -2], max = [0.3, 0.3, 2], inverse = true },
           { type = "cone", base_point = [0, 0, -1.5], base_radius = 1.6, cap_point = [0, 0, 1.5], cap_radius = 0.4 },
+        ]
+    )");
+}
+
+// Superellipsoids are convex solids of their own (one interval inside along a line): a cube-like
+// one (exponents of 40 and 2000) less a rounded one, merged with a pinched one (e = 2: straight
+// edges, kinks of |x| along the axes).
+TEST(Csg, SuperellipsoidsAreSolids) {
+    expect_membership_agrees(R"(
+        [[object]]
+        type = "merge"
+        transform = { rotate = [15, 30, 5] }
+        objects = [
+          { type = "difference", objects = [
+              { type = "superellipsoid", e = 0.05, n = 0.001 },
+              { type = "superellipsoid", e = 1, n = 0.5, transform = { scale = 0.8, translate = [0.5, 0.6, -0.7] } } ] },
+          { type = "superellipsoid", e = 2, n = 1.5, transform = { scale = [0.6, 1.3, 0.6], translate = [0.3, 0, 0.4] } },
         ]
     )");
 }

@@ -58,6 +58,12 @@ std::optional<SurfaceHit> intersect(const Prism& o, const Ray& ray, double t_min
 // subdivision (certified, as the torus's), t then from y(s) or, for a ray more across the axis
 // than along it, from the circle of radius r(s). uv = (segment, s). Any ray direction length.
 std::optional<SurfaceHit> intersect(const Lathe& o, const Ray& ray, double t_min, double t_max);
+// The nearest hit on the superellipsoid (superellipsoid.cpp), in its own coordinates: F, the
+// q-norm of (the p-norm of (x, y), z), is convex along the ray, so Newton's method from the box's
+// entry (its exit for the far root) closes on the root from outside without passing it; the root
+// is then bracketed (F > 1 on one side, F < 1 on the other) and refined to double precision. A
+// ray along which F's tangent turns upward while F > 1 misses. Any ray direction length.
+std::optional<SurfaceHit> intersect(const Superellipsoid& o, const Ray& ray, double t_min, double t_max);
 // Certified (interval Newton) search for the nearest root; `normal` is surface_normal() there
 // and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
 std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
@@ -148,6 +154,7 @@ glm::dvec2 texture_uv(const Disc& d, const dvec3& p);
 glm::dvec2 texture_uv(const Cone& c, const dvec3& p, int part);
 glm::dvec2 texture_uv(const Torus& o, const dvec3& p);
 glm::dvec2 texture_uv(const Blob& o, const dvec3& p);  // x and y across its box
+glm::dvec2 texture_uv(const Superellipsoid& o, const dvec3& p);  // x and y across [-1.01, 1.01]^2
 glm::dvec2 texture_uv(const Sor& o, const dvec3& p);   // the angle about y, the height from bottom to top
 glm::dvec2 texture_uv(const Prism& o, const dvec3& p); // (x, z): planar
 glm::dvec2 texture_uv(const Lathe& o, const dvec3& p, const glm::dvec2& hit_uv);  // the angle, POV-Ray's v

@@ -351,6 +351,13 @@ struct PrimitivePacker {
              vec4(float(o.segments.size()), o.closed ? 1.0f : 0.0f, 0.0f, 0.0f), {}},
             shape_bounds(o));
     }
+    // One primitive, in its own coordinates (always placed): p0 = (p, q, 1 / p, 1 / q), the
+    // exponents 2 / e and 2 / n and their inverses.
+    void operator()(const Superellipsoid& o) {
+        const double p = 2.0 / o.e, q = 2.0 / o.n;
+        add({SHAPE_SUPERELLIPSOID, material, 0, object, vec4(float(p), float(q), float(1.0 / p), float(1.0 / q)), {}, {}},
+            shape_bounds(o));
+    }
     void operator()(const Box& b) { add({SHAPE_BOX, material, 0, object, v4(b.min), v4(b.max), {}}, shape_bounds(b)); }
 
     // Each cell of the surface's domain is a primitive with the cell's proved box; the surface
