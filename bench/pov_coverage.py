@@ -30,13 +30,12 @@ POV_SHAPES = {
 # equations, parametric surfaces, Bezier patches), groups for union and its CSG. (A scene whose
 # CSG combines shapes lancer's CSG does not take yet, tori or isosurfaces, still counts: the
 # count is of words, as the figure.) POV-Ray's meshes (mesh, mesh2 and their triangles)
-# are lancer's meshes, whose triangles come from an OBJ or PLY file. Superellipsoids and blobs
-# are implicit surfaces in lancer (a blob of at most about 18 components: its function's
-# operations are limited).
+# are lancer's meshes, whose triangles come from an OBJ or PLY file. Superellipsoids, blobs,
+# sors, lathes, prisms and text are shapes of their own, exact.
 LANCER = {
     "sphere", "box", "plane", "disc", "cylinder", "cone", "torus", "union", "intersection", "difference", "merge",
     "bicubic_patch", "parametric", "isosurface", "poly", "polynomial", "quartic", "cubic", "quadric",
-    "mesh", "mesh2", "triangle", "smooth_triangle", "superellipsoid", "blob",
+    "mesh", "mesh2", "triangle", "smooth_triangle", "superellipsoid", "blob", "sor", "lathe", "prism", "text",
 }
 
 

@@ -39,8 +39,9 @@
 #
 # Solids of the solids issue (suite `solids`, not in `all`): a blob of thousands of components
 # (bench/make_blob_field.py's rippled pool of 4,900 sphere components and a crown of 72 droplets,
-# written into bench/out/) and scenes/chess.toml (surfaces of revolution, CSG over them), against
-# their POV-Ray twins (bench/toml_to_pov.py).
+# written into bench/out/), scenes/chess.toml (surfaces of revolution, CSG over them) and
+# bench/extrusions.toml (prisms of each spline and a conic sweep, lathes, text), against their
+# POV-Ray twins (bench/toml_to_pov.py).
 #
 # Installs POV-Ray (and GNU time) with apt-get when missing: the benchmark's own setup, not the
 # main one.
@@ -283,7 +284,7 @@ if [ "$suite" = mesh ] || [ "$suite" = shapes ] || [ "$suite" = solids ]; then
   [ "$suite" = shapes ] && names=shapes
   if [ "$suite" = solids ]; then
     python3 bench/make_blob_field.py >"$out/blob_field.toml"
-    names="out/blob_field ../scenes/chess"
+    names="out/blob_field ../scenes/chess extrusions"
   fi
   printf '| scene | size | rays/pixel | renderer | wall s | render s | Mrays/s | peak MiB | POV wall / this |\n'
   printf '|---|---|---|---|---|---|---|---|---|\n'
