@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
+#include "gpu/vulkan/driver_quirks.hpp"
 #include "support/test_support.hpp"
 #include "support/twin_stage.hpp"
 
@@ -98,8 +100,17 @@ TEST(Lathe, GlassBendsLightAsTheReferenceDoes) {
         "[0.3, 1.05], [0.45, 1], [0.35, 0.4], [0.8, -0.3], [0.7, -0.9], [0, -1], [0, -1.2]]\n";
     for (const auto& [name, lathe] : {std::pair{"lathe-glass", kLatheVase}, std::pair{"lathe-glass-reversed", reversed}}) {
         const Scene scene = test::scene_from_text(std::string(test::kGlassStage) + lathe);
-        test::expect_same_picture(name, to_srgb8(test::render_on(test::Backend::Gpu, scene)),
-                                  to_srgb8(test::render_on(test::Backend::Cpu, scene)));
+        FloatImage gpu;
+        try {
+            gpu = test::render_on(test::Backend::Gpu, scene);
+        } catch (const UserError& e) {
+            // Mesa 22.3's lavapipe ends an invocation's loops after 65535 iterations in all, fewer
+            // than the vase's deep glass paths take: there lancer refuses, never draws it wrong.
+            EXPECT_TRUE(gpu::limits_loop_iterations(test::gpu_renderer().context().info())) << e.what();
+            EXPECT_NE(std::string(e.what()).find("more loop iterations than"), std::string::npos) << e.what();
+            continue;
+        }
+        test::expect_same_picture(name, to_srgb8(gpu), to_srgb8(test::render_on(test::Backend::Cpu, scene)));
     }
 }
 
