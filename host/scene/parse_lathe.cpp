@@ -32,19 +32,9 @@ struct LathePoint {
 enum class LatheSpline { Linear, Quadratic, Cubic, Bezier };
 
 std::vector<LathePoint> read_lathe_points(TableReader& t) {
-    const toml::array* list = t.array("points");
-    if (!list) t.fail("type", "a lathe needs points = [[radius, height], ...] (as POV-Ray's lathe)");
     std::vector<LathePoint> points;
-    for (std::size_t i = 0; i < list->size(); ++i) {
-        const toml::node& node = *list->get(i);
-        const SourceLocation at = location_of(node, t.file());
-        const toml::array* pair = node.as_array();
-        const std::string what = fmt::format("{} points[{}]", t.what(), i);
-        if (!pair || pair->size() != 2) throw SceneError(at, what + ": expected [radius, height]");
-        const double r = node_number(*pair->get(0), t.file(), what + " radius");
-        const double y = node_number(*pair->get(1), t.file(), what + " height");
-        points.push_back({r, y, at});
-    }
+    for (const PointAt& q : read_point_list(t, "points", "radius", "height", "a lathe needs points = [[radius, height], ...] (as POV-Ray's lathe)"))
+        points.push_back({q.p.x, q.p.y, q.at});
     return points;
 }
 

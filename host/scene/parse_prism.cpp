@@ -19,10 +19,7 @@
 namespace lancer {
 namespace {
 
-struct PrismPoint {
-    glm::dvec2 p;
-    SourceLocation at;
-};
+using PrismPoint = PointAt;
 
 // POV-Ray's test of a repeated point (its EPSILON); the repeat is then taken as the very point.
 bool prism_same_point(const glm::dvec2& a, const glm::dvec2& b) {
@@ -30,19 +27,7 @@ bool prism_same_point(const glm::dvec2& a, const glm::dvec2& b) {
 }
 
 std::vector<PrismPoint> read_prism_points(TableReader& t) {
-    const toml::array* list = t.array("points");
-    if (!list) t.fail("type", "a prism needs points = [[x, z], ...] (its outline, as POV-Ray's prism's)");
-    std::vector<PrismPoint> points;
-    for (std::size_t i = 0; i < list->size(); ++i) {
-        const toml::node& node = *list->get(i);
-        const SourceLocation at = location_of(node, t.file());
-        const toml::array* pair = node.as_array();
-        const std::string what = fmt::format("{} points[{}]", t.what(), i);
-        if (!pair || pair->size() != 2) throw SceneError(at, what + ": expected [x, z]");
-        points.push_back({glm::dvec2(node_number(*pair->get(0), t.file(), what + " x"), node_number(*pair->get(1), t.file(), what + " z")),
-                          at});
-    }
-    return points;
+    return read_point_list(t, "points", "x", "z", "a prism needs points = [[x, z], ...] (its outline, as POV-Ray's prism's)");
 }
 
 PrismSegment prism_line_segment(const glm::dvec2& a, const glm::dvec2& b) {

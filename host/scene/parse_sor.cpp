@@ -21,17 +21,13 @@ struct SorPoint {
 };
 
 std::vector<SorPoint> read_points(TableReader& t) {
-    const toml::array* list = t.array("points");
-    if (!list) t.fail("type", "a sor needs points = [[radius, height], ...] (at least 4, as POV-Ray's sor)");
+    const std::vector<PointAt> list =
+        read_point_list(t, "points", "radius", "height", "a sor needs points = [[radius, height], ...] (at least 4, as POV-Ray's sor)");
     std::vector<SorPoint> points;
-    for (std::size_t i = 0; i < list->size(); ++i) {
-        const toml::node& node = *list->get(i);
-        const SourceLocation at = location_of(node, t.file());
-        const toml::array* pair = node.as_array();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const double r = list[i].p.x, y = list[i].p.y;
+        const SourceLocation& at = list[i].at;
         const std::string what = fmt::format("{} points[{}]", t.what(), i);
-        if (!pair || pair->size() != 2) throw SceneError(at, what + ": expected [radius, height]");
-        const double r = node_number(*pair->get(0), t.file(), what + " radius");
-        const double y = node_number(*pair->get(1), t.file(), what + " height");
         if (!(r >= 0.0)) throw SceneError(at, fmt::format("{}: a radius must not be negative, not {:g}", what, r));
         if (!points.empty() && !(y > points.back().y))
             throw SceneError(at, fmt::format("{}: heights must increase from point to point ({:g} follows {:g}), as "

@@ -56,6 +56,25 @@ double node_number(const toml::node& node, const std::string& file, const std::s
     return value;
 }
 
+std::vector<PointAt> read_point_list(TableReader& t, std::string_view key, const char* a, const char* b,
+                                     const std::string& missing) {
+    const toml::array* list = t.array(key);
+    if (!list) t.fail("type", missing);
+    std::vector<PointAt> points;
+    points.reserve(list->size());
+    for (std::size_t i = 0; i < list->size(); ++i) {
+        const toml::node& node = *list->get(i);
+        const SourceLocation at = location_of(node, t.file());
+        const toml::array* pair = node.as_array();
+        const std::string what = fmt::format("{} {}[{}]", t.what(), key, i);
+        if (!pair || pair->size() != 2) throw SceneError(at, fmt::format("{}: expected [{}, {}]", what, a, b));
+        points.push_back({glm::dvec2(node_number(*pair->get(0), t.file(), what + " " + a),
+                                     node_number(*pair->get(1), t.file(), what + " " + b)),
+                          at});
+    }
+    return points;
+}
+
 dvec3 node_vec3(const toml::node& node, const std::string& file, const std::string& what) {
     if (SceneValues* values = current_scene_values(); values && node.is_string()) {  // a defined vector or a colour's name
         const std::string& name = node.as_string()->get();

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <toml++/toml.h>
 
 #include "core/closest_match.hpp"
@@ -77,6 +78,15 @@ double node_number(const toml::node& node, const std::string& file, const std::s
 dvec3 node_vec3(const toml::node& node, const std::string& file, const std::string& what);
 // A string without NUL characters (an error at the NUL's position otherwise).
 std::string node_string(const toml::node& node, const std::string& file, const std::string& what);
+
+// A list of 2-D points, key = [[a, b], ...] (a sor's, a lathe's, a prism's outline), each with
+// where it is: `a` and `b` name the coordinates in messages, `missing` is the message without the key.
+struct PointAt {
+    glm::dvec2 p;
+    SourceLocation at;
+};
+std::vector<PointAt> read_point_list(TableReader& t, std::string_view key, const char* a, const char* b,
+                                     const std::string& missing);
 
 // Calls fn(table, index) for each element of an array of tables ([[light]], [[object]]), and
 // fails at an element that is not a table.
