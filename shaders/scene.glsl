@@ -82,6 +82,24 @@ bool leaf_inside(Primitive p, Ray world_ray, float t) {
     return false;
 }
 
+// Whether the world ray enters a walked CSG leaf's solid at its root t (uv: leaf_hit's there): 1
+// where its outward normal faces the ray, 0 where it faces away, -1 where the ray grazes it or
+// the family's normals are not known to face out (the implicit surfaces). Not asked of the torus:
+// its walk went slower for it (scenes/cutaway.toml; docs/performance.md).
+int leaf_root_side(Primitive p, Ray world_ray, float t, vec2 uv) {
+    float k, error;
+    Ray ray = primitive_ray(p, world_ray, k);
+    t *= k;
+    vec3 point = ray.origin + t * ray.dir, n = vec3(0.0);
+    if (p.type == SHAPE_BLOB) n = CSG_HAS_BLOB ? blob_hit_normal(p, ray, t, point, uv, error) : n;
+    if (p.type == SHAPE_SOR) n = CSG_HAS_SOR ? sor_hit_normal(p, ray, t, point, uv, error) : n;
+    if (p.type == SHAPE_PRISM) n = CSG_HAS_PRISM ? prism_hit_normal(p, ray, t, point, uv, error) : n;
+    if (p.type == SHAPE_LATHE) n = CSG_HAS_LATHE ? lathe_hit_normal(p, ray, t, point, uv, error) : n;
+    float along = dot(n, ray.dir);
+    if (!(abs(along) > 1e-3 * length(ray.dir))) return -1;
+    return along < 0.0 ? 1 : 0;
+}
+
 #include "shapes/csg.glsl"
 
 // uv: the surface's own parameters at the hit, for shapes that have them; error: the error bound

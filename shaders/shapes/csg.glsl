@@ -8,7 +8,8 @@
 // surfaces that close a solid (SHAPE_ORIENTED: closed meshes, Bezier and parametric surfaces
 // declared closed), each stretch inside where the ray entered at its start, by the normal's side
 // there (csg_crossing). A walked leaf holds one interval at a time, the next found once the ray
-// passes its end. The combination's surface
+// passes its end; an interval the ray enters is held open, its end found only once the ray
+// passes its entry (csg_walk). The combination's surface
 // is the first end of an interval, beyond t_min, where the program's value changes: comparing
 // ends, not counting crossings, stays exact where a ray grazes a leaf (an interval of no length
 // changes nothing). A hit is the leaf's: uv = (the leaf's primitive, 0 at a convex leaf's
@@ -112,12 +113,18 @@ bool csg_crossing(Primitive leaf, Ray world_ray, float t_min, float t_max, out f
 // ball, the implicit surfaces' 1e-6 of their boxes), and beyond float's at a.
 float csg_walk_gap(Primitive node, float a) { return max(4e-6 * length(node.p1.xyz - node.p0.xyz), 5e-7 * abs(a)); }
 
-// A walked leaf's first interval inside that ends after `after`, walking from `from` (a root of
-// it, or -INFINITY: the line's start); empty where none.
-vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, float from, float after) {
+// A walked leaf's first interval inside that ends after `after`, walking on from its interval
+// `now` (empty at first: from the line's start; opened: from its start); empty where none. An
+// interval whose entry the leaf's normal vouches for (leaf_root_side, csg_crossing) is returned
+// opened, (entry, INFINITY), its end found only if the combination's surface is not at its entry
+// (csg_intersect): most rays stop there, one search instead of three. A stretch is inside by
+// leaf_inside at its middle; a normal only ever decides the stretch it opens or closes, so that a
+// ray grazing a corner, whose second root lies within the gap, cannot carry a wrong side on.
+vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, vec2 now, float after) {
     vec2 span = vec2(INFINITY, -INFINITY);
-    float a = from;
-    bool entered = false;  // a surface that closes a solid: inside after a, where the ray entered it at a
+    bool opened = now.y == INFINITY;
+    float a = opened ? now.x : now.y;
+    bool entered = opened;  // a surface that closes a solid: inside after a, where the ray entered it at a
     for (int i = 0; i < CSG_WALK_ROOTS; ++i) {
         float b, error;
         vec2 uv;
@@ -128,13 +135,19 @@ vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, float from, float after) 
         else more = leaf_hit(leaf, ray, start, INFINITY, b, uv, error);
         bool inside = csg_crossed(leaf) ? entered : a != -INFINITY && leaf_inside(leaf, ray, 0.5 * (a + b));
         entered = !leaving;
+        int side = !more ? -1 : (csg_crossed(leaf) ? (leaving ? 0 : 1) : leaf_root_side(leaf, ray, b, uv));
         if (more && inside) {
             span = span.x < span.y ? vec2(span.x, b) : vec2(a, b);  // adjacent stretches inside join
+            if (side == 0) {  // left
+                if (b > after) return span;
+                span = vec2(INFINITY, -INFINITY);
+            }
         } else if (span.x < span.y) {
             if (span.y > after) return span;
             span = vec2(INFINITY, -INFINITY);
         }
         if (!more) break;
+        if (side == 1 && !(span.x < span.y) && b > after) return vec2(b, INFINITY);
         a = b;
     }
     return span;
@@ -201,7 +214,7 @@ bool csg_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_h
         if (CSG_MAY_WALK) {
             for (; walk != 0u; walk &= walk - 1u) {  // one call: lavapipe inlines each
                 uint k = uint(findLSB(walk));
-                inside[k] = csg_walk(p, primitive_at(node.first_leaf + k), ray, inside[k].y, t);
+                inside[k] = csg_walk(p, primitive_at(node.first_leaf + k), ray, inside[k], t);
             }
         }
         float next = t_max, end = 0.0;
@@ -211,6 +224,13 @@ bool csg_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_h
             if (!(span.x < span.y)) continue;
             if (span.x > t && span.x < next) { next = span.x; leaf = k; end = 0.0; }
             if (span.y > t && span.y < next) { next = span.y; leaf = k; end = 1.0; }
+        }
+        if (CSG_MAY_WALK) {  // an opened interval begun before the next end may end before it: its end first
+            for (uint w = walked; w != 0u; w &= w - 1u) {
+                uint k = uint(findLSB(w));
+                if (inside[k].y == INFINITY && inside[k].x < next) walk |= 1u << k;
+            }
+            if (walk != 0u) continue;
         }
         if (leaf == NO_PRIMITIVE) return false;
         if (csg_value(node, inside, next, false) != csg_value(node, inside, next, true)) {
@@ -242,8 +262,11 @@ uint csg_leaf_hit(Primitive node, Ray ray, float t, vec2 csg_uv, out vec2 uv, in
     }
     if (walked || p.type != SHAPE_PLANE) {
         float t_leaf, leaf_error;
-        float from = walked ? t - csg_walk_gap(node, t) : -INFINITY;
-        bool found = leaf_hit(p, csg_uv.y == 1.0 ? Ray(ray.origin, -ray.dir) : ray, from, INFINITY, t_leaf, uv, leaf_error);
+        // A walked root is looked for again within the gap about it, where few of the leaf's
+        // pieces reach.
+        float gap = csg_walk_gap(node, t);
+        float from = walked ? t - gap : -INFINITY, to = walked ? t + gap : INFINITY;
+        bool found = leaf_hit(p, csg_uv.y == 1.0 ? Ray(ray.origin, -ray.dir) : ray, from, to, t_leaf, uv, leaf_error);
         if (found && walked) error = max(error, leaf_error + abs(t_leaf - t));
     }
     return leaf;
