@@ -200,7 +200,7 @@ TEST(TomlBatches, ErrorsInLateBatchesNameTheWholeParsesPlace) {
              many_spheres_with(11, "radius = \n"),                   // TOML's
              many_spheres_with(9, "radius = 1\nname = \"\"\n"),    // the names' check, after all objects
              many_spheres_with(2, "radius = 1\nname = \"a\"\n") + sphere(0, "name = \"a\"\n"),
-             "[render]\nwidth = -5\n" + many_spheres_with(11, "radius = [\n"),  // TOML's error is reported first
+             "[render]\nwidth = -5\n" + many_spheres_with(11, "radius = nope\n"),  // TOML's error is reported first
          }) {
         const std::string expected = whole_error(text, "late.toml");
         ASSERT_NE(expected, "") << text;
