@@ -10,7 +10,7 @@ namespace lancer::cpu {
 
 Appearance appearance_at(const Material& m, const Hit& hit, const dvec3& p, const dvec3& n) {
     // Checkers and patterns are fixed to the object: evaluated at its own coordinates.
-    const std::optional<Placement>& placed = hit.object->placement;
+    const HeapOptional<Placement>& placed = hit.object->placement;
     const dvec3 q = placed ? placed->object_point(p) : p;
     // A smooth mesh shades with its interpolated vertex normals; a bump tilts that.
     const auto* mesh = std::get_if<Mesh>(&hit.object->shape);

@@ -12,7 +12,7 @@ namespace lancer::cpu {
 
 glm::dvec2 texture_uv(const Hit& hit, const dvec3& world_point) {
     // A shape kept in its own coordinates (an ellipsoid, a turned box) is mapped there.
-    const std::optional<Placement>& placed = hit.object->placement;
+    const HeapOptional<Placement>& placed = hit.object->placement;
     const bool local = placed && placed->shape_in_object_space;
     const dvec3 p = local ? placed->object_point(world_point) : world_point;
     const dvec3 normal = local ? glm::normalize(glm::transpose(glm::dmat3(placed->to_world)) * hit.normal) : hit.normal;

@@ -2,8 +2,11 @@
 
 #include <cerrno>
 #include <cstring>
+#include <deque>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <future>
 #include <map>
 #include <optional>
 
@@ -14,6 +17,7 @@
 #include "image/adaptive.hpp"
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
+#include "scene/object_batches.hpp"
 #include "scene/parse_animation.hpp"
 #include "scene/parse_lights.hpp"
 #include "scene/parse_material_maps.hpp"
@@ -158,17 +162,17 @@ PhotonSettings photon_defaults(const CameraSpec& camera) {
     return p;
 }
 
-Scene parse_scene(std::string_view text, const std::string& path, SceneTime time) {
-    SourceTextScope source(path, text);  // for messages pointing inside strings (expressions)
-    SceneValues values(time);
-    SceneValuesScope values_scope(values);
-    toml::table root;
-    try {
-        root = toml::parse(text, path);
-    } catch (const toml::parse_error& e) {
-        throw SceneError(location_of(e.source(), path), std::string(e.description()));
-    }
+namespace {
 
+// Objects per batch of a scene read in batches: a few MiB of TOML tree each.
+constexpr std::size_t kObjectsPerBatch = 4096;
+
+// Reads the [[object]] entries (from the root's array, or in batches) with `entries`; the
+// entries' names where it checked them itself (EntryNames), else nullptr.
+using ObjectsReading = std::function<const EntryNames*(TableReader& top, ObjectEntries& entries)>;
+
+// The scene from its root table, its objects read by `read_entries`.
+Scene read_scene(const toml::table& root, const std::string& path, SceneValues& values, const ObjectsReading& read_entries) {
     Scene scene;
     scene.path = path;
     TableReader top(root, path, "scene");
@@ -263,9 +267,9 @@ Scene parse_scene(std::string_view text, const std::string& path, SceneTime time
     }
 
     const MaterialReader read_inline = [&](TableReader& m, const std::string& name) { return read_material(m, name, textures); };
-    const std::vector<std::size_t> entry_starts =
-        read_objects(top, material_index, read_inline, default_material, scene, textures);
-    read_animation(top, root, scene, entry_starts);
+    ObjectEntries entries(top, material_index, read_inline, default_material, scene, textures);
+    const EntryNames* object_names = read_entries(top, entries);
+    read_animation(top, root, scene, entries.starts(), object_names);
     top.finish();
     if (scene.photons) {
         check_photon_lights(scene);
@@ -277,6 +281,84 @@ Scene parse_scene(std::string_view text, const std::string& path, SceneTime time
     }
     scene.depends_on_time = values.uses_time();
     return scene;
+}
+
+Scene parse_whole(std::string_view text, const std::string& path, SceneTime time) {
+    SceneValues values(time);
+    SceneValuesScope values_scope(values);
+    toml::table root;
+    try {
+        root = toml::parse(text, path);
+    } catch (const toml::parse_error& e) {
+        throw SceneError(location_of(e.source(), path), std::string(e.description()));
+    }
+    return read_scene(root, path, values, [](TableReader& top, ObjectEntries& entries) -> const EntryNames* {
+        const toml::array* objects = top.array("object");
+        if (!objects) return nullptr;
+        if (objects->size() > static_cast<std::size_t>(limits::kMaxObjects))
+            top.fail("object", "too many objects (the limit is " + std::to_string(limits::kMaxObjects) + ")");
+        entries.read(*objects, top.file());
+        return nullptr;
+    });
+}
+
+// Batches parsed ahead of the one being read, each on a thread of its own: parsing takes about
+// twice as long as reading, so two keep a second core busy while the first reads.
+constexpr std::size_t kParsesAhead = 2;
+
+// Calls read(tree, batch) for each batch in order, its TOML tree parsed on another thread.
+template <class Read>
+void for_each_batch(std::string_view text, const SceneTextParts& parts, const std::string& path, Read read) {
+    const auto parse = [&](std::size_t i) {
+        const ObjectBatch& b = parts.batches[i];
+        return toml::parse(text.substr(b.begin, b.end - b.begin), std::string_view(path));
+    };
+    std::deque<std::future<toml::table>> ahead;
+    std::size_t launched = 0;
+    const auto launch = [&] { ahead.push_back(std::async(std::launch::async, parse, launched++)); };
+    while (launched < parts.batches.size() && ahead.size() < kParsesAhead) launch();
+    for (std::size_t i = 0; i < parts.batches.size(); ++i) {
+        toml::table tree = ahead.front().get();
+        ahead.pop_front();
+        if (launched < parts.batches.size()) launch();
+        read(tree, parts.batches[i]);
+    }
+}
+
+}  // namespace
+
+Scene parse_scene_batches(std::string_view text, const SceneTextParts& parts, const std::string& path, SceneTime time) {
+    if (parts.objects > static_cast<std::size_t>(limits::kMaxObjects))
+        throw UserError("too many objects (the limit is " + std::to_string(limits::kMaxObjects) + ")");
+    SceneValues values(time);
+    SceneValuesScope values_scope(values);
+    const toml::table head = toml::parse(std::string_view(parts.head), std::string_view(path));
+    EntryNames names("object");
+    return read_scene(head, path, values, [&](TableReader&, ObjectEntries& entries) -> const EntryNames* {
+        entries.reserve(parts.objects);
+        for_each_batch(text, parts, path, [&](const toml::table& tree, const ObjectBatch& batch) {
+            const FilePartScope part(tree, batch.first_line);
+            const toml::array& objects = *tree.get_as<toml::array>("object");
+            entries.read(objects, path);
+            names.add(objects, path);
+        });
+        return &names;
+    });
+}
+
+Scene parse_scene(std::string_view text, const std::string& path, SceneTime time, TomlReading reading) {
+    SourceTextScope source(path, text);  // for messages pointing inside strings (expressions)
+    if (reading == TomlReading::Batches) {
+        if (const std::optional<SceneTextParts> parts = split_object_tables(text, kObjectsPerBatch)) {
+            try {
+                return parse_scene_batches(text, *parts, path, time);
+            } catch (const UserError&) {
+                // The whole parse reports it: its first error, where it is.
+            } catch (const toml::parse_error&) {
+            }
+        }
+    }
+    return parse_whole(text, path, time);
 }
 
 Scene load_scene(const std::string& path, SceneTime time) {

@@ -3,6 +3,7 @@
 #include <string>
 #include <string_view>
 
+#include "scene/object_batches.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_values.hpp"
 
@@ -12,8 +13,19 @@ namespace lancer {
 // problem is a SceneError at file:line:col; an unreadable file is a UserError.
 Scene load_scene(const std::string& path, SceneTime time = {});
 
+// How parse_scene reads the TOML: the whole document as one tree, or its head (all but its
+// [[object]] tables) and then its objects in batches, one batch's tree at a time
+// (object_batches.hpp). Both give the same Scene and the same errors: a file the batches cannot
+// be sure to read alike, and any error, is read whole.
+enum class TomlReading { Whole, Batches };
+
 // The same from text already in memory; `path` is used for messages only.
-Scene parse_scene(std::string_view text, const std::string& path, SceneTime time = {});
+Scene parse_scene(std::string_view text, const std::string& path, SceneTime time = {},
+                  TomlReading reading = TomlReading::Batches);
+
+// The reading in batches alone, without the whole parse behind it: any error is thrown as it
+// is found (which error comes first may differ from the whole parse's). For tests.
+Scene parse_scene_batches(std::string_view text, const SceneTextParts& parts, const std::string& path, SceneTime time = {});
 
 // Photon mapping's settings where a scene gives none ([photons] keys left out, or --photons on
 // a scene without the table): radii scaled to the distance from the camera to what it looks at.

@@ -21,27 +21,12 @@ namespace {
 
 using NameIndex = std::map<std::string, std::size_t, std::less<>>;
 
-// Names of the entries of a top-level array ([[light]], [[object]]); a name used twice is an
-// error at its second use, so that a reference can never be ambiguous.
+// The names of the entries of a top-level array of `root`.
 NameIndex index_names(const toml::table& root, std::string_view array_key, std::string_view what,
                       const std::string& file) {
-    NameIndex names;
-    const toml::array* array = root[array_key].as_array();
-    if (!array) return names;
-    std::map<std::string, SourceLocation, std::less<>> first_use;
-    for (std::size_t i = 0; i < array->size(); ++i) {
-        const toml::table* table = array->get(i)->as_table();
-        const toml::node* node = table ? table->get("name") : nullptr;
-        if (!node || !node->is_string()) continue;  // the loader has already checked the type
-        std::string name = node_string(*node, file, std::string(what) + " name");
-        SourceLocation at = location_of(*node, file);
-        if (name.empty()) throw SceneError(at, fmt::format("{} name must not be empty", what));
-        if (auto seen = first_use.find(name); seen != first_use.end())
-            throw SceneError(at, fmt::format("{} name '{}' is already used at line {}", what, name, seen->second.line));
-        first_use.emplace(name, at);
-        names.emplace(name, i);
-    }
-    return names;
+    EntryNames names{std::string(what)};
+    if (const toml::array* array = root[array_key].as_array()) names.add(*array, file);
+    return names.index();
 }
 
 // The value of `key` in `table`, which names an entry of [[light]] or [[object]] by its name
@@ -201,10 +186,28 @@ void for_each_entry(TableReader& parent, std::string_view key, const std::string
 
 }  // namespace
 
-void read_animation(TableReader& top, const toml::table& root, Scene& scene, std::span<const std::size_t> entry_starts) {
+void EntryNames::add(const toml::array& entries, const std::string& file) {
+    for (const toml::node& entry : entries) {
+        const std::size_t i = count_++;
+        const toml::table* table = entry.as_table();
+        const toml::node* node = table ? table->get("name") : nullptr;
+        if (!node || !node->is_string()) continue;  // the loader has already checked the type
+        std::string name = node_string(*node, file, what_ + " name");
+        SourceLocation at = location_of(*node, file);
+        if (name.empty()) throw SceneError(at, fmt::format("{} name must not be empty", what_));
+        if (auto seen = first_line_.find(name); seen != first_line_.end())
+            throw SceneError(at, fmt::format("{} name '{}' is already used at line {}", what_, name, seen->second));
+        first_line_.emplace(name, at.line);
+        index_.emplace(std::move(name), i);
+    }
+}
+
+void read_animation(TableReader& top, const toml::table& root, Scene& scene, std::span<const std::size_t> entry_starts,
+                    const EntryNames* object_entries) {
     const std::string& file = top.file();
     NameIndex light_names = index_names(root, "light", "light", file);
-    NameIndex object_names = index_names(root, "object", "object", file);
+    NameIndex read_here;
+    const NameIndex& object_names = object_entries ? object_entries->index() : (read_here = index_names(root, "object", "object", file));
     const toml::table* table = top.table("animation");
     if (!table) return;
 

@@ -68,6 +68,8 @@ Object read_object(TableReader& t, const std::string& type, const MaterialChoice
     return o;
 }
 
+}  // namespace
+
 // The scene-wide limits on surfaces (limits.hpp): parametric and implicit surfaces are counted
 // before one is read (reading subdivides or expands it, the expensive part), patches once an
 // object's are known.
@@ -123,6 +125,8 @@ struct SurfaceTotals {
     }
 };
 
+namespace {
+
 // "object 3 ('sphere')": an object or group in messages.
 std::string describe_object(std::string what, const toml::table& t) {
     if (auto type = t["type"].value<std::string>()) what += " ('" + *type + "')";
@@ -132,10 +136,12 @@ std::string describe_object(std::string what, const toml::table& t) {
 // Groups nest at most this deep (each level is a recursion of the reader).
 constexpr int kMaxGroupDepth = 64;
 
+}  // namespace
+
 // Reads [[object]] entries into the scene's objects, groups flattened: a group (POV-Ray's union)
 // places its `objects` by its transform, gives them its material unless they name their own, and
 // its name (an animation moves the whole group).
-struct ObjectReading {
+struct ObjectEntries::Reading {
     const MaterialChoice& materials;
     SurfaceTotals totals;
     Scene& scene;
@@ -372,24 +378,23 @@ struct ObjectReading {
     }
 };
 
-}  // namespace
+ObjectEntries::ObjectEntries(TableReader& top, const MaterialIndex& named, const MaterialReader& read_inline,
+                             std::uint32_t default_material, Scene& scene, TextureLibrary& textures)
+    : materials_{named, read_inline, scene},
+      reading_(new Reading{materials_, {}, scene, textures, default_material, top.table("declare")}) {}
 
-std::vector<std::size_t> read_objects(TableReader& top, const MaterialIndex& named, const MaterialReader& read_inline,
-                                      std::uint32_t default_material, Scene& scene, TextureLibrary& textures) {
-    const MaterialChoice materials{named, read_inline, scene};
-    std::vector<std::size_t> entry_starts{0};
-    const toml::table* declared = top.table("declare");
-    const toml::array* objects = top.array("object");
-    if (!objects) return entry_starts;
-    if (objects->size() > static_cast<std::size_t>(limits::kMaxObjects))
-        top.fail("object", "too many objects (the limit is " + std::to_string(limits::kMaxObjects) + ")");
-    ObjectReading reading{materials, {}, scene, textures, default_material, declared};
-    for_each_table(*objects, top.file(), "[[object]]", [&](const toml::table& t, std::size_t index) {
-        TableReader o(t, top.file(), describe_object("object " + std::to_string(index + 1), t));
-        reading.entry(o, default_material, glm::dmat4(1.0), 0);
-        entry_starts.push_back(scene.objects.size());
+ObjectEntries::~ObjectEntries() = default;
+
+void ObjectEntries::read(const toml::array& entries, const std::string& file) {
+    for_each_table(entries, file, "[[object]]", [&](const toml::table& t, std::size_t) {
+        TableReader o(t, file, describe_object("object " + std::to_string(starts_.size()), t));
+        reading_->entry(o, reading_->default_material, glm::dmat4(1.0), 0);
+        starts_.push_back(reading_->scene.objects.size());
     });
-    return entry_starts;
+}
+
+void ObjectEntries::reserve(std::size_t entries) {
+    reading_->scene.objects.reserve(reading_->scene.objects.size() + entries);
 }
 
 }  // namespace lancer

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,10 +28,30 @@ struct MaterialChoice {
     Scene& scene;
 };
 
-// Reads the scene's [[object]] entries into scene.objects (objects without a material, and
-// members of groups without one, take default_material). Entry i made the objects
-// [starts[i], starts[i + 1]) of the returned starts: what [animation] moves by its name.
-std::vector<std::size_t> read_objects(TableReader& top, const MaterialIndex& named, const MaterialReader& read_inline,
-                                      std::uint32_t default_material, Scene& scene, TextureLibrary& textures);
+// Reads [[object]] entries into scene.objects (objects without a material, and members of
+// groups without one, take default_material): a scene's whole array, or its batches one after
+// another (object_batches.hpp), numbered on across them. The scene-wide counts and the
+// materials added for mesh files and point colours carry over from batch to batch.
+class ObjectEntries {
+public:
+    // `top` is the scene's root table, for its [declare] tables.
+    ObjectEntries(TableReader& top, const MaterialIndex& named, const MaterialReader& read_inline,
+                  std::uint32_t default_material, Scene& scene, TextureLibrary& textures);
+    ~ObjectEntries();
+    ObjectEntries(const ObjectEntries&) = delete;
+    ObjectEntries& operator=(const ObjectEntries&) = delete;
+
+    void read(const toml::array& entries, const std::string& file);
+    // Room in scene.objects for `entries` more objects (one an entry, groups aside).
+    void reserve(std::size_t entries);
+    // Entry i made the objects [starts[i], starts[i + 1]): what [animation] moves by its name.
+    const std::vector<std::size_t>& starts() const { return starts_; }
+
+private:
+    struct Reading;
+    MaterialChoice materials_;
+    std::unique_ptr<Reading> reading_;
+    std::vector<std::size_t> starts_{0};
+};
 
 }  // namespace lancer

@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/error.hpp"
+#include "core/heap_optional.hpp"
 #include "image/tone.hpp"
 #include "optics/metals.hpp"
 #include "mesh/mesh_geometry.hpp"
@@ -493,7 +494,7 @@ struct Placement {
 
 struct Object {
     Shape shape;
-    std::optional<Placement> placement;  // none: the identity
+    HeapOptional<Placement> placement;  // none: the identity (on the heap: most objects have none)
     std::uint32_t material = 0;  // index into Scene::materials
     SourceLocation where;        // the [[object]] table, for messages
     std::string name;            // optional, for [animation] to refer to it

@@ -14,8 +14,29 @@
 
 namespace lancer {
 
+namespace {
+
+// The document of the FilePartScope alive on this thread (its nodes share its source path) and
+// the lines before its first.
+thread_local const std::string* part_path = nullptr;
+thread_local int part_line_offset = 0;
+
+}  // namespace
+
+FilePartScope::FilePartScope(const toml::table& part, int first_line)
+    : previous_path_(part_path), previous_offset_(part_line_offset) {
+    part_path = part.source().path.get();
+    part_line_offset = first_line - 1;
+}
+
+FilePartScope::~FilePartScope() {
+    part_path = previous_path_;
+    part_line_offset = previous_offset_;
+}
+
 SourceLocation location_of(const toml::source_region& region, const std::string& file) {
-    return {file, static_cast<int>(region.begin.line), static_cast<int>(region.begin.column)};
+    const int offset = part_path && region.path.get() == part_path ? part_line_offset : 0;
+    return {file, static_cast<int>(region.begin.line) + offset, static_cast<int>(region.begin.column)};
 }
 
 SourceLocation location_of(const toml::node& node, const std::string& file) {

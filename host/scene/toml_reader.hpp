@@ -73,6 +73,21 @@ std::size_t one_of(TableReader& t, std::string_view key, std::string_view what, 
 SourceLocation location_of(const toml::node& node, const std::string& file);
 SourceLocation location_of(const toml::source_region& region, const std::string& file);
 
+// While alive, location_of gives the nodes of `part`'s document, parsed from the lines of a file
+// from `first_line` on (a batch of its objects: object_batches.hpp), their place in the file
+// (on this thread; other documents' nodes keep theirs).
+class FilePartScope {
+public:
+    FilePartScope(const toml::table& part, int first_line);
+    ~FilePartScope();
+    FilePartScope(const FilePartScope&) = delete;
+    FilePartScope& operator=(const FilePartScope&) = delete;
+
+private:
+    const std::string* previous_path_;
+    int previous_offset_;
+};
+
 // Reads a node as a finite number (integer or float) or a 3-vector of them.
 double node_number(const toml::node& node, const std::string& file, const std::string& what);
 dvec3 node_vec3(const toml::node& node, const std::string& file, const std::string& what);
