@@ -14,11 +14,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "scene/lathe_crossing.hpp"
 #include "scene/parse_surfaces.hpp"
 
 namespace lancer {
@@ -208,6 +210,23 @@ Shape read_lathe(TableReader& t, const glm::dmat4&) {
     if (o.closed && !(std::abs(twice_area) > 1e-12 * size * size))
         t.fail("points", t.what() + ": the closed curve encloses no area: the lathe would have no inside");
     for (LatheSegment& g : o.segments) g.side = twice_area >= 0.0 ? 1 : -1;
+
+    // One side for the whole curve is right only where it does not meet itself: on a curve that
+    // crosses itself the loops turning against the whole face inward (refraction would enter
+    // where it should leave), and its inside would be ambiguous. POV-Ray draws it; lancer refuses
+    // it, at the later segment's first point on the curve.
+    if (const std::optional<LatheSelfCrossing> crossing = find_lathe_crossing(o)) {
+        const auto on_curve = [&](std::size_t k) {
+            return first_point[k] + (spline == LatheSpline::Quadratic || spline == LatheSpline::Cubic ? 1 : 0);
+        };
+        const std::size_t at = on_curve(crossing->second);
+        throw SceneError(p[at].at,
+                         fmt::format("{} points[{}]: the lathe's curve crosses itself (segment {} meets segment {}, which "
+                                     "starts at this point, near r={:.6g}, y={:.6g}): its inside and its normals would be "
+                                     "ambiguous; POV-Ray would draw it, lancer refuses it; keep the curve simple (its "
+                                     "pieces meet only end to end)",
+                                     t.what(), at, crossing->first, crossing->second, crossing->near.x, crossing->near.y));
+    }
 
     check_world_extent(t, "points", dvec3(-o.r_max, o.y_lo, -o.r_max), dvec3(o.r_max, o.y_hi, o.r_max));
     return o;

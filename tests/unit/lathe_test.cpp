@@ -7,6 +7,7 @@
 // refusals at their line and column.
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <cmath>
 #include <optional>
@@ -16,11 +17,13 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
 #include "cpu/shapes/shapes.hpp"
+#include "scene/lathe_crossing.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer::cpu {
@@ -471,6 +474,56 @@ TEST(LatheReader, RefusesWhatPovRayRefusesAndCurvesBelowTheAxis) {
     expect_lathe_refused("spline = \"bezier\"\npoints = [[0, 0], [-1, 0.3], [-1, 0.6], [0, 1]]\n", "dips below the axis");
     expect_lathe_refused("points = [[0, 0], [0, 1]]\n", "every radius is 0");
     expect_lathe_refused("points = [[0, 0], [1, 0], [1, 0], [0, 0]]\n", "encloses no area");
+}
+
+// A curve that meets itself is refused (its one side would face inward on a loop turning the
+// other way); one that comes close is not: the exact test for linear splines, refinement for
+// curved ones (pieces under 1e-9 of the curve's size taken to meet).
+TEST(LatheReader, RefusesACurveThatMeetsItselfNotOneThatComesClose) {
+    // Linear: a notch whose tip comes within 1e-12 of the base, then onto it.
+    EXPECT_NO_THROW(test::scene_from_text(kLatheHead + "points = [[0, 0], [1, 0], [1, 1], [0.5, 1e-12], [0, 1], [0, 0]]\n"));
+    expect_lathe_refused("points = [[0, 0], [1, 0], [1, 1], [0.5, 0], [0, 1], [0, 0]]\n",
+                         "points[2]: the lathe's curve crosses itself (segment 0 meets segment 2");
+    expect_lathe_refused("points = [[0.2, 0], [1.2, 1.5], [0.2, 1.5], [1.0, 0], [0.2, 0]]\n", "(segment 0 meets segment 2");
+    // Linear: turning back along itself.
+    expect_lathe_refused("points = [[1, 0], [1, 1], [1, 0.5]]\n", "(segment 0 meets segment 1");
+    // Bezier: two arcs, the first out to r = 1.75 at y = 0.5, the third in to 1.75 + gap there.
+    auto arcs = [](double gap) {
+        return fmt::format("spline = \"bezier\"\npoints = [[1, 0], [2, 0.25], [2, 0.75], [1, 1], [1, 1], [1, 1], [1, 1], "
+                           "[{0:.17g}, 1], [{0:.17g}, 1], [{1:.17g}, 0.75], [{1:.17g}, 0.25], [{0:.17g}, 0]]\n",
+                           2.5 + gap, 1.5 + gap);
+    };
+    EXPECT_NO_THROW(test::scene_from_text(kLatheHead + arcs(1e-6)));
+    expect_lathe_refused(arcs(-1e-3), "(segment 0 meets segment 2");
+    expect_lathe_refused(arcs(0.0), "(segment 0 meets segment 2");  // touching
+    // Cubic: the third piece back across the first.
+    expect_lathe_refused("spline = \"cubic\"\npoints = [[1, -1], [1, 0], [3, 1], [0.5, 1], [2, 0], [2, -1]]\n",
+                         "(segment 0 meets segment 2");
+    // A curve closed on itself, and one closed on the axis, are not crossings.
+    EXPECT_NO_THROW(lathe_of("linear", {{0.5, 0}, {1, 0}, {1, 1}, {0.5, 0}}));
+    EXPECT_NO_THROW(lathe_of("bezier", {{1, 0}, {2, 0.3}, {2, 0.7}, {1, 1}, {1, 1}, {0.5, 0.7}, {0.5, 0.3}, {1, 0}}));
+    for (const LatheCase& c : kLatheCases) EXPECT_NO_THROW(lathe_of(c.spline, c.points)) << c.spline;
+}
+
+// The test is O(n log n) for a linear spline: 10^5 points of a circle, and a sawtooth of
+// 10^5 long thin teeth (whose boxes all overlap), each well under a second.
+TEST(LatheReader, CrossingTestOfALargeLatheIsQuick) {
+    const int n = 100000;
+    std::vector<LathePt> circle, teeth;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n;
+        circle.push_back({2.0 + std::cos(a), std::sin(a)});
+        teeth.push_back({1.0 + double(i) / n + (i % 2 ? 1.0 : 0.0), i % 2 ? 1.0 : 0.0});
+    }
+    circle.push_back(circle.front());
+    for (const auto* points : {&circle, &teeth}) {
+        const Lathe o = lathe_of("linear", *points);
+        const auto start = std::chrono::steady_clock::now();
+        EXPECT_FALSE(find_lathe_crossing(o));
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_LT(seconds, 1.0);
+        std::printf("crossing test of %zu segments: %.3f s\n", o.segments.size(), seconds);
+    }
 }
 
 // Texture (u, v): the angle about y from +x toward +z, and POV-Ray's v, (segment + s) / count,
