@@ -19,6 +19,8 @@
 // and they cross); else, once both are under the tolerance, they meet (touch or cross).
 #include "scene/lathe_crossing.hpp"
 
+#include "scene/limits.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -530,7 +532,13 @@ std::optional<LatheSelfCrossing> find_lathe_crossing(const Lathe& o) {
         }
         return pairs / 2.0;
     };
-    const int axis = overlaps_along(0) <= overlaps_along(1) ? 0 : 1, other = 1 - axis;
+    const double pairs_along_r = overlaps_along(0), pairs_along_y = overlaps_along(1);
+    const int axis = pairs_along_r <= pairs_along_y ? 0 : 1, other = 1 - axis;
+    if (std::min(pairs_along_r, pairs_along_y) > limits::kMaxLatheCrossingPairs) {
+        LatheSelfCrossing crowded;
+        crowded.crowded = std::min(pairs_along_r, pairs_along_y);
+        return crowded;
+    }
     std::vector<std::size_t> order(count);
     for (std::size_t i = 0; i < count; ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return items[a].lo[axis] < items[b].lo[axis]; });

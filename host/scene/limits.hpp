@@ -34,6 +34,9 @@ constexpr long long kMaxSetSpheres = 1LL << 24;
 constexpr long long kMaxBlobComponents = 1LL << 22;
 // Outline pieces of one prism or text object (a text's glyphs are a few dozen each).
 constexpr std::size_t kMaxPrismSegments = std::size_t{1} << 20;
+// Pairs of a curved lathe's pieces whose boxes overlap, each refined to see whether they meet
+// (lathe_crossing.hpp): about a second's work; beyond, the lathe is refused, never a long wait.
+constexpr double kMaxLatheCrossingPairs = 5e7;
 constexpr int kMaxParametricSurfaces = 32;
 constexpr int kMaxImplicitSurfaces = 32;  // each also a function in the shader
 // Operations of a parametric surface's equations after simplification, and of all surfaces of a

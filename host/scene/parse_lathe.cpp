@@ -21,6 +21,7 @@
 #include <fmt/format.h>
 
 #include "scene/lathe_crossing.hpp"
+#include "scene/limits.hpp"
 #include "scene/parse_surfaces.hpp"
 
 namespace lancer {
@@ -212,10 +213,14 @@ Shape read_lathe(TableReader& t, const glm::dmat4&) {
     for (LatheSegment& g : o.segments) g.side = twice_area >= 0.0 ? 1 : -1;
 
     // One side for the whole curve is right only where it does not meet itself: on a curve that
-    // crosses itself the loops turning against the whole face inward (refraction would enter
-    // where it should leave), and its inside would be ambiguous. POV-Ray draws it; lancer refuses
-    // it, at the later segment's first point on the curve.
+    // crosses itself the loops turning against the whole face inward, and its inside would be
+    // ambiguous. POV-Ray draws it; lancer refuses it, at the later segment's first point on the curve.
     if (const std::optional<LatheSelfCrossing> crossing = find_lathe_crossing(o)) {
+        if (crossing->crowded > 0.0)
+            t.fail("points", fmt::format("{}: {:.3g} pairs of the curve's pieces overlap, more than the {:.3g} lancer checks "
+                                         "for the curve crossing itself; use fewer pieces, or a linear spline (checked "
+                                         "exactly however many)",
+                                         t.what(), crossing->crowded, limits::kMaxLatheCrossingPairs));
         const auto on_curve = [&](std::size_t k) {
             return first_point[k] + (spline == LatheSpline::Quadratic || spline == LatheSpline::Cubic ? 1 : 0);
         };
