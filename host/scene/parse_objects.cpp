@@ -35,7 +35,7 @@ std::uint32_t read_material_reference(TableReader& t, const MaterialChoice& mate
             t.fail("material", fmt::format("too many materials with the objects' own (the limit is {})", limits::kMaxMaterials));
         const SourceLocation at = t.location("material");
         TableReader m(*own, t.file(), t.what() + "'s material");
-        materials.scene.materials.push_back(materials.read_inline(m, fmt::format("{}:{}:{}", at.file, at.line, at.column)));
+        materials.scene.materials.push_back(materials.read_inline(m, fmt::format("{}:{}:{}", at.file.str(), at.line, at.column)));
         return static_cast<std::uint32_t>(materials.scene.materials.size() - 1);
     }
     std::string name = t.string("material", "");
@@ -385,7 +385,7 @@ ObjectEntries::ObjectEntries(TableReader& top, const MaterialIndex& named, const
 
 ObjectEntries::~ObjectEntries() = default;
 
-void ObjectEntries::read(const toml::array& entries, const std::string& file) {
+void ObjectEntries::read(const toml::array& entries, const FileName& file) {
     for_each_table(entries, file, "[[object]]", [&](const toml::table& t, std::size_t) {
         TableReader o(t, file, describe_object("object " + std::to_string(starts_.size()), t));
         reading_->entry(o, reading_->default_material, glm::dmat4(1.0), 0);

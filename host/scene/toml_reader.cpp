@@ -34,12 +34,12 @@ FilePartScope::~FilePartScope() {
     part_line_offset = previous_offset_;
 }
 
-SourceLocation location_of(const toml::source_region& region, const std::string& file) {
+SourceLocation location_of(const toml::source_region& region, const FileName& file) {
     const int offset = part_path && region.path.get() == part_path ? part_line_offset : 0;
     return {file, static_cast<int>(region.begin.line) + offset, static_cast<int>(region.begin.column)};
 }
 
-SourceLocation location_of(const toml::node& node, const std::string& file) {
+SourceLocation location_of(const toml::node& node, const FileName& file) {
     return location_of(node.source(), file);
 }
 
@@ -116,8 +116,8 @@ dvec3 node_vec3(const toml::node& node, const std::string& file, const std::stri
     return v;
 }
 
-TableReader::TableReader(const toml::table& table, const std::string& file, std::string what)
-    : table_(table), file_(file), what_(std::move(what)) {}
+TableReader::TableReader(const toml::table& table, FileName file, std::string what)
+    : table_(table), file_(std::move(file)), what_(std::move(what)) {}
 
 bool TableReader::has(std::string_view key) const { return table_.contains(key); }
 
