@@ -122,7 +122,7 @@ TableReader::TableReader(const toml::table& table, FileName file, std::string wh
 bool TableReader::has(std::string_view key) const { return table_.contains(key); }
 
 const toml::node* TableReader::get(std::string_view key, bool required) {
-    known_.emplace(key);
+    accept(key);
     const toml::node* node = table_.get(key);
     if (!node && required) throw SceneError(location(), what_ + ": missing required key '" + std::string(key) + "'");
     return node;
@@ -203,14 +203,16 @@ const toml::array* TableReader::array(std::string_view key) {
 
 const toml::node* TableReader::node(std::string_view key) { return get(key, false); }
 
-void TableReader::accept(std::string_view key) { known_.emplace(key); }
+void TableReader::accept(std::string_view key) {
+    if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
+}
 
 void TableReader::finish() const {
     for (auto&& [key, value] : table_) {
-        if (known_.count(key.str())) continue;
+        if (std::find(known_.begin(), known_.end(), key.str()) != known_.end()) continue;
         // A POV-Ray word's lancer name says more than a spelling close to it.
         std::string suggestion = pov_ray_key_hint(key.str());
-        if (suggestion.empty()) suggestion = did_you_mean(key.str(), known_);
+        if (suggestion.empty()) suggestion = did_you_mean(key.str(), names_of(known_));
         std::string message = what_ + ": unknown key '" + std::string(key.str()) + "'" + suggestion;
         throw SceneError(location_of(key.source(), file_), message);
     }
