@@ -90,8 +90,9 @@ AccelerationPlan plan_scene(const PlanInput& input, const PlanOptions& options) 
             unbounded.emplace_back(p, box);
         }
     }
+    std::shared_ptr<const Bvh> cached;
     Bvh built;
-    const Bvh& bvh = options.cache ? options.cache->build(boxes) : (built = build_bvh(boxes));
+    const Bvh& bvh = options.cache ? *(cached = options.cache->build(boxes)) : (built = build_bvh(boxes));
     // Sized once: growing by doubling would hold the old and the new array at once.
     plan.primitives.reserve(bvh.order.size() + unbounded.size());
     plan.grid_boxes.reserve(bvh.order.size());
