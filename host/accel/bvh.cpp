@@ -181,9 +181,10 @@ Bvh build_bvh(std::span<const Aabb> boxes, const BvhOptions& options) {
     return bvh;
 }
 
-const Bvh& BvhCache::build(std::span<const Aabb> boxes) {
-    if (builds_ > 0 && std::equal(boxes.begin(), boxes.end(), boxes_.begin(), boxes_.end())) return bvh_;
-    bvh_ = build_bvh(boxes);
+std::shared_ptr<const Bvh> BvhCache::build(std::span<const Aabb> boxes) {
+    if (bvh_ && std::equal(boxes.begin(), boxes.end(), boxes_.begin(), boxes_.end())) return bvh_;
+    bvh_.reset();  // the old tree goes before the new one is built, unless a renderer still holds it
+    bvh_ = std::make_shared<const Bvh>(build_bvh(boxes));
     boxes_.assign(boxes.begin(), boxes.end());
     ++builds_;
     return bvh_;

@@ -3,6 +3,7 @@
 // of an inner node are adjacent (left, left + 1), and each leaf refers to a contiguous range of
 // `order`, so a renderer can reorder its primitives once and address leaves by range.
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -37,12 +38,13 @@ Bvh build_bvh(std::span<const Aabb> boxes, const BvhOptions& options = {});
 // so any change at all rebuilds.
 class BvhCache {
 public:
-    const Bvh& build(std::span<const Aabb> boxes);
+    // The tree is shared: a renderer keeps it without a copy, and after the cache moves on.
+    std::shared_ptr<const Bvh> build(std::span<const Aabb> boxes);
     std::size_t builds() const { return builds_; }  // trees built so far (for tests)
 
 private:
     std::vector<Aabb> boxes_;
-    Bvh bvh_;
+    std::shared_ptr<const Bvh> bvh_;
     std::size_t builds_ = 0;
 };
 

@@ -41,9 +41,9 @@ void SceneFiles::watch(const Scene& scene) {
 
 void SceneFiles::watch_failure(const UserError& error) {
     const auto* located = dynamic_cast<const SceneError*>(&error);
-    if (!located || located->where().file.empty() || !fs::is_regular_file(located->where().file)) return;
+    if (!located || located->where().file.empty() || !fs::is_regular_file(located->where().file.str())) return;
     std::set<fs::path> files = files_;
-    files.insert(FileWatcher::identity(located->where().file));
+    files.insert(FileWatcher::identity(located->where().file.str()));
     replace(std::move(files));
 }
 

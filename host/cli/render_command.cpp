@@ -22,7 +22,7 @@ void report_implicit_surfaces(const Scene& scene) {
     for_each_object_and_leaf(scene.objects, [](const Object& o) {
         const auto* implicit = std::get_if<ImplicitObject>(&o.shape);
         if (!implicit) return;
-        int degree = implicit->surface.degree();
+        int degree = implicit->surface->degree();
         std::string what = degree > 0 ? fmt::format("a polynomial of degree {}", degree) : "not a polynomial";
         std::fprintf(stderr, "%s:%d:%d: note: implicit surface: %s\n", o.where.file.c_str(), o.where.line,
                      o.where.column, what.c_str());

@@ -13,7 +13,7 @@ std::string format_error(const std::exception& e) {
     std::ostringstream out;
     if (const auto* scene = dynamic_cast<const SceneError*>(&e)) {
         const SourceLocation& at = scene->where();
-        out << (at.file.empty() ? "lancer" : escape_control_characters(at.file));
+        out << (at.file.empty() ? "lancer" : escape_control_characters(at.file.str()));
         if (at.line > 0) {
             out << ':' << at.line;
             if (at.column > 0) out << ':' << at.column;

@@ -2,14 +2,37 @@
 // lancer's error values. Everything a user can cause (a wrong scene, a bad option, an unwritable
 // output, a machine without a Vulkan device) is a UserError and exits with code 2; anything else
 // that escapes is an internal failure (exit code 1). The CLI turns both into one message.
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 namespace lancer {
 
+// A file's name, shared by the copies of it (a million objects read from one file hold one
+// string), read as a const std::string.
+class FileName {
+public:
+    FileName() = default;
+    FileName(std::string name) : name_(std::make_shared<const std::string>(std::move(name))) {}
+    FileName(const char* name) : FileName(std::string(name)) {}
+
+    const std::string& str() const { return name_ ? *name_ : empty_name(); }
+    operator const std::string&() const { return str(); }
+    bool empty() const { return str().empty(); }
+    const char* c_str() const { return str().c_str(); }
+    friend bool operator==(const FileName& a, const FileName& b) { return a.str() == b.str(); }
+
+private:
+    static const std::string& empty_name() {
+        static const std::string empty;
+        return empty;
+    }
+    std::shared_ptr<const std::string> name_;
+};
+
 // Where in a text file something is. line and column are 1-based; 0 means "unknown".
 struct SourceLocation {
-    std::string file;
+    FileName file;
     int line = 0;
     int column = 0;
 };

@@ -32,7 +32,7 @@ glm::dvec2 texture_uv(const Hit& hit, const dvec3& world_point) {
         glm::dvec2 operator()(const Csg&) const { return hit.uv; }  // never: a CSG hit is its leaf's (Tracer)
         glm::dvec2 operator()(const BezierSurface&) const { return hit.uv; }     // each patch's (u, v)
         glm::dvec2 operator()(const ParametricObject& o) const {                  // the domain, as [0, 1]^2
-            const auto& s = o.surface;
+            const auto& s = *o.surface;
             return {(hit.uv.x - s.u0) / (s.u1 - s.u0), (hit.uv.y - s.v0) / (s.v1 - s.v0)};
         }
         glm::dvec2 operator()(const ImplicitObject&) const { return hit.uv; }  // x and y across the box

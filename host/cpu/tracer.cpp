@@ -55,6 +55,8 @@ Tracer::Tracer(const Scene& scene, Acceleration acceleration, BvhCache* cache)
     : scene_(scene), terms_(microfacet_terms(scene)) {
     for (const Material& m : scene.materials) has_transparency_ |= m.transparent();
     std::vector<Aabb> boxes;
+    boxes.reserve(scene.objects.size());  // sized once: doubling would hold two arrays at once
+    bounded_.reserve(scene.objects.size());
     for (const Object& object : scene.objects) {
         std::optional<Aabb> box;
         if (acceleration != Acceleration::BruteForce) box = object_bounds(object);
@@ -65,12 +67,12 @@ Tracer::Tracer(const Scene& scene, Acceleration acceleration, BvhCache* cache)
             unbounded_.push_back(&object);
         }
     }
-    Bvh built;
-    const Bvh& bvh = cache ? cache->build(boxes) : (built = build_bvh(boxes));
+    bvh_ = cache ? cache->build(boxes) : std::make_shared<const Bvh>(build_bvh(boxes));
+    std::vector<Aabb>().swap(boxes);
     std::vector<const Object*> ordered;
-    for (std::uint32_t i : bvh.order) ordered.push_back(bounded_[i]);
+    ordered.reserve(bvh_->order.size());
+    for (std::uint32_t i : bvh_->order) ordered.push_back(bounded_[i]);
     bounded_ = std::move(ordered);
-    nodes_ = bvh.nodes;
 }
 
 namespace {
@@ -96,9 +98,10 @@ template <typename Visit, typename TMax>
 void Tracer::for_each_candidate(const Ray& ray, TMax t_max, Visit visit) const {
     for (const Object* object : unbounded_)
         if (!visit(*object)) return;
-    if (nodes_.empty()) return;
+    const std::vector<BvhNode>& nodes = bvh_->nodes;
+    if (nodes.empty()) return;
     dvec3 inv_dir = 1.0 / ray.dir;
-    if (!box_entry(nodes_[0].box, ray, inv_dir, t_max())) return;
+    if (!box_entry(nodes[0].box, ray, inv_dir, t_max())) return;
     std::vector<std::pair<std::uint32_t, double>> stack;
     stack.reserve(64);
     stack.emplace_back(0u, 0.0);
@@ -106,14 +109,14 @@ void Tracer::for_each_candidate(const Ray& ray, TMax t_max, Visit visit) const {
         auto [index, entry] = stack.back();
         stack.pop_back();
         if (entry > t_max()) continue;
-        const BvhNode& node = nodes_[index];
+        const BvhNode& node = nodes[index];
         if (node.leaf()) {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
                 if (!visit(*bounded_[i])) return;
             continue;
         }
-        auto near_t = box_entry(nodes_[node.first].box, ray, inv_dir, t_max());
-        auto far_t = box_entry(nodes_[node.first + 1].box, ray, inv_dir, t_max());
+        auto near_t = box_entry(nodes[node.first].box, ray, inv_dir, t_max());
+        auto far_t = box_entry(nodes[node.first + 1].box, ray, inv_dir, t_max());
         std::uint32_t near_child = node.first, far_child = node.first + 1;
         if (far_t && (!near_t || *far_t < *near_t)) {
             std::swap(near_t, far_t);

@@ -102,7 +102,7 @@ private:
     const PhotonMaps* photons_ = nullptr;
     std::vector<const Object*> unbounded_;  // tested by every ray (planes; everything without a BVH)
     std::vector<const Object*> bounded_;    // in BVH leaf order
-    std::vector<BvhNode> nodes_;
+    std::shared_ptr<const Bvh> bvh_;  // its nodes; shared with the renderer's BvhCache, not copied
 };
 
 // The colour or checker part of a material's pigment at a point (cpu/appearance.hpp adds

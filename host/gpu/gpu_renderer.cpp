@@ -164,12 +164,14 @@ std::string GpuRenderer::description() const {
 
 gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated) {
     const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
-    std::optional<gpu::PackedScene> fresh;
+    std::shared_ptr<const gpu::PackedScene> fresh;
     if (!packing_once_ || !packed_) {
-        (packing_once_ ? packed_ : fresh) = gpu::pack_scene(scene, {acceleration_, grid_use_, &bvh_cache_, &limits});
+        (packing_once_ ? packed_ : fresh) =
+            std::make_shared<const gpu::PackedScene>(gpu::pack_scene(scene, {acceleration_, grid_use_, &bvh_cache_, &limits}));
         ++scenes_packed_;
     }
-    const gpu::PackedScene& packed = fresh ? *fresh : *packed_;
+    const std::shared_ptr<const gpu::PackedScene>& shared = fresh ? fresh : packed_;
+    const gpu::PackedScene& packed = *shared;
     std::vector<gpu::BufferNeed> needs = gpu::render_buffer_needs(packed, output_bytes, selection_pixels_);
     gpu::check_memory_budget(needs, limits);
     std::uint64_t buffer_bytes = 0;
@@ -177,7 +179,7 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
     gpu::check_render_memory(scene, buffer_bytes);
     emitters_ = packed.emitters;
     float_notes_ = packed.float_notes;
-    resources_.upload(packed, gpu::pack_frame(scene, packed));
+    resources_.upload(shared, gpu::pack_frame(scene, packed));
     if (std::string code = gpu::surface_functions_glsl(scene, context_->float64()); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;
     features.check_loop_limit = gpu::limits_loop_iterations(context_->info());

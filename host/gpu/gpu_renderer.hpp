@@ -170,7 +170,7 @@ private:
     // Within one render_in_steps(): the scene as packed by its first upload, for the others.
     bool packing_once_ = false;
     std::size_t scenes_packed_ = 0;
-    std::optional<gpu::PackedScene> packed_;
+    std::shared_ptr<const gpu::PackedScene> packed_;  // also what resources_ compares the next upload against
     std::size_t max_dispatch_samples_ = 0;
     std::unique_ptr<gpu::RefineSelection> selection_;  // made by the first adaptive render
     // Within an adaptive render choosing on the device: its picture's pixels, which the memory

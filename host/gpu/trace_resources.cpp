@@ -4,7 +4,6 @@
 #include <cstring>
 
 #include "gpu/vulkan/resource_kinds.hpp"
-#include "core/huge_pages.hpp"
 #include "gpu/vulkan/vk_check.hpp"
 
 namespace lancer::gpu {
@@ -52,11 +51,11 @@ bool TraceResources::reserve(uint binding, std::size_t bytes) {
     return true;
 }
 
-void TraceResources::upload(const PackedScene& packed, const FrameParams& frame) {
+void TraceResources::upload(std::shared_ptr<const PackedScene> packed, const FrameParams& frame) {
     last_upload_ = {};
     for (std::size_t a = 0; a < kSceneArrayCount; ++a) {
-        std::span<const std::byte> bytes = packed.bytes(SceneArray(a));
-        std::vector<std::byte>& held = held_[a];
+        std::span<const std::byte> bytes = packed->bytes(SceneArray(a));
+        const std::span<const std::byte> held = held_ ? held_->bytes(SceneArray(a)) : std::span<const std::byte>();
         const uint binding = kSceneArrays[a].binding;
         const bool grown = reserve(binding, bytes.size());
         // Only the elements from the first to the last that differ from what the buffer held:
@@ -64,7 +63,9 @@ void TraceResources::upload(const PackedScene& packed, const FrameParams& frame)
         // camera rewrites only the view's. A buffer that had to grow gets the rest copied too.
         const std::size_t element = kSceneArrays[a].element_bytes;
         const std::size_t common = std::min(bytes.size(), held.size());
-        std::size_t first = std::mismatch(bytes.begin(), bytes.begin() + common, held.begin()).first - bytes.begin();
+        std::size_t first = held.data() == bytes.data()  // the same scene again (a render's next step)
+                                ? common
+                                : std::mismatch(bytes.begin(), bytes.begin() + common, held.begin()).first - bytes.begin();
         std::size_t end = bytes.size();
         if (held.size() == bytes.size())
             while (end > first && bytes[end - 1] == held[end - 1]) --end;
@@ -78,9 +79,8 @@ void TraceResources::upload(const PackedScene& packed, const FrameParams& frame)
             last_upload_.bytes_skipped += bytes.size() - (end - first);
         }
         last_upload_.bytes_written += end - first;
-        reserve_huge(held, bytes.size());
-        held.assign(bytes.begin(), bytes.end());
     }
+    held_ = std::move(packed);
     reserve(BINDING_FRAME, sizeof(frame));
     buffers_[BINDING_FRAME].write(&frame, sizeof(frame));
     last_upload_.bytes_written += sizeof(frame);

@@ -5,6 +5,7 @@
 // debug name) follows from its kind in that table.
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "gpu/vulkan/buffer.hpp"
@@ -32,7 +33,11 @@ public:
     TraceResources& operator=(const TraceResources&) = delete;
 
     // Writes the frame parameters, and each packed array unless it is what its buffer holds.
-    void upload(const PackedScene& packed, const FrameParams& frame);
+    // Keeps `packed` to compare the next upload against (no copy of it).
+    void upload(std::shared_ptr<const PackedScene> packed, const FrameParams& frame);
+    void upload(const PackedScene& packed, const FrameParams& frame) {  // keeps a copy
+        upload(std::make_shared<const PackedScene>(packed), frame);
+    }
     const UploadStats& last_upload() const { return last_upload_; }
 
     // The output band: at least `bytes`, mapped for reading back.
@@ -55,9 +60,10 @@ private:
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     std::array<Buffer, kResourceCount> buffers_;  // by binding
-    // What each scene array's buffer holds, kept on the host to compare against (reading mapped
-    // GPU memory back can be very slow on discrete GPUs).
-    std::array<std::vector<std::byte>, kSceneArrayCount> held_;
+    // What the scene arrays' buffers hold, kept on the host to compare against (reading mapped
+    // GPU memory back can be very slow on discrete GPUs): the scene last uploaded, shared with
+    // the renderer that packed it.
+    std::shared_ptr<const PackedScene> held_;
     bool descriptors_dirty_ = true;
     UploadStats last_upload_;
 };

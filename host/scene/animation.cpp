@@ -60,14 +60,14 @@ void translate(Shape& shape, const dvec3& offset) {
             b.max += d;
         }
         void operator()(ParametricObject& p) const {
-            p.surface.to_world[3] += glm::dvec4(d, 0.0);  // translation column of the affine map
+            p.surface->to_world[3] += glm::dvec4(d, 0.0);  // translation column of the affine map
             p.bounds_lo += d;
             p.bounds_hi += d;
         }
         void operator()(ImplicitObject& o) const {
-            glm::dmat4 m = o.surface.to_world;
+            glm::dmat4 m = o.surface->to_world;
             m[3] += glm::dvec4(d, 0.0);
-            o.surface.place(m);
+            o.surface->place(m);
         }
         void operator()(BezierSurface& b) const {
             for (auto& patch : b.patches)

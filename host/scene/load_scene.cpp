@@ -334,12 +334,12 @@ Scene parse_scene_batches(std::string_view text, const SceneTextParts& parts, co
     SceneValuesScope values_scope(values);
     const toml::table head = toml::parse(std::string_view(parts.head), std::string_view(path));
     EntryNames names("object");
-    return read_scene(head, path, values, [&](TableReader&, ObjectEntries& entries) -> const EntryNames* {
+    return read_scene(head, path, values, [&](TableReader& top, ObjectEntries& entries) -> const EntryNames* {
         entries.reserve(parts.objects);
         for_each_batch(text, parts, path, [&](const toml::table& tree, const ObjectBatch& batch) {
             const FilePartScope part(tree, batch.first_line);
             const toml::array& objects = *tree.get_as<toml::array>("object");
-            entries.read(objects, path);
+            entries.read(objects, top.file());  // one name shared by every object's location
             names.add(objects, path);
         });
         return &names;

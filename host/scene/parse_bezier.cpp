@@ -87,7 +87,7 @@ Shape read_bezier(TableReader& t, const glm::dmat4& to_world) {
     if (file) {
         std::string name = t.string("file", "");
         if (weights) t.fail("weights", "weights come from the patch file (a 4th number per point)");
-        std::filesystem::path path = std::filesystem::path(t.file()).parent_path() / name;
+        std::filesystem::path path = std::filesystem::path(t.file().str()).parent_path() / name;
         try {
             surface.patches = surface::read_patch_file(path.string());
         } catch (const SceneError& e) {

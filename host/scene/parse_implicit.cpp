@@ -92,7 +92,7 @@ std::string poly_function(TableReader& t) {
 Shape read_implicit(TableReader& t, const glm::dmat4& to_world) {
     surface::Constants constants = read_params(t, surface::kImplicitVariables);
     ImplicitObject object;
-    surface::ImplicitSurface& s = object.surface;
+    surface::ImplicitSurface& s = *object.surface;
     const toml::node* node = t.node("function");
     const bool poly = t.has("poly");
     if (node && poly) t.fail("poly", t.what() + ": give either function or poly (POV-Ray's coefficients), not both");
@@ -117,7 +117,7 @@ Shape read_implicit(TableReader& t, const glm::dmat4& to_world) {
 
 Shape prepared_implicit(TableReader& t, ImplicitObject object, const std::string& key, const ColumnPlace& place,
                         const glm::dmat4& to_world) {
-    surface::ImplicitSurface& s = object.surface;
+    surface::ImplicitSurface& s = *object.surface;
     check_defined(place, s);
     try {
         s.polynomial = surface::expand_polynomial(s.f);

@@ -19,7 +19,7 @@ namespace lancer {
 Shape read_mesh(TableReader& t, const glm::dmat4& to_world) {  // placed by place(), as the other shapes
     Mesh mesh;
     const std::string name = t.required_string("file");
-    const std::filesystem::path path = std::filesystem::path(t.file()).parent_path() / name;
+    const std::filesystem::path path = std::filesystem::path(t.file().str()).parent_path() / name;
     try {
         mesh.geometry = shared_from_file<MeshGeometry>(path, "", [&] {
             return std::make_shared<const MeshGeometry>(read_mesh_file(path.string()));

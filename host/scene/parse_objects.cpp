@@ -35,7 +35,7 @@ std::uint32_t read_material_reference(TableReader& t, const MaterialChoice& mate
             t.fail("material", fmt::format("too many materials with the objects' own (the limit is {})", limits::kMaxMaterials));
         const SourceLocation at = t.location("material");
         TableReader m(*own, t.file(), t.what() + "'s material");
-        materials.scene.materials.push_back(materials.read_inline(m, fmt::format("{}:{}:{}", at.file, at.line, at.column)));
+        materials.scene.materials.push_back(materials.read_inline(m, fmt::format("{}:{}:{}", at.file.str(), at.line, at.column)));
         return static_cast<std::uint32_t>(materials.scene.materials.size() - 1);
     }
     std::string name = t.string("material", "");
@@ -95,10 +95,10 @@ struct SurfaceTotals {
     void after(TableReader& t, const Object& o) {
         int added = 0;
         if (const auto* p = std::get_if<ParametricObject>(&o.shape)) {
-            const surface::Expr* xyz[] = {&p->surface.x, &p->surface.y, &p->surface.z};
+            const surface::Expr* xyz[] = {&p->surface->x, &p->surface->y, &p->surface->z};
             added = surface::count_operations(surface::compile_program(xyz));
         } else if (const auto* i = std::get_if<ImplicitObject>(&o.shape)) {
-            added = surface::count_operations(i->surface.program);
+            added = surface::count_operations(i->surface->program);
         }
         if (added > 0 && (operations += added) > limits::kMaxSceneSurfaceOperations)
             t.fail("type", fmt::format("the parametric and implicit surfaces' equations take {} operations so far; the "
@@ -366,7 +366,7 @@ struct ObjectEntries::Reading {
                                    "closed meshes, plane as the half-space behind its normal) and CSG objects and groups of them",
                                    open ? "an open " : "a ", type == "spheres" ? "sphere set" : type));
             if (const auto* implicit = std::get_if<ImplicitObject>(&leaf.shape))
-                if (auto point = surface::not_proved_positive_on_faces(implicit->surface))
+                if (auto point = surface::not_proved_positive_on_faces(*implicit->surface))
                     t.fail("type", fmt::format("this {} is not proved closed in its box: CSG takes f < 0 as its inside, "
                                                "and f > 0 could not be proved on the box's faces near ({:.4g}, {:.4g}, {:.4g}) "
                                                "(its coordinates); make the box larger than the solid",
@@ -385,7 +385,7 @@ ObjectEntries::ObjectEntries(TableReader& top, const MaterialIndex& named, const
 
 ObjectEntries::~ObjectEntries() = default;
 
-void ObjectEntries::read(const toml::array& entries, const std::string& file) {
+void ObjectEntries::read(const toml::array& entries, const FileName& file) {
     for_each_table(entries, file, "[[object]]", [&](const toml::table& t, std::size_t) {
         TableReader o(t, file, describe_object("object " + std::to_string(starts_.size()), t));
         reading_->entry(o, reading_->default_material, glm::dmat4(1.0), 0);

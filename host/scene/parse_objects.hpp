@@ -41,7 +41,7 @@ public:
     ObjectEntries(const ObjectEntries&) = delete;
     ObjectEntries& operator=(const ObjectEntries&) = delete;
 
-    void read(const toml::array& entries, const std::string& file);
+    void read(const toml::array& entries, const FileName& file);
     // Room in scene.objects for `entries` more objects (one an entry, groups aside).
     void reserve(std::size_t entries);
     // Entry i made the objects [starts[i], starts[i + 1]): what [animation] moves by its name.

@@ -55,7 +55,7 @@ std::pair<double, double> read_range(TableReader& t, std::string_view key, const
 Shape read_parametric(TableReader& t, const glm::dmat4& to_world) {
     surface::Constants constants = read_params(t, surface::kParametricVariables);
     ParametricObject object;
-    surface::ParametricSurface& s = object.surface;
+    surface::ParametricSurface& s = *object.surface;
     const char* axes[] = {"x", "y", "z"};
     surface::Expr* exprs[] = {&s.x, &s.y, &s.z};
     for (int i = 0; i < 3; ++i) {

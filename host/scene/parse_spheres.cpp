@@ -18,7 +18,7 @@ namespace lancer {
 Shape read_spheres(TableReader& t, const glm::dmat4& to_world) {  // placed by place(), as the other shapes
     SphereSet set;
     const std::string name = t.required_string("file");
-    const std::filesystem::path path = std::filesystem::path(t.file()).parent_path() / name;
+    const std::filesystem::path path = std::filesystem::path(t.file().str()).parent_path() / name;
     std::optional<double> radius;
     if (t.has("radius")) {
         radius = t.number("radius", 0.0);

@@ -49,7 +49,7 @@ fs::path find_system_font(const fs::path& name) {
 // A font named in a scene: a path with a folder is the scene file's relative one; a bare file
 // name is looked for beside the scene file, then among the system's fonts.
 std::string find_font(TableReader& t, const std::string& name) {
-    const fs::path scene_folder = fs::path(t.file()).parent_path();
+    const fs::path scene_folder = fs::path(t.file().str()).parent_path();
     const fs::path named(name);
     std::error_code ec;
     if (named.is_absolute() || named.has_parent_path()) {

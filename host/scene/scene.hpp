@@ -17,6 +17,7 @@
 
 #include "core/error.hpp"
 #include "core/heap_optional.hpp"
+#include "core/heap_value.hpp"
 #include "image/tone.hpp"
 #include "optics/metals.hpp"
 #include "mesh/mesh_geometry.hpp"
@@ -240,14 +241,14 @@ struct BezierSurface {
 // over the cells of its domain: surface/parametric_cells.hpp). The GPU cuts it into its own cells
 // when it packs the scene; renderers need nothing else from the loader.
 struct ParametricObject {
-    surface::ParametricSurface surface;
+    HeapValue<surface::ParametricSurface> surface;  // on the heap: the variant stays a sphere's size
     dvec3 bounds_lo{0.0}, bounds_hi{0.0};  // world space
     int outward = 0;  // declared closed: +1 where S_u x S_v points out of the solid, -1 where in; else 0
 };
 
 // A surface given by its equation f(x, y, z) = 0, clipped to a box (docs/scene-format.md).
 struct ImplicitObject {
-    surface::ImplicitSurface surface;
+    HeapValue<surface::ImplicitSurface> surface;  // on the heap: the variant stays a sphere's size
 };
 
 // POV-Ray's disc: the points of the plane through `center` with unit `normal` whose distance r

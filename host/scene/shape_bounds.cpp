@@ -72,7 +72,7 @@ struct BoundsOf {
     std::optional<Aabb> operator()(const ParametricObject& p) const { return Aabb{p.bounds_lo, p.bounds_hi}; }
     std::optional<Aabb> operator()(const ImplicitObject& o) const {
         Aabb b;
-        surface::implicit_world_bounds(o.surface, b.lo, b.hi);
+        surface::implicit_world_bounds(*o.surface, b.lo, b.hi);
         return b;
     }
     std::optional<Aabb> operator()(const BezierSurface& s) const {

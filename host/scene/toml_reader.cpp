@@ -34,12 +34,12 @@ FilePartScope::~FilePartScope() {
     part_line_offset = previous_offset_;
 }
 
-SourceLocation location_of(const toml::source_region& region, const std::string& file) {
+SourceLocation location_of(const toml::source_region& region, const FileName& file) {
     const int offset = part_path && region.path.get() == part_path ? part_line_offset : 0;
     return {file, static_cast<int>(region.begin.line) + offset, static_cast<int>(region.begin.column)};
 }
 
-SourceLocation location_of(const toml::node& node, const std::string& file) {
+SourceLocation location_of(const toml::node& node, const FileName& file) {
     return location_of(node.source(), file);
 }
 
@@ -116,13 +116,13 @@ dvec3 node_vec3(const toml::node& node, const std::string& file, const std::stri
     return v;
 }
 
-TableReader::TableReader(const toml::table& table, const std::string& file, std::string what)
-    : table_(table), file_(file), what_(std::move(what)) {}
+TableReader::TableReader(const toml::table& table, FileName file, std::string what)
+    : table_(table), file_(std::move(file)), what_(std::move(what)) {}
 
 bool TableReader::has(std::string_view key) const { return table_.contains(key); }
 
 const toml::node* TableReader::get(std::string_view key, bool required) {
-    known_.emplace(key);
+    accept(key);
     const toml::node* node = table_.get(key);
     if (!node && required) throw SceneError(location(), what_ + ": missing required key '" + std::string(key) + "'");
     return node;
@@ -203,14 +203,16 @@ const toml::array* TableReader::array(std::string_view key) {
 
 const toml::node* TableReader::node(std::string_view key) { return get(key, false); }
 
-void TableReader::accept(std::string_view key) { known_.emplace(key); }
+void TableReader::accept(std::string_view key) {
+    if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.emplace_back(key);
+}
 
 void TableReader::finish() const {
     for (auto&& [key, value] : table_) {
-        if (known_.count(key.str())) continue;
+        if (std::find(known_.begin(), known_.end(), key.str()) != known_.end()) continue;
         // A POV-Ray word's lancer name says more than a spelling close to it.
         std::string suggestion = pov_ray_key_hint(key.str());
-        if (suggestion.empty()) suggestion = did_you_mean(key.str(), known_);
+        if (suggestion.empty()) suggestion = did_you_mean(key.str(), names_of(known_));
         std::string message = what_ + ": unknown key '" + std::string(key.str()) + "'" + suggestion;
         throw SceneError(location_of(key.source(), file_), message);
     }

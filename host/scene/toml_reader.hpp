@@ -19,7 +19,7 @@ namespace lancer {
 class TableReader {
 public:
     // `what` names the table in messages, e.g. "[camera]" or "object 'sphere'".
-    TableReader(const toml::table& table, const std::string& file, std::string what);
+    TableReader(const toml::table& table, FileName file, std::string what);
 
     bool has(std::string_view key) const;
 
@@ -47,7 +47,7 @@ public:
     SourceLocation location(std::string_view key) const;   // of the key's value (or the table)
     [[noreturn]] void fail(std::string_view key, const std::string& message) const;
 
-    const std::string& file() const { return file_; }
+    const FileName& file() const { return file_; }  // shared by the locations it gives
     const toml::table& table() const { return table_; }
     const std::string& what() const { return what_; }
 
@@ -55,9 +55,11 @@ private:
     const toml::node* get(std::string_view key, bool required);
 
     const toml::table& table_;
-    std::string file_;
+    FileName file_;
     std::string what_;
-    std::set<std::string, std::less<>> known_;
+    // A handful of keys, most shorter than a string's inline buffer: a vector searched in order
+    // costs no allocation per key, where a set's nodes cost one each (per object of a million).
+    std::vector<std::string> known_;
 };
 
 // Value checks shared by the readers; each fails at the key's value with a message naming it.
@@ -70,8 +72,8 @@ int check_int_range(TableReader& t, std::string_view key, int v, int lo, int hi)
 std::size_t one_of(TableReader& t, std::string_view key, std::string_view what, const std::vector<std::string>& names,
                    const std::string& fallback);
 
-SourceLocation location_of(const toml::node& node, const std::string& file);
-SourceLocation location_of(const toml::source_region& region, const std::string& file);
+SourceLocation location_of(const toml::node& node, const FileName& file);
+SourceLocation location_of(const toml::source_region& region, const FileName& file);
 
 // While alive, location_of gives the nodes of `part`'s document, parsed from the lines of a file
 // from `first_line` on (a batch of its objects: object_batches.hpp), their place in the file

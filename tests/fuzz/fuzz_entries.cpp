@@ -236,7 +236,7 @@ void check_scene_invariants(const Scene& scene, const std::string& when) {
                     require_finite(s.bounds_hi, when, ": parametric surface's bounds");
                     require(glm::all(glm::lessThanEqual(s.bounds_lo, s.bounds_hi)), when, ": parametric bounds are empty");
                 } else if constexpr (std::is_same_v<T, ImplicitObject>) {
-                    const surface::ImplicitSurface& f = s.surface;
+                    const surface::ImplicitSurface& f = *s.surface;
                     require_finite(f.box_lo, when, ": implicit box");
                     require_finite(f.box_hi, when, ": implicit box");
                     require(glm::all(glm::lessThan(f.box_lo, f.box_hi)), when, ": implicit box is empty");

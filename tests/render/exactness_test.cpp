@@ -186,7 +186,7 @@ namespace {
 // included: the same root for every ray, to float's precision.
 TEST(Exactness, GpuSearchAgreesWithIntervalNewtonOnTheTorus) {
     Scene scene = test::shipped_scene("torus", 48, 36);
-    const auto& torus = std::get<ParametricObject>(scene.objects[1].shape).surface;
+    const auto& torus = *std::get<ParametricObject>(scene.objects[1].shape).surface;
     std::mt19937 rng(9);
     std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), height(-0.3, 0.9);
     int hits = 0, gpu_only = 0, cpu_only = 0, wrong_t = 0, grazing_disagreements = 0;

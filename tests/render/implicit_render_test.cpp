@@ -144,7 +144,7 @@ TEST(ImplicitExactness, ASurfaceInAHugeBoxIsSearchedWhereItIs) {
     for (double side : {1e4, 1e5, 1e6}) {
         SCOPED_TRACE(side);
         const Scene huge = boxed(side);
-        const auto& search = std::get<ImplicitObject>(huge.objects[0].shape).surface.search_box;
+        const auto& search = std::get<ImplicitObject>(huge.objects[0].shape).surface->search_box;
         ASSERT_TRUE(search.has_value());
         EXPECT_LT(glm::length((*search)[1] - (*search)[0]), 10.0) << "the box was not shrunk to the sphere";
         for (test::Backend backend : {test::Backend::Gpu, test::Backend::Cpu})
@@ -195,7 +195,7 @@ TEST(ImplicitExactness, GpuRootsAgreeWithTheCertifiedRoots) {
                     glm::dvec3 p = scene.camera.eye + t * d;
                     double n_dot_d = 1.0;
                     for (const Object& o : implicit) {
-                        const auto& s = std::get<ImplicitObject>(o.shape).surface;
+                        const auto& s = *std::get<ImplicitObject>(o.shape).surface;
                         glm::dvec3 local = glm::dvec3(s.to_local * glm::dvec4(p, 1.0));
                         if (glm::any(glm::lessThan(local, s.box_lo - 1e-6)) || glm::any(glm::greaterThan(local, s.box_hi + 1e-6))) continue;
                         n_dot_d = std::min(n_dot_d, std::abs(glm::dot(surface::implicit_normal(s, p), d)));

@@ -38,7 +38,7 @@ bool leaf_contains(const Object& leaf, dvec3 p) {
         return std::pow(std::pow(std::abs(p.x), a) + std::pow(std::abs(p.y), a), b / a) + std::pow(std::abs(p.z), b) < 1.0;
     }
     if (const auto* i = std::get_if<ImplicitObject>(&leaf.shape))
-        return surface::evaluate_implicit(i->surface, dvec3(i->surface.to_local * glm::dvec4(p, 1.0))).f < 0.0;
+        return surface::evaluate_implicit(*i->surface, dvec3(i->surface->to_local * glm::dvec4(p, 1.0))).f < 0.0;
     if (const auto* o = std::get_if<Prism>(&leaf.shape)) {  // even-odd over straight outlines: crossings along +x
         if (!(p.y > o->y0 && p.y < o->y1)) return false;
         bool in = false;

@@ -24,13 +24,13 @@ using cpu::RootKind;
 ImplicitObject make_implicit(const std::string& text, glm::dvec3 lo, glm::dvec3 hi, const surface::Constants& c = {},
                              glm::dmat4 to_world = glm::dmat4(1.0)) {
     ImplicitObject o;
-    o.surface.f = surface::parse_expression(text, c, surface::kImplicitVariables);
-    const surface::Expr* f[] = {&o.surface.f};
-    o.surface.program = surface::compile_program(f);
-    o.surface.polynomial = surface::expand_polynomial(o.surface.f);
-    o.surface.box_lo = lo;
-    o.surface.box_hi = hi;
-    o.surface.place(to_world);
+    o.surface->f = surface::parse_expression(text, c, surface::kImplicitVariables);
+    const surface::Expr* f[] = {&o.surface->f};
+    o.surface->program = surface::compile_program(f);
+    o.surface->polynomial = surface::expand_polynomial(o.surface->f);
+    o.surface->box_lo = lo;
+    o.surface->box_hi = hi;
+    o.surface->place(to_world);
     return o;
 }
 
@@ -66,7 +66,7 @@ TEST(ImplicitIntersect, CompanionMethodFindsEveryKnownRootAlongARay) {
                             " + 0.3*((z - {2:.17g})*{3:.17g} - (x - {0:.17g})*{5:.17g})^2",
                             origin.x, origin.y, origin.z, d.x, d.y, d.z);
         ImplicitObject o = make_implicit(text, glm::dvec3(-2.0), glm::dvec3(2.0));
-        ASSERT_TRUE(o.surface.polynomial) << text;
+        ASSERT_TRUE(o.surface->polynomial) << text;
         std::vector<double> expected;
         for (double ri : r) {
             double t = (ri - glm::dot(n, origin)) / glm::dot(n, d);
@@ -74,7 +74,7 @@ TEST(ImplicitIntersect, CompanionMethodFindsEveryKnownRootAlongARay) {
             if (t > 0 && glm::all(glm::lessThan(glm::abs(p), glm::dvec3(2.0 - 1e-6)))) expected.push_back(t);
         }
         std::sort(expected.begin(), expected.end());
-        std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(o.surface, {origin, d}, 0.0, 1e9);
+        std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(*o.surface, {origin, d}, 0.0, 1e9);
         std::vector<double> simple;
         for (const auto& root : roots) {
             EXPECT_EQ(root.kind, RootKind::Simple) << trial;
@@ -111,7 +111,7 @@ TEST(ImplicitIntersect, TorusRaysAimedAtItsPointsHitThere) {
     // (x^2 + y^2 + z^2 + R^2 - r^2)^2 = 4 R^2 (x^2 + z^2): the torus around the y axis.
     ImplicitObject torus = make_implicit("(x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4*R^2*(x^2 + z^2)",
                                          {-1.4, -0.4, -1.4}, {1.4, 0.4, 1.4}, {{"R", 1.0}, {"r", 0.35}});
-    ASSERT_EQ(torus.surface.degree(), 4);
+    ASSERT_EQ(torus.surface->degree(), 4);
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> angle(0.0, 2 * M_PI);
     int aimed = 0;
@@ -123,7 +123,7 @@ TEST(ImplicitIntersect, TorusRaysAimedAtItsPointsHitThere) {
         glm::dvec3 d = p - origin;  // t = 1 at p
         if (std::abs(glm::dot(glm::normalize(d), normal)) < 0.05) continue;
         ++aimed;
-        std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(torus.surface, {origin, d}, 0.0, 1e9);
+        std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(*torus.surface, {origin, d}, 0.0, 1e9);
         bool at_p = std::any_of(roots.begin(), roots.end(), [](const auto& r) { return std::abs(r.t - 1.0) < 1e-10; });
         EXPECT_TRUE(at_p) << i;
         auto hit = cpu::intersect(torus, {origin, d}, 0.0, 1e9);
@@ -136,7 +136,7 @@ TEST(ImplicitIntersect, TorusRaysAimedAtItsPointsHitThere) {
 // Without a polynomial, interval Newton: a sphere written with sqrt, against the closed form.
 TEST(ImplicitIntersect, IntervalNewtonAgreesWithTheClosedForm) {
     ImplicitObject implicit = make_implicit("sqrt(x^2 + y^2 + z^2) - 1.2", glm::dvec3(-1.3), glm::dvec3(1.3));
-    ASSERT_FALSE(implicit.surface.polynomial);
+    ASSERT_FALSE(implicit.surface->polynomial);
     Sphere sphere{glm::dvec3(0.0), 1.2};
     std::mt19937 rng(6);
     int hits = 0;
@@ -156,7 +156,7 @@ TEST(ImplicitIntersect, IntervalNewtonAgreesWithTheClosedForm) {
 // A gyroid (no polynomial): rays aimed at points of the surface hit at t = 1, or nearer.
 TEST(ImplicitIntersect, GyroidRaysAimedAtItsPointsHitThere) {
     ImplicitObject gyroid = make_implicit("sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)", glm::dvec3(-3.0), glm::dvec3(3.0));
-    ASSERT_FALSE(gyroid.surface.polynomial);
+    ASSERT_FALSE(gyroid.surface->polynomial);
     std::mt19937 rng(8);
     std::uniform_real_distribution<double> coordinate(-2.8, 2.8);
     int aimed = 0;
@@ -164,22 +164,22 @@ TEST(ImplicitIntersect, GyroidRaysAimedAtItsPointsHitThere) {
         // A point of the surface: Newton along the gradient from a random point.
         glm::dvec3 p(coordinate(rng), coordinate(rng), coordinate(rng));
         for (int k = 0; k < 30; ++k) {
-            surface::ImplicitPoint f = surface::evaluate_implicit(gyroid.surface, p);
+            surface::ImplicitPoint f = surface::evaluate_implicit(*gyroid.surface, p);
             p -= f.f / glm::dot(f.gradient, f.gradient) * f.gradient;
         }
-        surface::ImplicitPoint f = surface::evaluate_implicit(gyroid.surface, p);
+        surface::ImplicitPoint f = surface::evaluate_implicit(*gyroid.surface, p);
         if (std::abs(f.f) > 1e-13 || glm::any(glm::greaterThan(glm::abs(p), glm::dvec3(2.9)))) continue;
         glm::dvec3 n = glm::normalize(f.gradient);
         glm::dvec3 origin = p + 0.5 * glm::normalize(n + 0.5 * random_unit(rng));
         glm::dvec3 d = p - origin;
         if (std::abs(glm::dot(glm::normalize(d), n)) < 0.1) continue;
         ++aimed;
-        std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(gyroid.surface, {origin, d}, 0.0, 1.5);
+        std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(*gyroid.surface, {origin, d}, 0.0, 1.5);
         bool at_p = std::any_of(roots.begin(), roots.end(), [](const auto& r) { return std::abs(r.t - 1.0) < 1e-9; });
         EXPECT_TRUE(at_p) << i;
         for (const auto& r : roots) {
             glm::dvec3 q = origin + r.t * d;
-            EXPECT_LT(std::abs(surface::evaluate_implicit(gyroid.surface, q).f), 1e-8) << i;
+            EXPECT_LT(std::abs(surface::evaluate_implicit(*gyroid.surface, q).f), 1e-8) << i;
         }
     }
     EXPECT_GT(aimed, 200);
@@ -192,7 +192,7 @@ TEST(ImplicitIntersect, ATouchingRayIsAHit) {
     for (const char* text : {"x^2 + y^2 + z^2 - 1", "sqrt(x^2 + y^2 + z^2) - 1"}) {
         ImplicitObject sphere = make_implicit(text, glm::dvec3(-2.0), glm::dvec3(2.0));
         Ray ray{{-5.0, 1.0, 0.0}, {1.0, 0.0, 0.0}};
-        std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(sphere.surface, ray, 0.0, 1e9);
+        std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(*sphere.surface, ray, 0.0, 1e9);
         ASSERT_EQ(roots.size(), 1u) << text;
         EXPECT_EQ(roots[0].kind, RootKind::Touching) << text;
         EXPECT_NEAR(roots[0].t, 5.0, 1e-6) << text;
@@ -229,19 +229,19 @@ TEST(ImplicitIntersect, SingularPointsHaveFiniteNormals) {
         glm::dvec3 p(c(rng), c(rng), c(rng));
         // Newton on the gradient (a double point is a zero of grad f).
         for (int it = 0; it < 40; ++it) {
-            surface::ImplicitPoint f = surface::evaluate_implicit(kummer.surface, p);
+            surface::ImplicitPoint f = surface::evaluate_implicit(*kummer.surface, p);
             const double h = 1e-6;
             glm::dmat3 hessian;
             for (int a = 0; a < 3; ++a) {
                 glm::dvec3 e(0.0);
                 e[a] = h;
-                hessian[a] = (surface::evaluate_implicit(kummer.surface, p + e).gradient -
-                              surface::evaluate_implicit(kummer.surface, p - e).gradient) / (2 * h);
+                hessian[a] = (surface::evaluate_implicit(*kummer.surface, p + e).gradient -
+                              surface::evaluate_implicit(*kummer.surface, p - e).gradient) / (2 * h);
             }
             if (std::abs(glm::determinant(hessian)) < 1e-12) break;
             p -= glm::inverse(hessian) * f.gradient;
         }
-        surface::ImplicitPoint f = surface::evaluate_implicit(kummer.surface, p);
+        surface::ImplicitPoint f = surface::evaluate_implicit(*kummer.surface, p);
         if (std::abs(f.f) > 1e-9 || glm::length(f.gradient) > 1e-6) continue;  // a critical point off the surface
         ++tested;
         // Through the double point (f = 0 there with a vanishing gradient, a double root along
@@ -249,7 +249,7 @@ TEST(ImplicitIntersect, SingularPointsHaveFiniteNormals) {
         glm::dvec3 origin = p + 4.0 * random_unit(rng);
         for (double offset : {0.0, 1e-9, 1e-5}) {
             Ray ray = ray_through(origin, p + glm::dvec3(offset, 0.0, 0.0));
-            std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(kummer.surface, ray, 0.0, 1e9);
+            std::vector<cpu::ImplicitRoot> roots = cpu::implicit_roots(*kummer.surface, ray, 0.0, 1e9);
             const double t = glm::length(p - origin);
             bool at_p = std::any_of(roots.begin(), roots.end(), [&](const auto& r) { return std::abs(r.t - t) < 1e-6; });
             if (offset == 0.0) { EXPECT_TRUE(at_p) << "double point " << p.x << " " << p.y << " " << p.z; }
@@ -257,7 +257,7 @@ TEST(ImplicitIntersect, SingularPointsHaveFiniteNormals) {
             if (offset == 0.0) { ASSERT_TRUE(hit); }
             if (hit) { EXPECT_NEAR(glm::length(hit->normal), 1.0, 1e-12); }
         }
-        EXPECT_NEAR(glm::length(surface::implicit_normal(kummer.surface, p)), 1.0, 1e-12);
+        EXPECT_NEAR(glm::length(surface::implicit_normal(*kummer.surface, p)), 1.0, 1e-12);
     }
     EXPECT_GE(tested, 8);  // several of the 16 double points were found and tested
 }

@@ -48,7 +48,7 @@ void expect_error(const std::function<void()>& read, const std::string& file, in
         read();
         ADD_FAILURE() << "no error; expected one containing: " << part;
     } catch (const SceneError& e) {
-        EXPECT_EQ(e.where().file, file);
+        EXPECT_EQ(e.where().file.str(), file);
         EXPECT_EQ(e.where().line, line) << e.what();
         EXPECT_EQ(e.where().column, column) << e.what();
         EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << "message: " << e.what() << "\nexpected: " << part;

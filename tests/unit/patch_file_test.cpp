@@ -96,7 +96,7 @@ TEST(PatchFile, UnreadableFilesAreSceneErrorsNamingTheFile) {
             read_patch_file(path);
             FAIL() << path << " was read";
         } catch (const SceneError& e) {
-            EXPECT_EQ(e.where().file, path);
+            EXPECT_EQ(e.where().file.str(), path);
             EXPECT_EQ(format_error(e), path + ": error: " + reason);
         }
     }

@@ -60,7 +60,7 @@ poly = [1, 0, 0, 0, 2, 0, 0, -2, 0, -104,
         1, 0, 104, 0, 784]
 box = { min = [-12, -12, -12], max = [12, 12, 12] }
 )toml");
-    const surface::ImplicitSurface& s = std::get<ImplicitObject>(scene.objects.at(0).shape).surface;
+    const surface::ImplicitSurface& s = *std::get<ImplicitObject>(scene.objects.at(0).shape).surface;
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> u(-12.0, 12.0);
     for (int k = 0; k < 100; ++k) {

@@ -106,13 +106,13 @@ TEST(SceneLoader, ReadsAnImplicitSurface) {
         box = { min = [-3, -3, -3], max = [3, 3, 3] }
     )toml");
     ASSERT_EQ(s.objects.size(), 2u);
-    const auto& torus = std::get<ImplicitObject>(s.objects[0].shape).surface;
+    const auto& torus = *std::get<ImplicitObject>(s.objects[0].shape).surface;
     EXPECT_EQ(torus.degree(), 4);
     EXPECT_EQ(torus.box_lo, glm::dvec3(-1.4, -0.4, -1.4));
     EXPECT_EQ(torus.box_hi, glm::dvec3(1.4, 0.4, 1.4));
     EXPECT_EQ(glm::dvec3(torus.to_world * glm::dvec4(1, 0, 0, 1)), glm::dvec3(2, 1, 0));
     EXPECT_EQ(glm::dvec3(torus.to_local * glm::dvec4(2, 1, 0, 1)), glm::dvec3(1, 0, 0));
-    const auto& gyroid = std::get<ImplicitObject>(s.objects[1].shape).surface;
+    const auto& gyroid = *std::get<ImplicitObject>(s.objects[1].shape).surface;
     EXPECT_FALSE(gyroid.polynomial);
     EXPECT_EQ(gyroid.degree(), 0);
 }

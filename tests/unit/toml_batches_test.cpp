@@ -35,7 +35,7 @@ void expect_same_scene(const Scene& whole, const Scene& batches, const std::stri
         const Object& b = batches.objects[i];
         EXPECT_EQ(a.shape.index(), b.shape.index()) << what << " object " << i;
         EXPECT_EQ(a.material, b.material) << what << " object " << i;
-        EXPECT_EQ(a.where.file, b.where.file) << what << " object " << i;
+        EXPECT_EQ(a.where.file.str(), b.where.file.str()) << what << " object " << i;
         EXPECT_EQ(a.where.line, b.where.line) << what << " object " << i;
         EXPECT_EQ(a.where.column, b.where.column) << what << " object " << i;
         EXPECT_EQ(a.name, b.name) << what << " object " << i;

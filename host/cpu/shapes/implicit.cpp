@@ -407,17 +407,17 @@ std::vector<ImplicitRoot> implicit_roots(const ImplicitSurface& s, const Ray& ra
 
 std::vector<double> roots_on_line(const ImplicitObject& o, const Ray& ray) {
     std::vector<double> roots;
-    for (const ImplicitRoot& root : roots_along(o.surface, ray, -surface::kInf, surface::kInf, true)) roots.push_back(root.t);
+    for (const ImplicitRoot& root : roots_along(*o.surface, ray, -surface::kInf, surface::kInf, true)) roots.push_back(root.t);
     return roots;
 }
 
 bool inside(const ImplicitObject& o, const dvec3& p) {
-    const dvec3 local = dvec3(o.surface.to_local * glm::dvec4(p, 1.0));
-    return surface::evaluate_implicit(o.surface, local).f < 0.0;
+    const dvec3 local = dvec3(o.surface->to_local * glm::dvec4(p, 1.0));
+    return surface::evaluate_implicit(*o.surface, local).f < 0.0;
 }
 
 std::optional<SurfaceHit> intersect(const ImplicitObject& o, const Ray& ray, double t_min, double t_max) {
-    const ImplicitSurface& s = o.surface;
+    const ImplicitSurface& s = *o.surface;
     std::vector<ImplicitRoot> roots = roots_along(s, ray, t_min, t_max, false);
     if (roots.empty()) return std::nullopt;
     const double t = roots.front().t;

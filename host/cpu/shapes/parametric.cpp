@@ -330,7 +330,7 @@ std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const R
 // The gap past each root is beyond the search's 1e-10 of the surface's size.
 std::vector<LineCrossing> crossings_on_line(const ParametricObject& o, const Ray& ray, double t0, double t1) {
     const double gap = 1e-8 * glm::length(o.bounds_hi - o.bounds_lo) / glm::length(ray.dir);
-    return crossings_by_search([&](double from, double to) { return intersect(o.surface, ray, from, to); }, o.outward, ray, t0,
+    return crossings_by_search([&](double from, double to) { return intersect(*o.surface, ray, from, to); }, o.outward, ray, t0,
                                t1, gap);
 }
 

@@ -68,7 +68,7 @@ std::optional<SurfaceHit> intersect(const Superellipsoid& o, const Ray& ray, dou
 // and `uv` the surface's (u, v). Any ray direction length works: t is the ray's own parameter.
 std::optional<SurfaceHit> intersect(const surface::ParametricSurface& s, const Ray& ray, double t_min, double t_max);
 inline std::optional<SurfaceHit> intersect(const ParametricObject& p, const Ray& ray, double t_min, double t_max) {
-    return intersect(p.surface, ray, t_min, t_max);
+    return intersect(*p.surface, ray, t_min, t_max);
 }
 
 // Implicit surfaces f(x, y, z) = 0 (implicit.cpp): every root along the ray inside the box with t

@@ -74,23 +74,35 @@ AccelerationPlan plan_scene(const PlanInput& input, const PlanOptions& options) 
                          (acceleration == Acceleration::Bvh &&
                           (bounded_count >= kMinPrimitivesForBvh || (options.grids == GridUse::Forced && bounded_count > 0)));
     const bool analytic_outside = cheap_ones_stay_outside(input.primitives);
-    std::vector<Primitive> bounded;
+    std::vector<std::uint32_t> bounded;  // indices into input.primitives: a primitive is 16 times the size
     std::vector<PrimitiveWithBox> unbounded;
     std::vector<Aabb> boxes;
-    for (const auto& [p, box] : input.primitives) {
+    if (use_bvh) {
+        bounded.reserve(bounded_count);
+        boxes.reserve(bounded_count);
+    }
+    for (std::size_t i = 0; i < input.primitives.size(); ++i) {
+        const auto& [p, box] = input.primitives[i];
         if (use_bvh && box && !(analytic_outside && shape_is_boxable(p.type))) {
-            bounded.push_back(p);
+            bounded.push_back(static_cast<std::uint32_t>(i));
             boxes.push_back(*box);
         } else {
             unbounded.emplace_back(p, box);
         }
     }
+    std::shared_ptr<const Bvh> cached;
     Bvh built;
-    const Bvh& bvh = options.cache ? options.cache->build(boxes) : (built = build_bvh(boxes));
+    const Bvh& bvh = options.cache ? *(cached = options.cache->build(boxes)) : (built = build_bvh(boxes));
+    // Sized once: growing by doubling would hold the old and the new array at once.
+    plan.primitives.reserve(bvh.order.size() + unbounded.size());
+    plan.grid_boxes.reserve(bvh.order.size());
+    plan.nodes.reserve(bvh.nodes.size());
     for (std::uint32_t index : bvh.order) {
-        plan.primitives.push_back(bounded[index]);
+        plan.primitives.push_back(input.primitives[bounded[index]].first);
         plan.grid_boxes.push_back(boxes[index]);
     }
+    std::vector<Aabb>().swap(boxes);  // freed before the direction grids are built
+    std::vector<std::uint32_t>().swap(bounded);
     for (const lancer::BvhNode& n : bvh.nodes) {
         BvhNode g{};
         pack_box(n.box, g.lo, g.hi);

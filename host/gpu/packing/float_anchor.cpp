@@ -68,7 +68,7 @@ std::vector<std::string> float_resolution_notes(const Scene& scene, const glm::d
             "the object{} at {}:{} is {:.3g} across, {:.3g} from the camera (in its largest coordinate): the "
             "GPU's float arithmetic resolves only {:.3g} there, so its picture may be coarse; --backend cpu "
             "renders it in double",
-            name, o.where.file, o.where.line, extent, distance, distance * 0x1p-24));
+            name, o.where.file.str(), o.where.line, extent, distance, distance * 0x1p-24));
     }
     return notes;
 }

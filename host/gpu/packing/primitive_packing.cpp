@@ -364,7 +364,7 @@ struct PrimitivePacker {
     // itself (its affine map; its equations are compiled into the shader) is one SurfaceInfo.
     void operator()(const ParametricObject& p) {
         auto index = static_cast<uint>(out.surfaces.size());
-        const glm::dmat4& m = p.surface.to_world;  // column-major: m[column][row]
+        const glm::dmat4& m = p.surface->to_world;  // column-major: m[column][row]
         SurfaceInfo info{};
         info.row0 = vec4(float(m[0][0]), float(m[1][0]), float(m[2][0]), float(m[3][0]));
         info.row1 = vec4(float(m[0][1]), float(m[1][1]), float(m[2][1]), float(m[3][1]));
@@ -373,9 +373,9 @@ struct PrimitivePacker {
         info.inverse0 = vec4(float(inv[0][0]), float(inv[1][0]), float(inv[2][0]), float(inv[3][0]));
         info.inverse1 = vec4(float(inv[0][1]), float(inv[1][1]), float(inv[2][1]), float(inv[3][1]));
         info.inverse2 = vec4(float(inv[0][2]), float(inv[1][2]), float(inv[2][2]), float(inv[3][2]));
-        info.domain = vec4(float(p.surface.u0), float(p.surface.u1), float(p.surface.v0), float(p.surface.v1));
+        info.domain = vec4(float(p.surface->u0), float(p.surface->u1), float(p.surface->v0), float(p.surface->v1));
         out.surfaces.push_back(info);
-        for (const auto& cell : *surface::surface_cells(p.surface)) {
+        for (const auto& cell : *surface::surface_cells(*p.surface)) {
             // Bounds rounded outward to float; an unbounded one becomes float's largest value,
             // which the search treats as no bound (the packed arrays hold only finite floats).
             auto bound = [](double x, bool upper) {
@@ -418,7 +418,7 @@ struct PrimitivePacker {
     // One primitive with the box in the surface's own coordinates; its ImplicitInfo carries the
     // map from world space into them (f itself is compiled into the shader).
     void operator()(const ImplicitObject& o) {
-        const surface::ImplicitSurface& s = o.surface;
+        const surface::ImplicitSurface& s = *o.surface;
         auto index = static_cast<uint>(out.implicits.size());
         const glm::dmat4& m = s.to_local;  // column-major: m[column][row]
         ImplicitInfo info{};

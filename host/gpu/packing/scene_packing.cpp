@@ -25,6 +25,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     const Scene& scene = local ? *local : world;
 
     std::vector<PrimitiveWithBox> primitives;
+    primitives.reserve(scene.objects.size());  // most objects are one primitive: no doubling's second array
     const SpherePacking spheres = sphere_packing(scene);
     bool placed = false, object_space = false;
     packed.csg_leaf_frames = static_cast<uint>(scene.objects.size());

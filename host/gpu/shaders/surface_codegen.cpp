@@ -12,12 +12,12 @@ std::string surface_functions_glsl(const Scene& scene, bool float64) {
     for_each_object_and_leaf(scene.objects, [&](const Object& object) {
         if (const auto* p = std::get_if<ParametricObject>(&object.shape)) {
             std::string name = fmt::format("surface_{}", parametric);
-            functions += gpu::emit_glsl_surface(p->surface.x, p->surface.y, p->surface.z, name) + "\n";
+            functions += gpu::emit_glsl_surface(p->surface->x, p->surface->y, p->surface->z, name) + "\n";
             parametric_cases += fmt::format("        case {}u: {}(uv, P, Pu, Pv); return;\n", parametric, name);
             ++parametric;
         } else if (const auto* i = std::get_if<ImplicitObject>(&object.shape)) {
             std::string name = fmt::format("implicit_{}", implicit);
-            functions += gpu::emit_glsl_implicit(i->surface.f, name, float64) + "\n";
+            functions += gpu::emit_glsl_implicit(i->surface->f, name, float64) + "\n";
             value_cases += fmt::format("        case {}u: return {}(p, d, df);\n", implicit, name);
             gradient_cases += fmt::format("        case {}u: return {}_gradient(p);\n", implicit, name);
             interval_cases += fmt::format("        case {}u: {}_interval(o, d, s, f, df); return;\n", implicit, name);

@@ -47,14 +47,14 @@ RenderMemoryEstimate render_memory_estimate(const Scene& scene, std::uint64_t sc
     for_each_object_and_leaf(scene.objects, [&](const Object& o) {
         if (const auto* p = std::get_if<ParametricObject>(&o.shape)) {
             expressions = true;
-            const surface::Expr* xyz[] = {&p->surface.x, &p->surface.y, &p->surface.z};
+            const surface::Expr* xyz[] = {&p->surface->x, &p->surface->y, &p->surface->z};
             operations += static_cast<std::uint64_t>(surface::count_operations(surface::compile_program(xyz)));
         } else if (const auto* i = std::get_if<ImplicitObject>(&o.shape)) {
             // f becomes three float functions in the tracer (value and derivative along the ray,
             // gradient, interval enclosure), so each operation is counted three times; the
             // enclosure at a point in double, inlined at two places, is counted below.
             expressions = true;
-            const auto n = static_cast<std::uint64_t>(surface::count_operations(i->surface.program));
+            const auto n = static_cast<std::uint64_t>(surface::count_operations(i->surface->program));
             operations += 3 * n;
             implicit_operations += n;
         }
