@@ -315,7 +315,9 @@ void for_each_batch(std::string_view text, const SceneTextParts& parts, const st
     };
     std::deque<std::future<toml::table>> ahead;
     std::size_t launched = 0;
-    const auto launch = [&] { ahead.push_back(std::async(std::launch::async, parse, launched++)); };
+    // A scene of one batch (most) is parsed where it is read: no thread at start-up.
+    const auto policy = parts.batches.size() > 1 ? std::launch::async : std::launch::deferred;
+    const auto launch = [&] { ahead.push_back(std::async(policy, parse, launched++)); };
     while (launched < parts.batches.size() && ahead.size() < kParsesAhead) launch();
     for (std::size_t i = 0; i < parts.batches.size(); ++i) {
         toml::table tree = ahead.front().get();

@@ -1,8 +1,6 @@
 // The scene read in batches of [[object]] tables (scene/object_batches.hpp) against the whole
 // document read as one tree: the scanner's split, and the same Scene and errors from both.
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -12,13 +10,6 @@
 
 namespace lancer {
 namespace {
-
-std::string file_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 // What would differ if a batch read an object otherwise than the whole document does.
 void expect_same_scene(const Scene& whole, const Scene& batches, const std::string& what) {
@@ -66,7 +57,7 @@ TEST(TomlBatches, EveryShippedSceneReadsAlikeInBatches) {
     for (const auto& entry : std::filesystem::directory_iterator(test::source_path("scenes"))) {
         if (entry.path().extension() != ".toml") continue;
         const std::string path = entry.path().string();
-        expect_batches_read_alike(file_text(path), path);
+        expect_batches_read_alike(test::read_file(path), path);
         ++count;
     }
     EXPECT_GE(count, 10);
