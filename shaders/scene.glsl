@@ -358,6 +358,7 @@ bool grid_contract_broken = false;
 // DIRECTION_GRID_MIRROR for their reflections in the flat mirror, DIRECTION_GRID_LIGHT + k for
 // shadow rays to light k), or NO_GRID (never where GRIDS_ONLY).
 bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, uint grid, out Nearest best) {
+    shadow_ray_any_hit = any_hit;
     best = Nearest(t_max, NO_PRIMITIVE, vec2(0.0), 0.0);
     // The branch on CHEAP_SHAPES alone, a specialisation constant, is one the host removes
     // (spirv_specialize.hpp) before lavapipe sees the module.

@@ -71,7 +71,8 @@ bool csg_crossing(Primitive leaf, Ray world_ray, float t_min, float t_max, out f
     vec3 n;
     if (mesh) {
         float t;
-        if (!mesh_intersect(leaf, ray, t_low, t_hit, t, uv, error)) return false;
+        // The nearest crossing, even for a shadow ray: it opens or closes the leaf's interval.
+        if (!element_set_intersect(leaf, false, false, ray, t_low, t_hit, t, uv)) return false;
         float normal_error;
         n = mesh_hit_normal(leaf, ray, t, ray.origin + t * ray.dir, uv, normal_error);
         leaving = leaf.p0.z * dot(n, ray.dir) > 0.0;

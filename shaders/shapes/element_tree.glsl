@@ -2,6 +2,11 @@
 // (shapes/mesh.glsl) or a sphere set's spheres (shapes/spheres.glsl), nearest boxes first, in the
 // file's coordinates. Twin of host/cpu/shapes/element_walk.hpp (which walks its own tree).
 
+// Whether any hit will do for the ray traced now (scene.glsl's trace_scene sets it for shadow
+// rays): a set's walk then stops at the first element it finds. A global, not a parameter of
+// every shape's <name>_intersect, for the one family that can use it.
+bool shadow_ray_any_hit = false;
+
 const int ELEMENT_STACK_SIZE = 64;  // host/accel/bvh.cpp bounds a tree's depth by 60
 
 // The element tests, each in its shape's file: t in (t_min, t_max), or -1. A triangle's takes the
@@ -10,8 +15,11 @@ void shear_axes(vec3 d, out ivec3 k, out vec3 s);
 float mesh_element_hit(uint triangle, vec3 origin, ivec3 k, vec3 s, float t_min, float t_max);
 float spheres_element_hit(uint sphere, Ray ray, float t_min, float t_max);
 
-// The nearest element hit in (t_min, best), best lowered to it; NO_PRIMITIVE if none.
-uint element_tree_nearest(MeshInfo info, bool spheres, Ray ray, float t_min, inout float best) {
+// The nearest element hit in (t_min, best), best lowered to it, or with any_hit the first found;
+// NO_PRIMITIVE if none. "While-while" as the scene's walk (scene.glsl): interior nodes in one
+// loop until a leaf, the leaf's elements after it, so that lavapipe does not run a masked element
+// test at every step (docs/performance.md).
+uint element_tree_nearest(MeshInfo info, bool spheres, bool any_hit, Ray ray, float t_min, inout float best) {
     vec3 inv_dir = safe_inverse(ray.dir);
     ivec3 k = ivec3(0);
     vec3 s = vec3(0.0);
@@ -22,17 +30,24 @@ uint element_tree_nearest(MeshInfo info, bool spheres, Ray ray, float t_min, ino
     int sp = 0;
     uint node = info.first_node;
     if (box_entry(mesh_node_at(node).lo.xyz, mesh_node_at(node).hi.xyz, ray.origin, inv_dir, best) == INFINITY) return NO_PRIMITIVE;
+    bool visit = true;  // `node` is next; else the next is popped from the stack
     for (;;) {
-        MeshNode n = mesh_node_at(node);
-        if (n.count > 0u) {
-            for (uint i = n.first; i < n.first + n.count; ++i) {
-                float t = spheres ? spheres_element_hit(i, ray, t_min, best) : mesh_element_hit(i, ray.origin, k, s, t_min, best);
-                if (t >= 0.0) {
-                    best = t;
-                    best_element = i;
+        MeshNode n;
+        for (;;) {
+            if (!visit) {
+                bool found = false;
+                while (sp > 0) {
+                    --sp;
+                    if (stack_t[sp] <= best) {
+                        node = stack[sp];
+                        found = true;
+                        break;
+                    }
                 }
+                if (!found) return best_element;
             }
-        } else {
+            n = mesh_node_at(node);
+            if (n.count > 0u) break;
             uint near_child = n.first, far_child = n.first + 1u;
             MeshNode a = mesh_node_at(near_child), b = mesh_node_at(far_child);
             float t_near = box_entry(a.lo.xyz, a.hi.xyz, ray.origin, inv_dir, best);
@@ -41,37 +56,35 @@ uint element_tree_nearest(MeshInfo info, bool spheres, Ray ray, float t_min, ino
                 uint c = near_child; near_child = far_child; far_child = c;
                 float f = t_near; t_near = t_far; t_far = f;
             }
-            if (t_near != INFINITY) {
+            visit = t_near != INFINITY;
+            if (visit) {
                 if (t_far != INFINITY && sp < ELEMENT_STACK_SIZE) {
                     stack[sp] = far_child;
                     stack_t[sp] = t_far;
                     ++sp;
                 }
                 node = near_child;
-                continue;
             }
         }
-        // The next subtree that may still hold something nearer than the best hit.
-        bool found = false;
-        while (sp > 0) {
-            --sp;
-            if (stack_t[sp] <= best) {
-                node = stack[sp];
-                found = true;
-                break;
+        for (uint i = n.first; i < n.first + n.count; ++i) {
+            float t = spheres ? spheres_element_hit(i, ray, t_min, best) : mesh_element_hit(i, ray.origin, k, s, t_min, best);
+            if (t >= 0.0) {
+                best = t;
+                best_element = i;
+                if (any_hit) return i;
             }
         }
-        if (!found) break;
+        visit = false;
     }
     return best_element;
 }
 
 // A shape's <name>_intersect for a placement p of a mesh or sphere set (p.data: its MeshInfo):
 // uv.x = which element of its set was hit (a whole number: exact in float below 2^24).
-bool element_set_intersect(Primitive p, bool spheres, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv) {
+bool element_set_intersect(Primitive p, bool spheres, bool any_hit, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv) {
     MeshInfo info = mesh_at(p.data);
     float best = t_max;
-    uint element = element_tree_nearest(info, spheres, ray, t_min, best);
+    uint element = element_tree_nearest(info, spheres, any_hit, ray, t_min, best);
     if (element == NO_PRIMITIVE) return false;
     t_hit = best;
     uv = vec2(float(element - info.first_element), 0.0);

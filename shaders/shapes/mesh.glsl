@@ -52,7 +52,7 @@ float mesh_element_hit(uint triangle, vec3 origin, ivec3 k, vec3 s, float t_min,
 }
 
 bool mesh_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
-    return element_set_intersect(p, false, ray, t_min, t_max, t_hit, uv);
+    return element_set_intersect(p, false, shadow_ray_any_hit, ray, t_min, t_max, t_hit, uv);
 }
 
 MeshTriangle mesh_hit_triangle(Primitive p, vec2 uv) { return mesh_triangle_at(mesh_at(p.data).first_element + uint(uv.x)); }

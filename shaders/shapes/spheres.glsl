@@ -18,7 +18,7 @@ float spheres_element_hit(uint sphere, Ray ray, float t_min, float t_max) {
 }
 
 bool spheres_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
-    return element_set_intersect(p, true, ray, t_min, t_max, t_hit, uv);
+    return element_set_intersect(p, true, shadow_ray_any_hit, ray, t_min, t_max, t_hit, uv);
 }
 
 vec4 spheres_hit_sphere(Primitive p, vec2 uv) { return set_sphere_at(mesh_at(p.data).first_element + uint(uv.x)).sphere; }

@@ -91,5 +91,58 @@ TEST(CsgSurfaces, AreTheSolidsTheyEnclose) {
     test::expect_same_picture("csg-surfaces-backends", gpu, cpu);
 }
 
+// An opaque slab with a round hole cut by a mesh ball, seen from under the slab: the floor is lit
+// through the hole. Shadow rays may stop at any blocker, but a mesh leaf's walk must still find
+// its nearest crossing, or the hole's walls close where they are not and the lit disc cracks.
+std::string slab_with_hole(const std::string& hole) {
+    return fmt::format(R"([render]
+width = 160
+height = 90
+samples = 1
+
+[camera]
+eye = [0, 1.2, -2.5]
+look_at = [0, 0, 0]
+fov = 50
+
+[[light]]
+position = [0.3, 9, 0.2]
+
+[material.floor]
+color = [0.9, 0.9, 0.9]
+
+[material.ivory]
+color = [0.92, 0.9, 0.82]
+
+[[object]]
+type = "plane"
+normal = [0, 1, 0]
+material = "floor"
+
+[[object]]
+type = "difference"
+material = "ivory"
+objects = [{{ type = "box", min = [-2, 1.5, -2], max = [2, 1.7, 2] }}, {}]
+)",
+                       hole);
+}
+
+// An icosphere as OBJ text: many triangles, so that a ray's leaves hold near and far ones.
+std::string icosphere_obj(int subdivisions, const glm::dvec3& centre, double radius) {
+    const TriangleMesh m = test::icosphere(subdivisions, centre, radius);
+    std::string text;
+    for (const glm::dvec3& p : m.positions) text += fmt::format("v {} {} {}\n", p.x, p.y, p.z);
+    for (const auto& t : m.triangles) text += fmt::format("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1);
+    return text;
+}
+
+TEST(CsgSurfaces, MeshHoleLetsShadowRaysThrough) {
+    const std::string dir = test::fresh_dir("csg-mesh-hole");
+    test::write_file(dir + "/ball.obj", icosphere_obj(4, glm::dvec3(0.0, 1.6, 0.0), 0.7));
+    const Scene mesh = test::scene_from_text(slab_with_hole("{ type = \"mesh\", file = \"" + dir + "/ball.obj\" }"));
+    test::expect_same_picture("csg-mesh-hole-backends", to_srgb8(test::render_on(test::Backend::Gpu, mesh)),
+                              to_srgb8(test::render_on(test::Backend::Cpu, mesh)));
+}
+
 }  // namespace
 }  // namespace lancer
