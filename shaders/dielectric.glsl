@@ -80,6 +80,15 @@ vec3 refraction(vec3 d, vec3 n, float eta, float cos_i, float cos_t) {
     return normalize(eta * d + (eta * cos_i - cos_t) * n);
 }
 
+// A refracted direction t kept across the surface of geometric normal n (facing the incoming ray):
+// refraction about a shading normal (a smooth mesh's, a bump's) can bend a grazing ray back out;
+// such a t is mirrored in the surface's plane, which leaves every t that crosses it unchanged and
+// turns continuously (bounce_direction's rule for mirror rays). Twin of host/cpu/dielectric.cpp's.
+vec3 crossing_direction(vec3 t, vec3 n) {
+    float above = dot(t, n);
+    return above > 0.0 ? t - 2.0 * above * n : t;
+}
+
 const uint MAX_SHADOW_CROSSINGS = 16u;
 
 // The primitive that last blocked a shadow ray to each of the first 4 lights, tested first by

@@ -159,7 +159,9 @@ void main() {
             // rays see to that): the caustic map if every bounce was specular, else the global one.
             if (max3(diffuse) > 0.0 && bounces > 0u) store_photon(p, ray.dir, power, specular_only ? 0u : 1u);
             float cos_t = 0.0;
-            float f = clear ? fresnel(dot(wo, n), n1, n2, cos_t) : 0.0;
+            vec3 bend = sheet ? n : look.normal;  // as trace.comp's phong_hit bends light
+            float cos_i = max(dot(wo, bend), 0.0);
+            float f = clear ? fresnel(cos_i, n1, n2, cos_t) : 0.0;
             vec3 passing = (1.0 - m.reflection) * transmission;
             vec3 w_mirror = m.reflection + passing * f;
             vec3 w_refract = passing * (1.0 - f);
@@ -177,7 +179,7 @@ void main() {
             } else if ((v -= p_mirror) < p_refract) {
                 weight = w_refract / p_refract;
                 refracts = true;
-                if (!sheet) ray.dir = refraction(ray.dir, n, n1 / n2, dot(wo, n), cos_t);
+                if (!sheet) ray.dir = crossing_direction(refraction(ray.dir, bend, n1 / n2, cos_i, cos_t), n);
             } else if (v - p_refract < p_diffuse) {
                 weight = diffuse / p_diffuse;
                 float u1 = next_number(rng);

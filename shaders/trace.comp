@@ -70,15 +70,17 @@ void phong_hit(Material m, Hit hit, vec3 p, vec3 n, Branch b, Media beyond, bool
         // Fresnel splits what the surface transmits between the mirror and the refracted ray.
         float n1 = medium_ior(innermost(b.media));
         float n2 = sheet ? m.transmission.w : medium_ior(innermost(beyond));
-        float cos_i = -dot(b.ray.dir, n);
+        // About the shading normal, as POV-Ray bends light; grazing it, all is reflected.
+        vec3 bend = sheet ? n : look.normal;
+        float cos_i = max(-dot(b.ray.dir, bend), 0.0);
         float cos_t;
         float f = fresnel(cos_i, n1, n2, cos_t);
         vec3 passing = b.weight * (1.0 - m.reflection) * m.transmission.rgb;
         s.reflected_weight += passing * f;
         s.refracted_weight = passing * (1.0 - f);
-        if (!sheet) s.refracted_dir = refraction(b.ray.dir, n, n1 / n2, cos_i, cos_t);
+        if (!sheet) s.refracted_dir = crossing_direction(refraction(b.ray.dir, bend, n1 / n2, cos_i, cos_t), n);
     }
-    // A bump tilts the mirror direction; refraction follows the geometric surface.
+    // A bump or a smooth mesh tilts the mirror direction, and the refracted one where it can.
     s.reflected_dir = bounce_direction(b.ray.dir, look.normal, n);
 }
 

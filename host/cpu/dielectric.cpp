@@ -47,6 +47,11 @@ dvec3 refract(const dvec3& d, const dvec3& n, double eta, double cos_i, double c
     return glm::normalize(eta * d + (eta * cos_i - cos_t) * n);
 }
 
+dvec3 crossing_direction(const dvec3& t, const dvec3& n) {
+    const double above = glm::dot(t, n);
+    return above > 0.0 ? t - 2.0 * above * n : t;
+}
+
 dvec3 beer_lambert(const dvec3& a, double distance) {
     dvec3 left(1.0);
     for (int c = 0; c < 3; ++c)

@@ -46,6 +46,12 @@ Fresnel fresnel(double cos_i, double n1, double n2);
 // origin, for eta = n1 / n2 and the cosines of fresnel().
 dvec3 refract(const dvec3& d, const dvec3& n, double eta, double cos_i, double cos_t);
 
+// A refracted direction t kept across the surface of geometric normal n (facing the incoming ray):
+// refraction about a shading normal (a smooth mesh's, a bump's) can bend a grazing ray back out;
+// such a t is mirrored in the surface's plane, which leaves every t that crosses it unchanged and
+// turns continuously (bounce_direction's rule for mirror rays). Twin of shaders/dielectric.glsl's.
+dvec3 crossing_direction(const dvec3& t, const dvec3& n);
+
 // Beer-Lambert: the fraction of light left after `distance` through a medium of absorption
 // coefficient a (per unit distance, per channel); a channel with a = 0 keeps everything.
 dvec3 beer_lambert(const dvec3& a, double distance);

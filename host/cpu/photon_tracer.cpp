@@ -176,7 +176,9 @@ private:
                 const dvec3 transmission = clear ? m.transmission : dvec3(0.0);
                 const dvec3 diffuse = (1.0 - m.reflection) * (1.0 - transmission) * m.diffuse * look.pigment;
                 if (max_of(diffuse) > 0.0) store({p, ray.dir, power}, bounces, specular_only, out);
-                Fresnel f = clear ? fresnel(glm::dot(wo, n), n1, n2) : Fresnel{0.0, 0.0};
+                const dvec3 bend = sheet ? n : look.normal;  // as Tracer::phong_hit bends light
+                const double cos_i = std::max(glm::dot(wo, bend), 0.0);
+                Fresnel f = clear ? fresnel(cos_i, n1, n2) : Fresnel{0.0, 0.0};
                 const dvec3 passing = (1.0 - m.reflection) * transmission;
                 const dvec3 weights[3] = {m.reflection + passing * f.reflectance, passing * (1.0 - f.reflectance), diffuse};
                 double probabilities[3] = {max_of(weights[0]), max_of(weights[1]), max_of(weights[2])};
@@ -190,7 +192,7 @@ private:
                     ray.dir = bounce_direction(ray.dir, look.normal, n);
                 } else if (event == 1) {
                     refracts = true;
-                    if (!sheet) ray.dir = refract(ray.dir, n, n1 / n2, glm::dot(wo, n), f.cos_t);
+                    if (!sheet) ray.dir = crossing_direction(refract(ray.dir, bend, n1 / n2, cos_i, f.cos_t), n);
                 } else {
                     // Lambertian about the shading normal, kept above the geometric surface.
                     double u1 = rng.next(), u2 = rng.next();

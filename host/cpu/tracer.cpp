@@ -275,7 +275,7 @@ dvec3 Tracer::phong_hit(const Material& m, const Hit& hit, const dvec3& p, const
         dvec3 irradiance = photons_->irradiance(p, n);
         color += scale * (m.diffuse / kPi) * look.pigment * (1.0 - m.transmission) * irradiance;
     }
-    // A bump tilts the mirror direction; refraction follows the geometric surface.
+    // A bump or a smooth mesh tilts the mirror direction, and the refracted one where it can.
     reflected = {{p + ray_offset(p, offset_origin_) * n, bounce_direction(b.ray.dir, look.normal, n)}, p, b.weight * m.reflection,
                  b.depth + 1, b.media};
     refracted = {{p, b.ray.dir}, p, dvec3(0.0), b.depth + 1, beyond};
@@ -283,12 +283,14 @@ dvec3 Tracer::phong_hit(const Material& m, const Hit& hit, const dvec3& p, const
         // Fresnel splits what the surface transmits between the mirror and the refracted ray.
         double n1 = ior_of(b.media);
         double n2 = sheet ? m.ior : ior_of(beyond);
-        double cos_i = -glm::dot(b.ray.dir, n);
+        // About the shading normal, as POV-Ray bends light; grazing it, all is reflected.
+        const dvec3 bend = sheet ? n : look.normal;
+        double cos_i = std::max(-glm::dot(b.ray.dir, bend), 0.0);
         Fresnel f = fresnel(cos_i, n1, n2);
         dvec3 passing = b.weight * (1.0 - m.reflection) * m.transmission;
         reflected.weight += passing * f.reflectance;
         refracted.weight = passing * (1.0 - f.reflectance);
-        if (!sheet) refracted.ray.dir = refract(b.ray.dir, n, n1 / n2, cos_i, f.cos_t);
+        if (!sheet) refracted.ray.dir = crossing_direction(refract(b.ray.dir, bend, n1 / n2, cos_i, f.cos_t), n);
         refracted.ray.origin = past_surface(hit.object->shape, p, n, refracted.ray.dir, ray_offset(p, offset_origin_));
     }
     return color;

@@ -127,18 +127,9 @@ objects = [{{ type = "box", min = [-2, 1.5, -2], max = [2, 1.7, 2] }}, {}]
                        hole);
 }
 
-// An icosphere as OBJ text: many triangles, so that a ray's leaves hold near and far ones.
-std::string icosphere_obj(int subdivisions, const glm::dvec3& centre, double radius) {
-    const TriangleMesh m = test::icosphere(subdivisions, centre, radius);
-    std::string text;
-    for (const glm::dvec3& p : m.positions) text += fmt::format("v {} {} {}\n", p.x, p.y, p.z);
-    for (const auto& t : m.triangles) text += fmt::format("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1);
-    return text;
-}
-
 TEST(CsgSurfaces, MeshHoleLetsShadowRaysThrough) {
     const std::string dir = test::fresh_dir("csg-mesh-hole");
-    test::write_file(dir + "/ball.obj", icosphere_obj(4, glm::dvec3(0.0, 1.6, 0.0), 0.7));
+    test::write_file(dir + "/ball.obj", test::obj_text(test::icosphere(4, glm::dvec3(0.0, 1.6, 0.0), 0.7)));
     const Scene mesh = test::scene_from_text(slab_with_hole("{ type = \"mesh\", file = \"" + dir + "/ball.obj\" }"));
     test::expect_same_picture("csg-mesh-hole-backends", to_srgb8(test::render_on(test::Backend::Gpu, mesh)),
                               to_srgb8(test::render_on(test::Backend::Cpu, mesh)));

@@ -120,8 +120,12 @@ TEST(MeshOnDevice, TheStanfordBunnyIsTheSameOnBothBackends) {
         scene.render.width = 96;
         scene.render.height = 54;
         scene.render.samples = 2;
-        if (scene.photons) {  // the glass: its caustic's few photons through the chaotic paths would differ too
-            scene.render.max_depth = 2;
+        // The glass: a ray bent along the smooth normals of 69,451 small facets takes chaotic
+        // paths inside, on which float and double part after a few bounces (0.1% of pixels at
+        // depth 2), and so would its caustic's photons. One bounce in the glass is compared here;
+        // smooth_refraction_test.cpp compares deep paths through a ball that is not chaotic.
+        if (scene.photons) {
+            scene.render.max_depth = 1;
             scene.photons.reset();
         }
         test::expect_same_picture(name, to_srgb8(test::render_on(test::Backend::Gpu, scene)),

@@ -1,7 +1,8 @@
 // The GPU's photon mapping against the CPU reference's: different code (a hashed grid built by
 // a compute sort in float; a kd-tree in double), the same estimate. Both render the same small
 // scene (a caustic, colour bleeding) with six seeds; region by region, the means over the seeds
-// must agree within their confidence bounds. And the GPU gives the same bytes run after run.
+// must agree within their confidence bounds, also with the ball a smooth glass mesh. And the GPU
+// gives the same bytes run after run.
 #include <cmath>
 #include <cstring>
 
@@ -9,6 +10,7 @@
 
 #include "cpu/cpu_renderer.hpp"
 #include "scene/load_scene.hpp"
+#include "support/test_meshes.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
@@ -17,12 +19,27 @@ namespace {
 constexpr int kSeeds = 6;
 constexpr int kRegionsX = 4, kRegionsY = 3;
 
-Scene small_scene(std::uint32_t seed) {
-    Scene scene = load_scene(test::source_path("tests/data/photons/small.toml"));
+Scene with_photon_settings(Scene scene, std::uint32_t seed) {
     scene.photons->seed = seed;
     scene.photons->passes = 4;
     scene.photons->count = 20000;
     return scene;
+}
+
+Scene small_scene(std::uint32_t seed) { return with_photon_settings(load_scene(test::source_path("tests/data/photons/small.toml")), seed); }
+
+// The same scene with its glass ball as an icosphere mesh shaded smooth: photons bend along its
+// vertex normals on both backends, as camera rays do.
+Scene smooth_mesh_scene(std::uint32_t seed) {
+    static const std::string dir = [] {
+        std::string d = test::fresh_dir("photon-smooth-mesh");
+        test::write_file(d + "/ball.obj", test::obj_text(test::icosphere(2, glm::dvec3(0.0, 0.7, 0.0), 0.6)));
+        return d;
+    }();
+    std::string text = test::read_file(test::source_path("tests/data/photons/small.toml"));
+    const std::string sphere = "type = \"sphere\"\ncenter = [0, 0.7, 0]\nradius = 0.6";
+    text.replace(text.find(sphere), sphere.size(), "type = \"mesh\"\nfile = \"" + dir + "/ball.obj\"\nsmooth = true");
+    return with_photon_settings(test::scene_from_text(text), seed);
 }
 
 // Per region, the mean of r + g + b over its pixels.
@@ -39,10 +56,10 @@ std::vector<double> region_means(const FloatImage& image) {
     return sums;
 }
 
-TEST(PhotonBackends, AgreeRegionByRegionWithinTheirConfidenceBounds) {
+void expect_regions_agree(Scene (*make_scene)(std::uint32_t)) {
     std::vector<std::vector<double>> gpu, cpu;
     for (int s = 0; s < kSeeds; ++s) {
-        Scene scene = small_scene(std::uint32_t(s));
+        Scene scene = make_scene(std::uint32_t(s));
         gpu.push_back(region_means(test::gpu_renderer().render(scene, {})));
         cpu.push_back(region_means(CpuRenderer().render(scene, {})));
     }
@@ -62,6 +79,10 @@ TEST(PhotonBackends, AgreeRegionByRegionWithinTheirConfidenceBounds) {
                                    << " +- " << std::sqrt(vc);
     }
 }
+
+TEST(PhotonBackends, AgreeRegionByRegionWithinTheirConfidenceBounds) { expect_regions_agree(small_scene); }
+
+TEST(PhotonBackends, AgreeThroughASmoothGlassMesh) { expect_regions_agree(smooth_mesh_scene); }
 
 TEST(PhotonBackends, GpuGivesTheSameBytesRunAfterRun) {
     Scene scene = small_scene(3);

@@ -100,6 +100,21 @@ inline std::string cube_obj(const glm::dvec3& centre, double a, bool inward = fa
     return text;
 }
 
+// A mesh as OBJ text: its vertices (shortest round-trip decimals), their normals where it has
+// them, and its triangles.
+inline std::string obj_text(const TriangleMesh& m) {
+    std::string text;
+    for (const glm::dvec3& p : m.positions) text += fmt::format("v {} {} {}\n", p.x, p.y, p.z);
+    for (const glm::dvec3& n : m.normals) text += fmt::format("vn {} {} {}\n", n.x, n.y, n.z);
+    const bool normals = m.normals.size() == m.positions.size();
+    for (const auto& t : m.triangles) {
+        text += "f";
+        for (std::uint32_t v : t) text += normals ? fmt::format(" {0}//{0}", v + 1) : fmt::format(" {}", v + 1);
+        text += "\n";
+    }
+    return text;
+}
+
 // The same cube as a closed Bezier surface, an object table's text: six flat bicubic patches,
 // S_u x S_v out of the cube (in, where `inward`; `flipped` turns one face alone), and `extra`
 // keys (a material) in the table.
