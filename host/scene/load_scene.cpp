@@ -24,6 +24,7 @@
 #include "scene/parse_objects.hpp"
 #include "scene/parse_optics.hpp"
 #include "scene/parse_shapes.hpp"
+#include "scene/plain_toml.hpp"
 #include "scene/string_position.hpp"
 #include "scene/scene_values.hpp"
 #include "scene/transform.hpp"
@@ -311,7 +312,9 @@ template <class Read>
 void for_each_batch(std::string_view text, const SceneTextParts& parts, const std::string& path, Read read) {
     const auto parse = [&](std::size_t i) {
         const ObjectBatch& b = parts.batches[i];
-        return toml::parse(text.substr(b.begin, b.end - b.begin), std::string_view(path));
+        const std::string_view batch = text.substr(b.begin, b.end - b.begin);
+        if (std::optional<toml::table> plain = parse_plain_toml(batch, path)) return std::move(*plain);
+        return toml::parse(batch, std::string_view(path));
     };
     std::deque<std::future<toml::table>> ahead;
     std::size_t launched = 0;
