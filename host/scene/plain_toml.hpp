@@ -1,7 +1,5 @@
 #pragma once
-// toml::parse spends nine tenths of its time on a million [[object]] tables lexing, not building
-// nodes (docs/performance.md): this reads the plain TOML such tables are written in to the very
-// same tree ten times faster, and leaves everything else, errors included, to toml::parse.
+// toml::parse's lexing, not its nodes, is most of a million [[object]] tables' load: this builds its very tree 8x faster.
 #include <optional>
 #include <string_view>
 
