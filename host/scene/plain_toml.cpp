@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+// It follows toml++ 3.3's parser (Debian 12's) to the column; PlainToml.* and the scene fuzz target
+// compare its trees with the installed toml::parse's, so another version's differences show there.
 namespace lancer {
 namespace plain {  // its own: the unity build shares anonymous namespaces among files
 namespace {
