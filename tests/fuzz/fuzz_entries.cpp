@@ -37,6 +37,7 @@
 #include "surface/polynomial.hpp"
 #include "mesh/obj_reader.hpp"
 #include "mesh/ply_reader.hpp"
+#include "fuzz/plain_toml_check.hpp"
 #include "core/magnitude.hpp"
 
 namespace lancer::fuzz {
@@ -343,6 +344,7 @@ void check_renderers_input(const Scene& accepted, const std::string& when) {
 void scene_entry(const std::uint8_t* data, std::size_t size) {
     // Patch files named in the scene are found beside the shipped scenes (file = "teapot.bpt").
     static const std::string path = std::string(LANCER_SOURCE_DIR) + "/scenes/fuzz-input.toml";
+    check_plain_toml(as_text(data, size), path);
     Scene scene;
     try {
         scene = parse_scene(as_text(data, size), path);

@@ -33,7 +33,7 @@ void check_scene_invariants(const Scene& scene, const std::string& when);
 // TOML text -> scene model (parse_scene): every object type, patch files relative to scenes/,
 // and the [animation] table, evaluated at its first, middle and last frame; then the BVH, the
 // GPU's packed buffers (every float finite) and a 3 x 2 pixel render by the CPU reference
-// (every pixel finite).
+// (every pixel finite). First, the plain TOML reader against toml::parse (plain_toml_check.hpp).
 void scene_entry(const std::uint8_t* data, std::size_t size);
 
 // An expression, as a parametric surface's x(u, v) -> parsed expression, evaluated at a point,
