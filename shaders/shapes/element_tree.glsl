@@ -35,6 +35,7 @@ uint element_tree_nearest(MeshInfo info, bool spheres, bool any_hit, Ray ray, fl
         MeshNode n;
         for (;;) {
             if (!visit) {
+                // Pop the next subtree that may still hold something nearer than the best hit.
                 bool found = false;
                 while (sp > 0) {
                     --sp;
