@@ -96,6 +96,7 @@ private:
     }
     void line_break();
     void comment();
+    void skip_blank_lines();
     void end_of_line();
     Key bare_key();
     toml::table* header(toml::table& root);
@@ -123,15 +124,9 @@ private:
 toml::table PlainReader::document() {
     toml::table root;
     toml::table* current = &root;
-    while (!done()) {
+    for (skip_blank_lines(); !done(); skip_blank_lines()) {
         const char c = peek();
-        if (c == ' ' || c == '\t') {
-            ++at_;
-        } else if (c == '\n' || c == '\r') {
-            line_break();
-        } else if (c == '#') {
-            comment();
-        } else if (c == '[') {
+        if (c == '[') {
             current = header(root);
         } else if (is_bare_key_char(c)) {
             key_value(*current);
@@ -145,6 +140,22 @@ toml::table PlainReader::document() {
     if (!text_.empty()) end = text_.back() == '\n' ? toml::source_position{last_line_break_.line, last_line_break_.column + 1} : position();
     set_source(root, {1, 1}, end);
     return root;
+}
+
+// Blanks, line breaks and comments, up to the next thing of substance (or the end).
+void PlainReader::skip_blank_lines() {
+    while (true) {
+        const char c = peek();
+        if (c == ' ' || c == '\t') {
+            ++at_;
+        } else if (c == '\n' || c == '\r') {
+            line_break();
+        } else if (c == '#') {
+            comment();
+        } else {
+            return;
+        }
+    }
 }
 
 // At '\n' or "\r\n".
@@ -413,18 +424,7 @@ NodePtr PlainReader::array() {
     auto a = std::make_unique<toml::array>();
     Last last = Last::Nothing;
     while (true) {
-        while (true) {
-            const char c = peek();
-            if (c == ' ' || c == '\t') {
-                ++at_;
-            } else if (c == '\n' || c == '\r') {
-                line_break();
-            } else if (c == '#') {
-                comment();
-            } else {
-                break;
-            }
-        }
+        skip_blank_lines();
         if (done()) decline();
         const char c = peek();
         if (c == ',') {
