@@ -65,10 +65,13 @@ LANCER_FEATURES(LANCER_DECLARE_FEATURE)
 
 // Each shape type's flags, from the sets above: SCENE_HAS_<NAME> (the scene has the shape),
 // <NAME>_BOXED and <NAME>_SPLIT (its family outside the BVH has a box, or one per half),
-// CSG_HAS_<NAME> (some CSG leaf is one: only those families' tests are compiled into the walk).
+// CSG_HAS_<NAME> (some CSG leaf is one: only those families' tests are compiled into the walk),
+// TRACES_<NAME> (some primitive outside CSG is one: its family's loop and its case of the
+// primitives' intersection, which lavapipe runs masked for every primitive, are compiled in).
 // Specialisation-constant expressions: the host folds them with the constants.
 #define LANCER_DECLARE_SHAPE_FLAGS(NAME, name, Type, type, traits)       \
     const bool SCENE_HAS_##NAME = (SCENE_SHAPES & (1u << SHAPE_##NAME)) != 0u; \
+    const bool TRACES_##NAME = ((SCENE_SHAPES & ~LEAF_ONLY_SHAPES) & (1u << SHAPE_##NAME)) != 0u; \
     const bool NAME##_BOXED = (BOXED_FAMILIES & (1u << SHAPE_##NAME)) != 0u;   \
     const bool NAME##_SPLIT = (SPLIT_FAMILIES & (1u << SHAPE_##NAME)) != 0u;   \
     const bool CSG_HAS_##NAME = (CSG_LEAF_SHAPES & (1u << SHAPE_##NAME)) != 0u;

@@ -44,7 +44,7 @@
 // closed shapes' only: csg.glsl, which follows, never calls itself).
 #define LANCER_LEAF_CASE(NAME, name, Type, type, traits)                                     \
     case SHAPE_##NAME:                                                                        \
-        hit = CSG_HAS_##NAME && ((traits) & (SHAPE_SOLID | SHAPE_CLOSED)) != 0u &&             \
+        hit = CSG_HAS_##NAME && ((traits) & families) != 0u &&                                \
               name##_intersect(p, ray, t_min * k, t_max * k, t_hit, uv, error);                \
         break;
 // CSG is no solid: its row of the switch calls this instead of itself (GLSL has no recursion).
@@ -52,7 +52,7 @@ bool csg_is_no_leaf(Primitive p, Ray ray, float t_min, float t_max, out float t_
     return false;
 }
 #define csg_intersect csg_is_no_leaf
-bool leaf_hit(Primitive p, Ray world_ray, float t_min, float t_max, out float t_hit, out vec2 uv, out float error) {
+bool leaf_hit(Primitive p, Ray world_ray, float t_min, float t_max, uint families, out float t_hit, out vec2 uv, out float error) {
     uv = vec2(0.0);
     error = 0.0;
     float k;
@@ -110,7 +110,7 @@ int leaf_root_side(Primitive p, Ray world_ray, float t, vec2 uv) {
 // A shape kept in its object's coordinates is tested there (placement.glsl).
 #define LANCER_INTERSECT_CASE(NAME, name, Type, type, traits)                                   \
     case SHAPE_##NAME:                                                                              \
-        hit = SCENE_HAS_##NAME && (!bounded || LANCER_MAY_BE_IN_BVH(traits)) &&               \
+        hit = TRACES_##NAME && (!bounded || LANCER_MAY_BE_IN_BVH(traits)) &&                  \
               name##_intersect(p, ray, t_min * k, t_max * k, t_hit, uv, error);                   \
         break;
 bool shape_intersect(uint type, Primitive p, Ray world_ray, float t_min, float t_max, bool bounded, out float t_hit, out vec2 uv,
@@ -251,7 +251,7 @@ bool enters_family_box(uint box, Ray ray, float limit) {
 // specialisation constants and the constant traits alone are ones the host removes
 // (spirv_specialize.hpp) where they are false.
 #define LANCER_FAMILY_LOOP(NAME, name, Type, type, traits)                                          \
-    if (SCENE_HAS_##NAME && LANCER_MAY_BE_OUTSIDE_BVH(traits)) {                                   \
+    if (TRACES_##NAME && LANCER_MAY_BE_OUTSIDE_BVH(traits)) {                                      \
         uint first = family_begin(SHAPE_##NAME), last = family_end(SHAPE_##NAME);                            \
         if (LANCER_BOXABLE(traits) && NAME##_BOXED) {                                              \
             float box_limit = LANCER_LOOP_LIMIT;                                                   \

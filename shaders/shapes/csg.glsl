@@ -3,10 +3,11 @@
 // CsgNode. Its convex leaves (SHAPE_SOLID: convex solids and half-spaces) are each inside along
 // the ray on one interval: from their first hit from -infinity to the reversed ray's (a
 // half-space's reaches to infinity). Its closed leaves that are not convex (SHAPE_CLOSED: tori,
-// implicit surfaces) are walked root by root from the line's start, each stretch between roots
-// told by f's sign at its middle (leaf_inside), adjacent stretches inside joined; so are the
-// surfaces that close a solid (SHAPE_ORIENTED: closed meshes, Bezier and parametric surfaces
-// declared closed), each stretch inside where the ray entered at its start, by the normal's side
+// implicit surfaces) are walked root by root from t_min (or from where the combination's value
+// depends on them again: csg_moot_until), each stretch between roots told by f's sign at its
+// middle (leaf_inside), adjacent stretches inside joined; so are the surfaces that close a solid
+// (SHAPE_ORIENTED: closed meshes, Bezier and parametric surfaces declared closed), from the
+// line's start, each stretch inside where the ray entered at its start, by the normal's side
 // there (csg_crossing). A walked leaf holds one interval at a time, the next found once the ray
 // passes its end; an interval the ray enters is held open, its end found only once the ray
 // passes its entry (csg_walk). The combination's surface
@@ -115,30 +116,36 @@ bool csg_crossing(Primitive leaf, Ray world_ray, float t_min, float t_max, out f
 float csg_walk_gap(Primitive node, float a) { return max(4e-6 * length(node.p1.xyz - node.p0.xyz), 5e-7 * abs(a)); }
 
 // A walked leaf's first interval inside that ends after `after`, walking on from its interval
-// `now` (empty at first: from the line's start; opened: from its start); empty where none. An
+// `now` (empty: afresh from `from`; opened: from its start); empty where none. An
 // interval whose entry the leaf's normal vouches for (leaf_root_side, csg_crossing) is returned
 // opened, (entry, INFINITY), its end found only if the combination's surface is not at its entry
 // (csg_intersect): most rays stop there, one search instead of three. A stretch is inside by
 // leaf_inside at its middle; a normal only ever decides the stretch it opens or closes, so that a
 // ray grazing a corner, whose second root lies within the gap, cannot carry a wrong side on.
-vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, vec2 now, float after) {
+vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, vec2 now, float after, float from) {
     vec2 span = vec2(INFINITY, -INFINITY);
     bool opened = now.y == INFINITY;
-    float a = opened ? now.x : now.y;
+    // A walk begun afresh starts at `from` (the ray's t_min, or where the leaf begins to matter
+    // again: csg_moot_until), not at the line's start: the roots before it (a shadow ray's own
+    // surface) are not searched, and its first stretch is told by its middle as any other; where
+    // inside, it is held from `after` (the leaf did not matter before `from`: no end there). A
+    // surface that closes a solid is told by its crossings: from the line's start.
+    bool from_point = !(now.x < now.y) && from > -INFINITY && !csg_crossed(leaf);
+    float a = opened ? now.x : (now.x < now.y ? now.y : (from_point ? from : -INFINITY));
     bool entered = opened;  // a surface that closes a solid: inside after a, where the ray entered it at a
     for (int i = 0; i < CSG_WALK_ROOTS; ++i) {
         float b, error;
         vec2 uv;
-        float start = a == -INFINITY ? -INFINITY : a + csg_walk_gap(node, a);
+        float start = a == -INFINITY || from_point ? a : a + csg_walk_gap(node, a);
         bool more, leaving = false;
         uint piece;
         if (csg_crossed(leaf)) more = csg_crossing(leaf, ray, start, INFINITY, b, uv, error, piece, leaving);
-        else more = leaf_hit(leaf, ray, start, INFINITY, b, uv, error);
+        else more = leaf_hit(leaf, ray, start, INFINITY, SHAPE_CLOSED, b, uv, error);
         bool inside = csg_crossed(leaf) ? entered : a != -INFINITY && leaf_inside(leaf, ray, 0.5 * (a + b));
         entered = !leaving;
         int side = !more ? -1 : (csg_crossed(leaf) ? (leaving ? 0 : 1) : leaf_root_side(leaf, ray, b, uv));
         if (more && inside) {
-            span = span.x < span.y ? vec2(span.x, b) : vec2(a, b);  // adjacent stretches inside join
+            span = span.x < span.y ? vec2(span.x, b) : vec2(from_point ? after : a, b);  // adjacent stretches inside join
             if (side == 0) {  // left
                 if (b > after) return span;
                 span = vec2(INFINITY, -INFINITY);
@@ -147,6 +154,7 @@ vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, vec2 now, float after) {
             if (span.y > after) return span;
             span = vec2(INFINITY, -INFINITY);
         }
+        from_point = false;
         if (!more) break;
         if (side == 1 && !(span.x < span.y) && b > after) return vec2(b, INFINITY);
         a = b;
@@ -169,8 +177,8 @@ vec2 csg_inside(Primitive leaf, Ray ray) {
     }
     // The exit is the reversed ray's entry: no second search from the entry, whose rounding
     // could find the entry again or step past a close exit.
-    if (!leaf_hit(leaf, ray, -INFINITY, INFINITY, t_in, uv, error)) return vec2(INFINITY, -INFINITY);
-    if (!leaf_hit(leaf, Ray(ray.origin, -ray.dir), -INFINITY, INFINITY, t_out, uv, error)) return vec2(INFINITY, -INFINITY);
+    if (!leaf_hit(leaf, ray, -INFINITY, INFINITY, SHAPE_SOLID, t_in, uv, error)) return vec2(INFINITY, -INFINITY);
+    if (!leaf_hit(leaf, Ray(ray.origin, -ray.dir), -INFINITY, INFINITY, SHAPE_SOLID, t_out, uv, error)) return vec2(INFINITY, -INFINITY);
     return vec2(t_in, -t_out);  // in >= out: a touching ray, no length
 }
 
@@ -194,6 +202,46 @@ bool csg_value(CsgNode node, vec2 inside[CSG_MAX_LEAVES], float t, bool after) {
     return (stack & 1u) != 0u;
 }
 
+// Whether the program's value just after t changes with leaf k's inside (the others' as they are).
+bool csg_depends_on(CsgNode node, vec2 inside[CSG_MAX_LEAVES], uint k, float t) {
+    uint with = 0u, without = 0u;  // the stacks with leaf k inside and outside
+    for (uint i = 0u; i < node.op_count; ++i) {
+        uint op = csg_op_at(node.first_op + i), kind = op & 15u;
+        if (kind == CSG_LEAF) {
+            vec2 span = inside[op >> 4u];
+            uint v = span.x <= t && t < span.y ? 1u : 0u;
+            bool it = (op >> 4u) == k;
+            with = (with << 1u) | (it ? 1u : v);
+            without = (without << 1u) | (it ? 0u : v);
+        } else if (kind == CSG_NOT) {
+            with ^= 1u;
+            without ^= 1u;
+        } else {
+            uvec2 b = uvec2(with, without) & 1u, a = (uvec2(with, without) >> 1u) & 1u;
+            uvec2 c = kind == CSG_AND ? (a & b) : (kind == CSG_OR ? (a | b) : (a & (b ^ 1u)));
+            with = ((with >> 2u) << 1u) | c.x;
+            without = ((without >> 2u) << 1u) | c.y;
+        }
+    }
+    return ((with ^ without) & 1u) != 0u;
+}
+
+// From t on, where walked leaf k begins to matter again: t where the value just after t depends
+// on it; else the next end of another leaf (INFINITY: never), the others' insides holding till
+// then. Another walked leaf's opened interval may end anywhere before: then t.
+float csg_moot_until(CsgNode node, vec2 inside[CSG_MAX_LEAVES], uint k, float t, uint walked) {
+    if (csg_depends_on(node, inside, k, t)) return t;
+    float until = INFINITY;
+    for (uint j = 0u; j < node.leaf_count; ++j) {
+        vec2 span = inside[j];
+        if (j == k || !(span.x < span.y)) continue;
+        if (span.y == INFINITY && ((walked >> j) & 1u) != 0u) return t;
+        if (span.x > t) until = min(until, span.x);
+        if (span.y > t) until = min(until, span.y);
+    }
+    return until;
+}
+
 bool csg_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     if (box_entry(p.p0.xyz, p.p1.xyz, ray.origin, safe_inverse(ray.dir), t_max) == INFINITY) return false;
     CsgNode node = csg_node_at(p.data);
@@ -215,7 +263,14 @@ bool csg_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_h
         if (CSG_MAY_WALK) {
             for (; walk != 0u; walk &= walk - 1u) {  // one call: lavapipe inlines each
                 uint k = uint(findLSB(walk));
-                inside[k] = csg_walk(p, primitive_at(node.first_leaf + k), ray, inside[k], t);
+                Primitive leaf = primitive_at(node.first_leaf + k);
+                // Where the value does not depend on the leaf from t on, its roots up to where it
+                // matters again are not looked for (a difference's leaf within what it takes
+                // away): its walk starts afresh there. (Last of the leaves walked at t: the others'
+                // insides are then known.)
+                float from = (walk & (walk - 1u)) == 0u && !csg_crossed(leaf) ? csg_moot_until(node, inside, k, t, walked) : t;
+                if (from == INFINITY) inside[k] = vec2(INFINITY, -INFINITY);
+                else inside[k] = csg_walk(p, leaf, ray, from > t ? vec2(INFINITY, -INFINITY) : inside[k], t, from);
             }
         }
         float next = t_max, end = 0.0;
@@ -267,7 +322,7 @@ uint csg_leaf_hit(Primitive node, Ray ray, float t, vec2 csg_uv, out vec2 uv, in
         // pieces reach.
         float gap = csg_walk_gap(node, t);
         float from = walked ? t - gap : -INFINITY, to = walked ? t + gap : INFINITY;
-        bool found = leaf_hit(p, csg_uv.y == 1.0 ? Ray(ray.origin, -ray.dir) : ray, from, to, t_leaf, uv, leaf_error);
+        bool found = leaf_hit(p, csg_uv.y == 1.0 ? Ray(ray.origin, -ray.dir) : ray, from, to, SHAPE_SOLID | SHAPE_CLOSED, t_leaf, uv, leaf_error);
         if (found && walked) error = max(error, leaf_error + abs(t_leaf - t));
     }
     return leaf;

@@ -32,10 +32,17 @@ float lathe_cubic_slope(vec4 c, float s) {
     return (3.0 * c.w * h + 2.0 * c.z) * h + c.y;
 }
 
-// The s in [a, b] where y(s) = Y, y monotone there and y(a) - Y = fa of the other sign than at b:
-// safeguarded Newton.
-float lathe_height_root(vec4 yc, float Y, float a, float b, float fa) {
-    float x = 0.5 * (a + b);
+// Where the chord from (a, fa) to (b, fb) crosses 0 (fa, fb of other signs), within (a, b); else
+// the middle.
+float lathe_chord_root(float a, float b, float fa, float fb) {
+    float x = a + fa / (fa - fb) * (b - a);
+    return x > a && x < b ? x : 0.5 * (a + b);
+}
+
+// The s in [a, b] where y(s) = Y, y monotone there and y(a) - Y = fa of the other sign than
+// y(b) - Y = fb: safeguarded Newton from the chord's crossing (a linear y's root: one trip).
+float lathe_height_root(vec4 yc, float Y, float a, float b, float fa, float fb) {
+    float x = lathe_chord_root(a, b, fa, fb);
     for (int i = 0; i < 60; ++i) {
         float v = lathe_cubic(yc, x) - Y;
         if (v == 0.0) break;
@@ -73,26 +80,35 @@ int lathe_monotone_pieces(vec4 yc, out float bp[4]) {
     return n;
 }
 
+// The k-th derivative at x of the polynomial sum c[i] x^i of degree n, and the (k+1)-th: one
+// Horner loop, the factors i! / (i - k)! stepped down exactly (integers).
+vec2 lathe_poly_slope(float c[7], int n, int k, float x) {
+    float f = 1.0;  // n! / (n - k)!
+    for (int j = 0; j < k; ++j) f *= float(n - j);
+    float v = 0.0, w = 0.0;
+    for (int i = n; i > k; --i) {
+        w = w * x + f * float(i - k) * c[i];  // i! / (i - k - 1)!
+        v = v * x + f * c[i];
+        f = f * float(i - k) / float(i);
+    }
+    return vec2(v * x + f * c[k], w);
+}
+
 // The k-th derivative at x of the polynomial sum c[i] x^i of degree n.
 float lathe_poly(float c[7], int n, int k, float x) {
-    float v = 0.0;
-    for (int i = n; i >= k; --i) {
-        float f = 1.0;
-        for (int j = 0; j < k; ++j) f *= float(i - j);
-        v = v * x + f * c[i];
-    }
-    return v;
+    return lathe_poly_slope(c, n, k, x).x;
 }
 
 // The root in [lo, hi] of the k-th derivative, monotone there, whose value at lo is v_lo, of the
-// other sign than at hi: safeguarded Newton.
-float lathe_monotone_root(float c[7], int n, int k, float lo, float hi, float v_lo) {
-    float x = 0.5 * (lo + hi);
+// other sign than v_hi at hi: safeguarded Newton from the chord's crossing.
+float lathe_monotone_root(float c[7], int n, int k, float lo, float hi, float v_lo, float v_hi) {
+    float x = lathe_chord_root(lo, hi, v_lo, v_hi);
     for (int i = 0; i < 50; ++i) {
-        float v = lathe_poly(c, n, k, x);
+        vec2 vs = lathe_poly_slope(c, n, k, x);
+        float v = vs.x;
         if (v == 0.0) break;
         if ((v > 0.0) == (v_lo > 0.0)) lo = x; else hi = x;
-        float next = x - v / lathe_poly(c, n, k + 1, x);
+        float next = x - v / vs.y;
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         bool done = abs(next - x) <= 1.2e-7 || hi - lo <= 1.2e-7;
         x = next;
@@ -116,7 +132,7 @@ float lathe_first_root(float c[7], int n) {
         for (int i = 1; i < nb; ++i) {
             float v_hi = lathe_poly(c, n, k, bp[i]);
             if ((v_lo > 0.0) != (v_hi > 0.0)) {
-                float root = lathe_monotone_root(c, n, k, bp[i - 1], bp[i], v_lo);
+                float root = lathe_monotone_root(c, n, k, bp[i - 1], bp[i], v_lo, v_hi);
                 if (k == 0) return root;
                 next[nn++] = root;
             }
@@ -144,6 +160,58 @@ float lathe_circle_t(float r, float tm, float rho2, float across, float side) {
     return tm + side * sqrt(max(r * r - rho2, 0.0) / across);
 }
 
+// A flat ring (a base, a cap, a rim: a segment of one height, whose slab would have no width in
+// float): where the ray crosses its plane within (t_min, t_max), a radius the curve takes (r(s) is
+// continuous: between its least and its most), its s found on the monotone piece of r that holds it.
+bool lathe_ring_hit(LatheBand band, Ray ray, float t_min, float t_max, inout float t_hit, out float s) {
+    s = 0.0;
+    if (ray.dir.y == 0.0) return false;
+    float t = (band.band.y - ray.origin.y) / ray.dir.y;
+    if (!(t > t_min && t < t_max)) return false;
+    float rho = length(ray.origin.xz + t * ray.dir.xz);
+    float rp[4];
+    int r_pieces = lathe_monotone_pieces(band.radius, rp);
+    float f_lo = lathe_cubic(band.radius, rp[0]) - rho;
+    for (int k = 1; k < r_pieces; ++k) {
+        float f_hi = lathe_cubic(band.radius, rp[k]) - rho;
+        if ((f_lo > 0.0) != (f_hi > 0.0)) {
+            t_hit = t;
+            s = lathe_height_root(band.radius, rho, rp[k - 1], rp[k], f_lo, f_hi);
+            return true;
+        }
+        f_lo = f_hi;
+    }
+    return false;
+}
+
+// Whether the ray within (t_min, t_max) crosses the segment's band's slab within its bounding
+// cylinder, widened as lathe_intersect widens them (a flat ring: whether it crosses its plane).
+bool lathe_band_crossed(LatheBand band, float largest, Ray ray, float t_min, float t_max, float across) {
+    vec3 d = ray.dir;
+    float lo = t_min, hi = t_max;
+    float widen = 1e-5 * largest + 2.4e-7 * abs(ray.origin.y);
+    if (d.y != 0.0) {
+        float a = (band.band.y - widen - ray.origin.y) / d.y, b = (band.band.z + widen - ray.origin.y) / d.y;
+        lo = max(lo, min(a, b));
+        hi = min(hi, max(a, b));
+    } else if (band.band.y == band.band.z || ray.origin.y < band.band.y - widen || ray.origin.y > band.band.z + widen) {
+        return false;
+    }
+    float R = band.band.x * 1.00001 + widen;
+    if (across > 0.0) {
+        float tm = -dot(ray.origin.xz, d.xz) / across;
+        vec2 nearest = ray.origin.xz + tm * d.xz;
+        float reach2 = (R * R - dot(nearest, nearest)) / across;
+        if (!(reach2 >= 0.0)) return false;
+        float reach = sqrt(reach2);
+        lo = max(lo, tm - reach);
+        hi = min(hi, tm + reach);
+    } else if (dot(ray.origin.xz, ray.origin.xz) > R * R) {
+        return false;
+    }
+    return lo <= hi;
+}
+
 bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
     float best = t_max;
     bool hit = false;
@@ -152,177 +220,177 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
     bool steep = d.y * d.y >= across;
     uint count = uint(p.p1.x);
     int degree = int(p.p0.w);
-    for (uint i = 0u; i < count; ++i) {
-        LatheBand band = lathe_band_at(p.data + i);
-        if (band.band.y == band.band.z) {
-            // A flat ring (a base, a cap, a rim): where the ray crosses its plane, a radius the
-            // curve takes (r(s) is continuous: between its least and its most), its s found on
-            // the monotone piece of r that holds it. (Its slab would have no width in float.)
-            if (d.y == 0.0) continue;
-            float t = (band.band.y - ray.origin.y) / d.y;
-            if (!(t > t_min && t < best)) continue;
-            float rho = length(ray.origin.xz + t * d.xz);
-            float rp[4];
-            int r_pieces = lathe_monotone_pieces(band.radius, rp);
-            float f_lo = lathe_cubic(band.radius, rp[0]) - rho;
-            for (int k = 1; k < r_pieces; ++k) {
-                float f_hi = lathe_cubic(band.radius, rp[k]) - rho;
-                if ((f_lo > 0.0) != (f_hi > 0.0)) {
-                    best = t;
-                    hit = true;
-                    uv = vec2(float(i), lathe_height_root(band.radius, rho, rp[k - 1], rp[k], f_lo));
-                    break;
-                }
-                f_lo = f_hi;
+    // The segments in groups of 32: first those whose band the ray crosses (slab and cylinder),
+    // then only those searched, the flat rings in a loop of their own (lavapipe runs a loop's
+    // body, both sides of each if, for every lane while one lane needs another trip).
+    for (uint base = 0u; base < count; base += 32u) {
+        uint flats = 0u, curves = 0u;
+        for (uint j = base; j < min(count, base + 32u); ++j) {
+            LatheBand band = lathe_band_at(p.data + j);
+            if (!lathe_band_crossed(band, p.p0.z, ray, t_min, t_max, across)) continue;
+            if (band.band.y == band.band.z) flats |= 1u << (j - base); else curves |= 1u << (j - base);
+        }
+        for (; flats != 0u; flats &= flats - 1u) {
+            uint i = base + uint(findLSB(flats));
+            float s;
+            if (lathe_ring_hit(lathe_band_at(p.data + i), ray, t_min, best, best, s)) {
+                hit = true;
+                uv = vec2(float(i), s);
             }
-            continue;
         }
-        // The ray's stretch through the segment's band: its slab and its bounding cylinder (the
-        // slab widened by the rounding of the ray's height too, for rays from far away).
-        float lo = t_min, hi = best;
-        float widen = 1e-5 * p.p0.z + 2.4e-7 * abs(ray.origin.y);
-        if (d.y != 0.0) {
-            float a = (band.band.y - widen - ray.origin.y) / d.y, b = (band.band.z + widen - ray.origin.y) / d.y;
-            lo = max(lo, min(a, b));
-            hi = min(hi, max(a, b));
-        } else if (ray.origin.y < band.band.y - widen || ray.origin.y > band.band.z + widen) {
-            continue;
-        }
-        float R = band.band.x * 1.00001 + widen;
-        float tm = 0.0;  // about the original origin: the point nearest the axis
-        if (across > 0.0) {
-            tm = -dot(ray.origin.xz, d.xz) / across;
-            vec2 nearest = ray.origin.xz + tm * d.xz;
-            float reach2 = (R * R - dot(nearest, nearest)) / across;
-            if (!(reach2 >= 0.0)) continue;
-            float reach = sqrt(reach2);
-            lo = max(lo, tm - reach);
-            hi = min(hi, tm + reach);
-        } else if (dot(ray.origin.xz, ray.origin.xz) > R * R) {
-            continue;
-        }
-        if (!(lo < hi)) continue;
-        // Rebased at the stretch's middle: o = origin + m d, and t about it.
-        float m = 0.5 * (lo + hi);
-        vec3 o = ray.origin + m * d;
-        float rho2 = 0.0;
-        if (across > 0.0) {
-            vec2 nearest = ray.origin.xz + tm * d.xz;
-            rho2 = dot(nearest, nearest);
-        }
-        tm -= m;
-        float t_lo = lo - m, t_hi = hi - m;
-        float bp[4];
-        int pieces = lathe_monotone_pieces(band.height, bp);
-        // Each half of the stretch about the point nearest the axis (one where the ray is steep).
-        int parts = steep ? 1 : 2;  // (a bound the compiler cannot unroll: the body is large)
-        for (int part = 0; part < parts; ++part) {
-            float ta = t_lo, tb = t_hi, side = 1.0;
-            if (!steep) {
-                side = part == 0 ? -1.0 : 1.0;
-                if (part == 0) tb = min(tb, tm); else ta = max(ta, tm);
+        for (; curves != 0u; curves &= curves - 1u) {
+            uint i = base + uint(findLSB(curves));
+            LatheBand band = lathe_band_at(p.data + i);
+            // The ray's stretch through the segment's band: its slab and its bounding cylinder (the
+            // slab widened by the rounding of the ray's height too, for rays from far away).
+            float lo = t_min, hi = best;
+            float widen = 1e-5 * p.p0.z + 2.4e-7 * abs(ray.origin.y);
+            if (d.y != 0.0) {
+                float a = (band.band.y - widen - ray.origin.y) / d.y, b = (band.band.z + widen - ray.origin.y) / d.y;
+                lo = max(lo, min(a, b));
+                hi = min(hi, max(a, b));
+            } else if (ray.origin.y < band.band.y - widen || ray.origin.y > band.band.z + widen) {
+                continue;
             }
-            if (!(ta <= tb) || ta + m >= best) continue;
-            float Ya = o.y + ta * d.y, Yb = o.y + tb * d.y;
-            float Ylo = min(Ya, Yb), Yhi = max(Ya, Yb);
-            for (int k = 1; k < pieces; ++k) {
-                float s0 = bp[k - 1], s1 = bp[k];
-                float y0 = lathe_cubic(band.height, s0), y1 = lathe_cubic(band.height, s1);
-                bool rising = y1 >= y0;
-                float ylo = min(y0, y1), yhi = max(y0, y1);
-                if (yhi < Ylo || ylo > Yhi) continue;
-                // The piece's s where y is within [Ylo, Yhi].
-                float sa = s0, sb = s1;
-                float ends[2];
-                for (int e = 0; e < pieces - k + 1 && e < 2; ++e) {  // (one call site: a bound not unrolled)
-                    float Y = e == 0 ? Ylo : Yhi;
-                    bool beyond = e == 0 ? ylo < Ylo : yhi > Yhi;
-                    ends[e] = beyond ? lathe_height_root(band.height, Y, s0, s1, y0 - Y) : ((e == 0) == rising ? s0 : s1);
+            float R = band.band.x * 1.00001 + widen;
+            float tm = 0.0;  // about the original origin: the point nearest the axis
+            if (across > 0.0) {
+                tm = -dot(ray.origin.xz, d.xz) / across;
+                vec2 nearest = ray.origin.xz + tm * d.xz;
+                float reach2 = (R * R - dot(nearest, nearest)) / across;
+                if (!(reach2 >= 0.0)) continue;
+                float reach = sqrt(reach2);
+                lo = max(lo, tm - reach);
+                hi = min(hi, tm + reach);
+            } else if (dot(ray.origin.xz, ray.origin.xz) > R * R) {
+                continue;
+            }
+            if (!(lo < hi)) continue;
+            // Rebased at the stretch's middle: o = origin + m d, and t about it.
+            float m = 0.5 * (lo + hi);
+            vec3 o = ray.origin + m * d;
+            float rho2 = 0.0;
+            if (across > 0.0) {
+                vec2 nearest = ray.origin.xz + tm * d.xz;
+                rho2 = dot(nearest, nearest);
+            }
+            tm -= m;
+            float t_lo = lo - m, t_hi = hi - m;
+            float bp[4];
+            int pieces = lathe_monotone_pieces(band.height, bp);
+            // Each half of the stretch about the point nearest the axis (one where the ray is steep).
+            int parts = steep ? 1 : 2;  // (a bound the compiler cannot unroll: the body is large)
+            for (int part = 0; part < parts; ++part) {
+                float ta = t_lo, tb = t_hi, side = 1.0;
+                if (!steep) {
+                    side = part == 0 ? -1.0 : 1.0;
+                    if (part == 0) tb = min(tb, tm); else ta = max(ta, tm);
                 }
-                float slo = ends[0], shi = ends[1];
-                // Widened by a few of float's steps in s: the ends are found within them, and F's
-                // root (its constant term rounded to the ray's heights) may lie a little beyond.
-                sa = max(s0, min(slo, shi) - 4e-7);
-                sb = min(s1, max(slo, shi) + 4e-7);
-                // t grows with s where y does and the ray rises, or neither.
-                bool forward = rising == (d.y >= 0.0);
-                float s_root = -1.0;
-                float w = 0.5 * (sb - sa), sm = 0.5 * (sa + sb);
-                if (w > 1e-6) {
-                    // F about sm in x = (s - sm) / w, x in [-1, 1]: its factors' Taylor coefficients.
-                    float u = sm - 0.5;
-                    vec4 yc = band.height, rc = band.radius;
-                    vec4 Y = vec4(((yc.w * u + yc.z) * u + yc.y) * u + yc.x - o.y, (3.0 * yc.w * u + 2.0 * yc.z) * u + yc.y,
-                                  3.0 * yc.w * u + yc.z, yc.w);
-                    vec4 Rr = vec4(((rc.w * u + rc.z) * u + rc.y) * u + rc.x, (3.0 * rc.w * u + 2.0 * rc.z) * u + rc.y,
-                                   3.0 * rc.w * u + rc.z, rc.w);
-                    vec4 scale = vec4(1.0, w, w * w, w * w * w);
-                    if (!forward) scale.yw = -scale.yw;  // x -> -x: the first root in t's order
-                    Y *= scale;
-                    Rr *= scale;
-                    vec4 A = Y * d.x, B = Y * d.z, E = Rr * d.y;
-                    A.x += d.y * o.x;
-                    B.x += d.y * o.z;
-                    float c[7];
-                    for (int j = 0; j < 7; ++j) c[j] = 0.0;
-                    for (int a = 0; a <= degree; ++a)
-                        for (int b = 0; b <= degree; ++b) c[a + b] += A[a] * A[b] + B[a] * B[b] - E[a] * E[b];
-                    // No root in [-1, 1] where the constant term outweighs all the others.
-                    float others = 0.0;
-                    for (int j = 1; j <= 2 * degree; ++j) others += abs(c[j]);
-                    if (abs(c[0]) > others) continue;
-                    float x = lathe_first_root(c, 2 * degree);
-                    if (x == INFINITY) continue;
-                    s_root = sm + (forward ? x : -x) * w;
-                } else {
-                    // A piece narrow within float's s: the ray is level there within rounding.
-                    if (steep) {
-                        if ((lathe_f(band, o, d, sa) > 0.0) == (lathe_f(band, o, d, sb) > 0.0)) continue;
-                        s_root = sm;
-                    } else {
-                        float r = lathe_cubic(band.radius, sm);
-                        if (r * r < rho2) continue;
-                        float t = lathe_circle_t(r, tm, rho2, across, side);
-                        float Y = o.y + t * d.y;
-                        s_root = clamp(lathe_height_root(band.height, Y, s0, s1, y0 - Y), sa, sb);
+                if (!(ta <= tb) || ta + m >= best) continue;
+                float Ya = o.y + ta * d.y, Yb = o.y + tb * d.y;
+                float Ylo = min(Ya, Yb), Yhi = max(Ya, Yb);
+                for (int k = 1; k < pieces; ++k) {
+                    float s0 = bp[k - 1], s1 = bp[k];
+                    float y0 = lathe_cubic(band.height, s0), y1 = lathe_cubic(band.height, s1);
+                    bool rising = y1 >= y0;
+                    float ylo = min(y0, y1), yhi = max(y0, y1);
+                    if (yhi < Ylo || ylo > Yhi) continue;
+                    // The piece's s where y is within [Ylo, Yhi].
+                    float sa = s0, sb = s1;
+                    float ends[2];
+                    for (int e = 0; e < pieces - k + 1 && e < 2; ++e) {  // (one call site: a bound not unrolled)
+                        float Y = e == 0 ? Ylo : Yhi;
+                        bool beyond = e == 0 ? ylo < Ylo : yhi > Yhi;
+                        ends[e] = beyond ? lathe_height_root(band.height, Y, s0, s1, y0 - Y, y1 - Y) : ((e == 0) == rising ? s0 : s1);
                     }
-                }
-                float t;
-                if (steep) {
-                    t = (lathe_cubic(band.height, s_root) - o.y) / d.y;
-                } else {
-                    float r = lathe_cubic(band.radius, s_root);
-                    t = lathe_circle_t(r, tm, rho2, across, side);
-                    // A narrow piece was not solved but taken whole: its circle must meet the
-                    // half where the half is (else the curve's height is the ray's there only
-                    // because the half is short, cut by a nearer hit, and the crossing is elsewhere).
-                    float slack = 0.01 * (tb - ta) + 1e-6 * (abs(m) + p.p0.z);
-                    if (w <= 1e-6 && (r * r < rho2 || t < ta - slack || t > tb + slack)) continue;
-                    // The circle's t takes the ray at r(s) whatever its height there: one Newton
-                    // step on (s, t) for y(s) = the ray's height and r(s) = its distance from the
-                    // axis. A small step that leaves the segment says the crossing is beyond its
-                    // end (a ray grazing a corner within rounding, which meets the next segment).
-                    float ys = lathe_cubic(band.height, s_root);
-                    vec2 at = o.xz + t * d.xz;
-                    float g1 = ys - (o.y + t * d.y), g2 = dot(at, at) - r * r;
-                    float j11 = lathe_cubic_slope(band.height, s_root), j21 = -2.0 * r * lathe_cubic_slope(band.radius, s_root);
-                    float j12 = -d.y, j22 = 2.0 * dot(at, d.xz);
-                    float det = j11 * j22 - j12 * j21;
-                    if (det != 0.0) {
-                        float ds = -(g1 * j22 - j12 * g2) / det, dt = -(j11 * g2 - j21 * g1) / det;
-                        if (abs(ds) < 1e-3) {
-                            float s_new = s_root + ds;
-                            if (s_new < -2e-7 || s_new > 1.0 + 2e-7) continue;
-                            s_root = clamp(s_new, 0.0, 1.0);
-                            t += dt;
+                    float slo = ends[0], shi = ends[1];
+                    // Widened by a few of float's steps in s: the ends are found within them, and F's
+                    // root (its constant term rounded to the ray's heights) may lie a little beyond.
+                    sa = max(s0, min(slo, shi) - 4e-7);
+                    sb = min(s1, max(slo, shi) + 4e-7);
+                    // t grows with s where y does and the ray rises, or neither.
+                    bool forward = rising == (d.y >= 0.0);
+                    float s_root = -1.0;
+                    float w = 0.5 * (sb - sa), sm = 0.5 * (sa + sb);
+                    if (w > 1e-6) {
+                        // F about sm in x = (s - sm) / w, x in [-1, 1]: its factors' Taylor coefficients.
+                        float u = sm - 0.5;
+                        vec4 yc = band.height, rc = band.radius;
+                        vec4 Y = vec4(((yc.w * u + yc.z) * u + yc.y) * u + yc.x - o.y, (3.0 * yc.w * u + 2.0 * yc.z) * u + yc.y,
+                                      3.0 * yc.w * u + yc.z, yc.w);
+                        vec4 Rr = vec4(((rc.w * u + rc.z) * u + rc.y) * u + rc.x, (3.0 * rc.w * u + 2.0 * rc.z) * u + rc.y,
+                                       3.0 * rc.w * u + rc.z, rc.w);
+                        vec4 scale = vec4(1.0, w, w * w, w * w * w);
+                        if (!forward) scale.yw = -scale.yw;  // x -> -x: the first root in t's order
+                        Y *= scale;
+                        Rr *= scale;
+                        vec4 A = Y * d.x, B = Y * d.z, E = Rr * d.y;
+                        A.x += d.y * o.x;
+                        B.x += d.y * o.z;
+                        float c[7];
+                        for (int j = 0; j < 7; ++j) c[j] = 0.0;
+                        for (int a = 0; a <= degree; ++a)
+                            for (int b = 0; b <= degree; ++b) c[a + b] += A[a] * A[b] + B[a] * B[b] - E[a] * E[b];
+                        // No root in [-1, 1] where the constant term outweighs all the others.
+                        float others = 0.0;
+                        for (int j = 1; j <= 2 * degree; ++j) others += abs(c[j]);
+                        if (abs(c[0]) > others) continue;
+                        float x = lathe_first_root(c, 2 * degree);
+                        if (x == INFINITY) continue;
+                        s_root = sm + (forward ? x : -x) * w;
+                    } else {
+                        // A piece narrow within float's s: the ray is level there within rounding.
+                        if (steep) {
+                            if ((lathe_f(band, o, d, sa) > 0.0) == (lathe_f(band, o, d, sb) > 0.0)) continue;
+                            s_root = sm;
+                        } else {
+                            float r = lathe_cubic(band.radius, sm);
+                            if (r * r < rho2) continue;
+                            float t = lathe_circle_t(r, tm, rho2, across, side);
+                            // s where y(s) is the ray's height there: the piece's chord (its s within float's).
+                            float Y = o.y + t * d.y, va = lathe_cubic(band.height, sa) - Y, vb = lathe_cubic(band.height, sb) - Y;
+                            s_root = (va > 0.0) == (vb > 0.0) ? (abs(va) < abs(vb) ? sa : sb)
+                                                              : clamp(sa + va / (va - vb) * (sb - sa), sa, sb);
                         }
                     }
-                }
-                t = clamp(t, ta, tb) + m;
-                if (t > t_min && t < best) {
-                    best = t;
-                    hit = true;
-                    uv = vec2(float(i), s_root);
+                    float t;
+                    if (steep) {
+                        t = (lathe_cubic(band.height, s_root) - o.y) / d.y;
+                    } else {
+                        float r = lathe_cubic(band.radius, s_root);
+                        t = lathe_circle_t(r, tm, rho2, across, side);
+                        // A narrow piece was not solved but taken whole: its circle must meet the
+                        // half where the half is (else the curve's height is the ray's there only
+                        // because the half is short, cut by a nearer hit, and the crossing is elsewhere).
+                        float slack = 0.01 * (tb - ta) + 1e-6 * (abs(m) + p.p0.z);
+                        if (w <= 1e-6 && (r * r < rho2 || t < ta - slack || t > tb + slack)) continue;
+                        // The circle's t takes the ray at r(s) whatever its height there: one Newton
+                        // step on (s, t) for y(s) = the ray's height and r(s) = its distance from the
+                        // axis. A small step that leaves the segment says the crossing is beyond its
+                        // end (a ray grazing a corner within rounding, which meets the next segment).
+                        float ys = lathe_cubic(band.height, s_root);
+                        vec2 at = o.xz + t * d.xz;
+                        float g1 = ys - (o.y + t * d.y), g2 = dot(at, at) - r * r;
+                        float j11 = lathe_cubic_slope(band.height, s_root);
+                        float j21 = -2.0 * r * lathe_cubic_slope(band.radius, s_root);
+                        float j12 = -d.y, j22 = 2.0 * dot(at, d.xz);
+                        float det = j11 * j22 - j12 * j21;
+                        if (det != 0.0) {
+                            float ds = -(g1 * j22 - j12 * g2) / det, dt = -(j11 * g2 - j21 * g1) / det;
+                            if (abs(ds) < 1e-3) {
+                                float s_new = s_root + ds;
+                                if (s_new < -2e-7 || s_new > 1.0 + 2e-7) continue;
+                                s_root = clamp(s_new, 0.0, 1.0);
+                                t += dt;
+                            }
+                        }
+                    }
+                    t = clamp(t, ta, tb) + m;
+                    if (t > t_min && t < best) {
+                        best = t;
+                        hit = true;
+                        uv = vec2(float(i), s_root);
+                    }
                 }
             }
         }
@@ -348,7 +416,7 @@ bool lathe_inside(Primitive p, vec3 point) {
         for (int k = 1; k < pieces; ++k) {
             float f_hi = lathe_cubic(band.height, bp[k]) - point.y;
             if ((f_lo > 0.0) != (f_hi > 0.0)) {
-                float s = lathe_height_root(band.height, point.y, bp[k - 1], bp[k], f_lo);
+                float s = lathe_height_root(band.height, point.y, bp[k - 1], bp[k], f_lo, f_hi);
                 if (lathe_cubic(band.radius, s) > rho) ++crossings;
             }
             f_lo = f_hi;

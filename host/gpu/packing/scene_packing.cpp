@@ -102,6 +102,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         f.scene_shapes |= 1u << leaf.type;
         f.csg_leaf_shapes |= 1u << leaf.type;
     }
+    f.leaf_only_shapes = f.csg_leaf_shapes & ~plan.flags.scene_shapes;
     f.has_bvh = plan.flags.has_bvh;
     f.bvh_has_analytic = plan.flags.bvh_has_analytic;
     f.boxed_families = plan.flags.boxed_families;
