@@ -184,11 +184,16 @@ bool lathe_ring_hit(LatheBand band, Ray ray, float t_min, float t_max, inout flo
     return false;
 }
 
-// Whether the ray within (t_min, t_max) crosses the segment's band's slab within its bounding
-// cylinder, widened as lathe_intersect widens them (a flat ring: whether it crosses its plane).
-bool lathe_band_crossed(LatheBand band, float largest, Ray ray, float t_min, float t_max, float across) {
+// The ray's stretch (lo, hi) within (t_min, t_max) through the segment's band: its slab and its
+// bounding cylinder, both widened by the rounding of the ray's height (rays from far away); tm
+// the t nearest the axis (0 for a ray along it). False where there is none; a flat ring's is
+// where the ray crosses its plane.
+bool lathe_band_stretch(LatheBand band, float largest, Ray ray, float t_min, float t_max, float across, out float lo,
+                        out float hi, out float tm) {
     vec3 d = ray.dir;
-    float lo = t_min, hi = t_max;
+    lo = t_min;
+    hi = t_max;
+    tm = 0.0;
     float widen = 1e-5 * largest + 2.4e-7 * abs(ray.origin.y);
     if (d.y != 0.0) {
         float a = (band.band.y - widen - ray.origin.y) / d.y, b = (band.band.z + widen - ray.origin.y) / d.y;
@@ -199,7 +204,7 @@ bool lathe_band_crossed(LatheBand band, float largest, Ray ray, float t_min, flo
     }
     float R = band.band.x * 1.00001 + widen;
     if (across > 0.0) {
-        float tm = -dot(ray.origin.xz, d.xz) / across;
+        tm = -dot(ray.origin.xz, d.xz) / across;
         vec2 nearest = ray.origin.xz + tm * d.xz;
         float reach2 = (R * R - dot(nearest, nearest)) / across;
         if (!(reach2 >= 0.0)) return false;
@@ -227,7 +232,8 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
         uint flats = 0u, curves = 0u;
         for (uint j = base; j < min(count, base + 32u); ++j) {
             LatheBand band = lathe_band_at(p.data + j);
-            if (!lathe_band_crossed(band, p.p0.z, ray, t_min, t_max, across)) continue;
+            float lo, hi, tm;
+            if (!lathe_band_stretch(band, p.p0.z, ray, t_min, t_max, across, lo, hi, tm)) continue;
             if (band.band.y == band.band.z) flats |= 1u << (j - base); else curves |= 1u << (j - base);
         }
         for (; flats != 0u; flats &= flats - 1u) {
@@ -241,30 +247,8 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
         for (; curves != 0u; curves &= curves - 1u) {
             uint i = base + uint(findLSB(curves));
             LatheBand band = lathe_band_at(p.data + i);
-            // The ray's stretch through the segment's band: its slab and its bounding cylinder (the
-            // slab widened by the rounding of the ray's height too, for rays from far away).
-            float lo = t_min, hi = best;
-            float widen = 1e-5 * p.p0.z + 2.4e-7 * abs(ray.origin.y);
-            if (d.y != 0.0) {
-                float a = (band.band.y - widen - ray.origin.y) / d.y, b = (band.band.z + widen - ray.origin.y) / d.y;
-                lo = max(lo, min(a, b));
-                hi = min(hi, max(a, b));
-            } else if (ray.origin.y < band.band.y - widen || ray.origin.y > band.band.z + widen) {
-                continue;
-            }
-            float R = band.band.x * 1.00001 + widen;
-            float tm = 0.0;  // about the original origin: the point nearest the axis
-            if (across > 0.0) {
-                tm = -dot(ray.origin.xz, d.xz) / across;
-                vec2 nearest = ray.origin.xz + tm * d.xz;
-                float reach2 = (R * R - dot(nearest, nearest)) / across;
-                if (!(reach2 >= 0.0)) continue;
-                float reach = sqrt(reach2);
-                lo = max(lo, tm - reach);
-                hi = min(hi, tm + reach);
-            } else if (dot(ray.origin.xz, ray.origin.xz) > R * R) {
-                continue;
-            }
+            float lo, hi, tm;  // about the original origin
+            if (!lathe_band_stretch(band, p.p0.z, ray, t_min, best, across, lo, hi, tm)) continue;
             if (!(lo < hi)) continue;
             // Rebased at the stretch's middle: o = origin + m d, and t about it.
             float m = 0.5 * (lo + hi);
