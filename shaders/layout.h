@@ -570,7 +570,8 @@ LANCER_RESOURCES(LANCER_BINDING_CONSTANT)
     X(SCENE_HAS_SKY, 32, bool, has_sky, true) /* [sky]: rays that meet nothing see its ramp (trace.comp) */ \
     X(SKY_HAS_PATTERN, 33, bool, sky_has_pattern, true) /* ... or its pattern's colour at their direction */ \
     X(CSG_LEAF_SHAPES, 34, uint, csg_leaf_shapes, 0xffffffffu) /* the shape types of CSG leaves and their pieces (CSG_HAS_<NAME>) */ \
-    X(LEAF_ONLY_SHAPES, 35, uint, leaf_only_shapes, 0u) /* ... of those, the types no primitive outside CSG has (TRACES_<NAME>) */
+    X(LEAF_ONLY_SHAPES, 35, uint, leaf_only_shapes, 0u) /* ... of those, the types no primitive outside CSG has (TRACES_<NAME>) */ \
+    X(LATHE_DEGREES, 36, uint, lathe_degrees, 0xffffffffu) /* bit n: some lathe is of degree n (lathe.glsl's searches) */
 
 #ifdef __cplusplus
 #define LANCER_ASSERT_SIZE(Name) static_assert(sizeof(Name) == 16 * Name##_ROWS, #Name " has padding");

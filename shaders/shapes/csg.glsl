@@ -22,6 +22,12 @@
 const uint CSG_MAX_ENDS = 256u;  // interval ends examined per ray: beyond, a miss
 const int CSG_WALK_ROOTS = 32;   // roots one walk examines
 
+// The walked leaf's root at the last CSG hit returned on one (leaf primitive, t, its uv), and its
+// error: closest_hit's csg_leaf_hit takes them from here instead of searching the root again. A
+// later CSG test may overwrite it (a tie not kept): csg_leaf_hit then finds the key differs.
+vec4 csg_walked_root = vec4(-1.0);
+float csg_walked_root_error = 0.0;
+
 // Scenes without a shape CSG walks (SHAPE_CLOSED, SHAPE_ORIENTED) compile no walk: one test of
 // the constant shape set (|| between specialisation constants would leave SPIRV-Tools an operand
 // it cannot fold).
@@ -122,7 +128,10 @@ float csg_walk_gap(Primitive node, float a) { return max(4e-6 * length(node.p1.x
 // (csg_intersect): most rays stop there, one search instead of three. A stretch is inside by
 // leaf_inside at its middle; a normal only ever decides the stretch it opens or closes, so that a
 // ray grazing a corner, whose second root lies within the gap, cannot carry a wrong side on.
-vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, vec2 now, float after, float from) {
+// ends_uv and ends_error: the leaf's uv and error at the interval's ends that are roots (in:
+// `now`'s, out: the interval returned's).
+vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, vec2 now, float after, float from, inout vec4 ends_uv,
+              inout vec2 ends_error) {
     vec2 span = vec2(INFINITY, -INFINITY);
     bool opened = now.y == INFINITY;
     // A walk begun afresh starts at `from` (the ray's t_min, or where the leaf begins to matter
@@ -133,6 +142,8 @@ vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, vec2 now, float after, fl
     bool from_point = !(now.x < now.y) && from > -INFINITY && !csg_crossed(leaf);
     float a = opened ? now.x : (now.x < now.y ? now.y : (from_point ? from : -INFINITY));
     bool entered = opened;  // a surface that closes a solid: inside after a, where the ray entered it at a
+    vec2 uv_a = opened ? ends_uv.xy : ends_uv.zw;  // the leaf's at the root a
+    float error_a = opened ? ends_error.x : ends_error.y;
     for (int i = 0; i < CSG_WALK_ROOTS; ++i) {
         float b, error;
         vec2 uv;
@@ -145,19 +156,32 @@ vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, vec2 now, float after, fl
         entered = !leaving;
         int side = !more ? -1 : (csg_crossed(leaf) ? (leaving ? 0 : 1) : leaf_root_side(leaf, ray, b, uv));
         if (more && inside) {
+            if (!(span.x < span.y)) {
+                ends_uv.xy = uv_a;
+                ends_error.x = error_a;
+            }
             span = span.x < span.y ? vec2(span.x, b) : vec2(from_point ? after : a, b);  // adjacent stretches inside join
+            ends_uv.zw = uv;
+            ends_error.y = error;
             if (side == 0) {  // left
-                if (b > after) return span;
+                if (b > after) break;
                 span = vec2(INFINITY, -INFINITY);
             }
         } else if (span.x < span.y) {
-            if (span.y > after) return span;
+            if (span.y > after) break;
             span = vec2(INFINITY, -INFINITY);
         }
         from_point = false;
         if (!more) break;
-        if (side == 1 && !(span.x < span.y) && b > after) return vec2(b, INFINITY);
+        if (side == 1 && !(span.x < span.y) && b > after) {
+            ends_uv.xy = uv;
+            ends_error.x = error;
+            span = vec2(b, INFINITY);
+            break;
+        }
         a = b;
+        uv_a = uv;
+        error_a = error;
     }
     return span;
 }
@@ -246,12 +270,16 @@ bool csg_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_h
     if (box_entry(p.p0.xyz, p.p1.xyz, ray.origin, safe_inverse(ray.dir), t_max) == INFINITY) return false;
     CsgNode node = csg_node_at(p.data);
     vec2 inside[CSG_MAX_LEAVES];
+    vec4 ends_uv[CSG_MAX_LEAVES];  // a walked leaf's uv and error at its interval's ends (csg_walk)
+    vec2 ends_error[CSG_MAX_LEAVES];
     uint walked = 0u;  // the walked leaves
     for (uint k = 0u; k < node.leaf_count; ++k) {
         Primitive leaf = primitive_at(node.first_leaf + k);
         if (csg_walked(leaf)) {
             walked |= 1u << k;
             inside[k] = vec2(INFINITY, -INFINITY);
+            ends_uv[k] = vec4(0.0);
+            ends_error[k] = vec2(0.0);
         } else {
             inside[k] = csg_inside(leaf, ray);
         }
@@ -270,7 +298,7 @@ bool csg_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_h
                 // insides are then known.)
                 float from = (walk & (walk - 1u)) == 0u && !csg_crossed(leaf) ? csg_moot_until(node, inside, k, t, walked) : t;
                 if (from == INFINITY) inside[k] = vec2(INFINITY, -INFINITY);
-                else inside[k] = csg_walk(p, leaf, ray, from > t ? vec2(INFINITY, -INFINITY) : inside[k], t, from);
+                else inside[k] = csg_walk(p, leaf, ray, from > t ? vec2(INFINITY, -INFINITY) : inside[k], t, from, ends_uv[k], ends_error[k]);
             }
         }
         float next = t_max, end = 0.0;
@@ -291,7 +319,12 @@ bool csg_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_h
         if (leaf == NO_PRIMITIVE) return false;
         if (csg_value(node, inside, next, false) != csg_value(node, inside, next, true)) {
             t_hit = next;
-            uv = vec2(float(node.first_leaf + leaf), CSG_MAY_WALK && ((walked >> leaf) & 1u) != 0u ? 2.0 : end);
+            bool at_root = CSG_MAY_WALK && ((walked >> leaf) & 1u) != 0u;
+            uv = vec2(float(node.first_leaf + leaf), at_root ? 2.0 : end);
+            if (at_root) {
+                csg_walked_root = vec4(uv.x, next, end == 0.0 ? ends_uv[leaf].xy : ends_uv[leaf].zw);
+                csg_walked_root_error = end == 0.0 ? ends_error[leaf].x : ends_error[leaf].y;
+            }
             return true;
         }
         if (CSG_MAY_WALK && end == 1.0 && ((walked >> leaf) & 1u) != 0u) walk = 1u << leaf;  // past its interval: the next
@@ -316,7 +349,10 @@ uint csg_leaf_hit(Primitive node, Ray ray, float t, vec2 csg_uv, out vec2 uv, in
         error = max(error, leaf_error + abs(t_leaf - t));
         return piece == NO_PRIMITIVE ? leaf : piece;
     }
-    if (walked || p.type != SHAPE_PLANE) {
+    if (walked && csg_walked_root.xy == vec2(csg_uv.x, t)) {  // the root as the walk found it
+        uv = csg_walked_root.zw;
+        error = max(error, csg_walked_root_error);
+    } else if (walked || p.type != SHAPE_PLANE) {
         float t_leaf, leaf_error;
         // A walked root is looked for again within the gap about it, where few of the leaf's
         // pieces reach.

@@ -4,7 +4,8 @@
 // p.p0 = (lowest y, highest y, largest radius, degree), p.p1 = (segment count, 1 where closed),
 // p.data its first segment (LATHE_BANDS: r(s) and y(s) as cubics about s = 1/2, and the band).
 //
-// On a segment the curve is (r(s), y(s)), s in [0, 1]. Where the ray y = o.y + t d.y meets it,
+// A linear lathe's segments are cones, met in closed form (lathe_linear_intersect); the others'
+// are searched. On a segment the curve is (r(s), y(s)), s in [0, 1]. Where the ray y = o.y + t d.y meets it,
 // F(s) = (d.y o.x + (y(s) - o.y) d.x)^2 + (d.y o.z + (y(s) - o.y) d.z)^2 - (d.y r(s))^2 = 0, a
 // polynomial of degree 2n in s (n the lathe's degree). For a ray nearly level, F's roots come in
 // pairs (the ray nears the axis and leaves it again at almost one height), too close for float:
@@ -217,7 +218,62 @@ bool lathe_band_stretch(LatheBand band, float largest, Ray ray, float t_min, flo
     return lo <= hi;
 }
 
-bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
+// A linear lathe (its segments straight: POV-Ray's linear_spline) is a stack of cone frusta and
+// flat rings, each met in closed form, not by the search above. With a segment's midpoint (rm,
+// ym), h = y1 - y0 and dr = r1 - r0 (both divided by the larger, L), its cone is (h/L)^2 (x^2 +
+// z^2) = ((rm h + dr (y - ym))/L)^2: a quadratic in t, solved in the form that loses no digits to
+// cancellation, about the ray's point nearest the lathe's centre. A root is the segment's where
+// it lies on the nappe of radii >= 0 and its s (from the height, or from the radius for a segment
+// nearer level than upright) is in [0, 1] within a few of float's steps, as the search's Newton
+// step allows. A ray within rounding of touching the cone (the discriminant within 8 roundings of
+// 0) touches it.
+bool lathe_linear_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv) {
+    float best = t_max;
+    bool hit = false;
+    vec3 d = ray.dir;
+    float m = -dot(ray.origin, d);  // d is a unit vector (placement.glsl)
+    vec3 o = ray.origin + m * d;
+    float across = dot(d.xz, d.xz), along = dot(o.xz, d.xz), rho2 = dot(o.xz, o.xz);
+    uint count = uint(p.p1.x);
+    for (uint i = 0u; i < count; ++i) {
+        LatheBand band = lathe_band_at(p.data + i);
+        float s;
+        if (band.band.y == band.band.z) {
+            if (lathe_ring_hit(band, ray, t_min, best, best, s)) {
+                hit = true;
+                uv = vec2(float(i), s);
+            }
+            continue;
+        }
+        float L = max(abs(band.height.y), abs(band.radius.y));
+        float h = band.height.y / L, dr = band.radius.y / L;
+        float Y = o.y - band.height.x;
+        float P = band.radius.x * h + dr * Y, Q = dr * d.y;
+        float A = h * h * across - Q * Q, B = 2.0 * (h * h * along - P * Q), C = h * h * rho2 - P * P;
+        float disc = B * B - 4.0 * A * C;
+        if (disc < 0.0) {
+            if (disc < -4.8e-7 * (B * B + 4.0 * abs(A * C))) continue;
+            disc = 0.0;
+        }
+        float q = -0.5 * (B + (B >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
+        vec2 roots = vec2(A != 0.0 ? q / A : INFINITY, q != 0.0 ? C / q : INFINITY);
+        for (int k = 0; k < 2; ++k) {
+            float t = roots[k];
+            // The cone's other nappe (h rho = -(rm h + dr (y - ym)): a radius < 0) is not the lathe's.
+            if (!(t + m > t_min && t + m < best) || (P + Q * t) * h < 0.0) continue;
+            float r_s = abs(h) >= abs(dr) ? (Y + t * d.y) / band.height.y : (length(o.xz + t * d.xz) - band.radius.x) / band.radius.y;
+            if (!(abs(r_s) <= 0.5 + 2e-7)) continue;
+            best = t + m;
+            hit = true;
+            uv = vec2(float(i), clamp(0.5 + r_s, 0.0, 1.0));
+        }
+    }
+    t_hit = best;
+    return hit;
+}
+
+// A lathe of a quadratic, cubic or Bezier spline: the search described at the top of this file.
+bool lathe_curved_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv) {
     float best = t_max;
     bool hit = false;
     vec3 d = ray.dir;
@@ -381,6 +437,18 @@ bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t
     }
     t_hit = best;
     return hit;
+}
+
+// Each search compiled only where the scene has a lathe it serves (LATHE_DEGREES): lavapipe runs
+// an `if`'s both sides for every lane.
+const bool LINEAR_LATHES = (LATHE_DEGREES & 2u) != 0u;
+const bool CURVED_LATHES = (LATHE_DEGREES & ~2u) != 0u;
+
+bool lathe_intersect(Primitive p, Ray ray, float t_min, float t_max, out float t_hit, inout vec2 uv, inout float error) {
+    t_hit = t_max;
+    if (LINEAR_LATHES && p.p0.w == 1.0) return lathe_linear_intersect(p, ray, t_min, t_max, t_hit, uv);
+    if (CURVED_LATHES) return lathe_curved_intersect(p, ray, t_min, t_max, t_hit, uv);
+    return false;
 }
 
 // Whether a point is inside (CSG's walked leaves, csg.glsl; its reader lets only a closed lathe

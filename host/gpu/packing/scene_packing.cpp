@@ -103,6 +103,9 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         f.csg_leaf_shapes |= 1u << leaf.type;
     }
     f.leaf_only_shapes = f.csg_leaf_shapes & ~plan.flags.scene_shapes;
+    f.lathe_degrees = 0;
+    for (const Primitive& p : packed.primitives)
+        if (p.type == SHAPE_LATHE) f.lathe_degrees |= 1u << static_cast<uint>(p.p0.w);
     f.has_bvh = plan.flags.has_bvh;
     f.bvh_has_analytic = plan.flags.bvh_has_analytic;
     f.boxed_families = plan.flags.boxed_families;
