@@ -89,9 +89,9 @@ for w in "${workloads[@]}"; do
     grep -q "${path}_build=" "$log" || continue
     db=$(field_of "$log" "${path}_build"); dt=$(field_of "$log" "${path}_trace")
     dbytes=$(field_of "$log" "${path}_bytes"); scratch=$(field_of "$log" "${path}_scratch")
-    order="scene's order"; [ "$path" = driver_sorted ] && order="lancer's order"
+    order="the scene's order"; [ "$path" = driver_sorted ] && order="lancer's order"
     ratio=$(awk -v d="$dt" -v l="$lt" 'BEGIN { printf "%.2f", d / l }')
-    rows+=("| $w, driver given the $order | $(ms "$lb") | $(ms "$db") | $(mib "$lbytes") | $(mib "$dbytes") (+ $(mib "$scratch") scratch) | $(ms "$lt") | $(ms "$dt") | $ratio | $(ms "$cli") |")
+    rows+=("| $w, driver given $order | $(ms "$lb") | $(ms "$db") | $(mib "$lbytes") | $(mib "$dbytes") (+ $scratch B scratch) | $(ms "$lt") | $(ms "$dt") | $ratio | $(ms "$cli") |")
   done
 done
 
