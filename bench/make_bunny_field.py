@@ -2,24 +2,28 @@
 """Writes bench/out/bunny_field.toml: N placements (default 10,000: 6.9 x 10^8 triangles) of one
 Stanford bunny (../shared/models/stanford-bunny.obj) on a grid over a checkered floor, each turned
 and scaled a little, by a declared object: instances, one copy of the mesh on each backend.
-    python3 bench/make_bunny_field.py [N]
+    python3 bench/make_bunny_field.py [N] [--matte]
+With --matte, bench/out/bunny_field_matte.toml instead: the same bunnies, flat and matte, with no
+floor and one ray per pixel, for the driver's ray queries to trace alike (bench/ray_query.sh).
 """
 import math
 import os
 import random
 import sys
 
-n = int(sys.argv[1]) if len(sys.argv) > 1 else 10000
+args = [a for a in sys.argv[1:] if a != "--matte"]
+matte = "--matte" in sys.argv[1:]
+n = int(args[0]) if args else 10000
 side = math.ceil(math.sqrt(n))
 random.seed(1)
 os.makedirs("bench/out", exist_ok=True)
-with open("bench/out/bunny_field.toml", "w") as f:
-    f.write(f"""# {n} bunnies: written by bench/make_bunny_field.py.
+with open(f"bench/out/bunny_field{'_matte' if matte else ''}.toml", "w") as f:
+    f.write(f"""# {n} bunnies: written by bench/make_bunny_field.py{' --matte' if matte else ''}.
 [render]
 width = 1280
 height = 720
-samples = 3
-max_depth = 3
+samples = {1 if matte else 3}
+max_depth = {0 if matte else 3}
 background = [0.42, 0.56, 0.78]
 
 [camera]
@@ -30,9 +34,21 @@ fov = 45
 [[light]]
 position = [-30, 60, -40]
 color = [0.8, 0.8, 0.8]
+""")
+    if matte:
+        f.write("""
+[material.clay]
+color = [0.92, 0.88, 0.8]
 
+[declare.bunny]
+type = "mesh"
+file = "../../../shared/models/stanford-bunny.obj"
+material = "clay"
+""")
+    else:
+        f.write("""
 [material.floor]
-checker = {{ colors = [[1, 1, 1], [0.42, 0.42, 0.42]], size = 1.0 }}
+checker = { colors = [[1, 1, 1], [0.42, 0.42, 0.42]], size = 1.0 }
 
 [material.porcelain]
 color = [0.92, 0.88, 0.8]
