@@ -1,7 +1,6 @@
 #pragma once
 // Copying a big array into another piece by piece, giving the source's pages back to the kernel
-// behind the copy: the two never coexist whole, so the peak holds one array, not two (a million
-// objects' boxes, trees and primitives are each 50 to 120 MiB).
+// behind the copy: the two never coexist whole, so the peak holds one array, not two.
 #include <algorithm>
 #include <cstddef>
 #include <type_traits>

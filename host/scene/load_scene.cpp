@@ -354,7 +354,7 @@ Scene parse_scene_batches(std::string_view text, const SceneTextParts& parts, co
         return &names;
     });
     // The batches' trees were freed in the parsing threads' malloc arenas, whose free pages the
-    // kernel gets back only when asked: before the renderers make their arrays (about 20 MiB at 10^6).
+    // kernel gets back only when asked: asked here, before the renderers make their arrays.
     ::malloc_trim(0);
     return scene;
 }
