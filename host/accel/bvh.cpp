@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "core/huge_pages.hpp"
+#include "core/page_release.hpp"
 
 namespace lancer {
 namespace {
@@ -156,9 +157,27 @@ struct Builder {
             return n;
         };
         nodes[left + 1] = moved(right.nodes[0]);
-        for (std::size_t k = 1; k < right.nodes.size(); ++k) nodes.push_back(moved(right.nodes[k]));
+        std::size_t k = 0;
+        drain(right.nodes, [&](const BvhNode& n) {
+            if (k++ > 0) nodes.push_back(moved(n));
+        });
     }
 };
+
+// The tree over refs (every primitive's box and index, in any order), which it reorders to leaf order.
+Bvh build_over(std::vector<PrimitiveRef>& refs, const BvhOptions& options) {
+    const auto n = static_cast<std::uint32_t>(refs.size());
+    int thread_depth = 0;
+    for (unsigned threads = std::thread::hardware_concurrency(); threads > 1; threads /= 2) ++thread_depth;
+    Builder b{refs, options, thread_depth, {}};
+    reserve_huge(b.nodes, 2 * std::size_t(n) / std::max(1u, options.min_leaf_size));
+    b.nodes.emplace_back();
+    b.build(0, 0, n, b.bounds(0, n), 0);
+    Bvh bvh;
+    bvh.nodes = std::move(b.nodes);
+    reserve_huge(bvh.order, n);
+    return bvh;
+}
 
 }  // namespace
 
@@ -167,17 +186,23 @@ Bvh build_bvh(std::span<const Aabb> boxes, const BvhOptions& options) {
     std::vector<PrimitiveRef> refs;
     reserve_huge(refs, boxes.size());
     for (std::size_t i = 0; i < boxes.size(); ++i) refs.push_back({boxes[i], static_cast<std::uint32_t>(i)});
-    int thread_depth = 0;
-    for (unsigned threads = std::thread::hardware_concurrency(); threads > 1; threads /= 2) ++thread_depth;
-    Builder b{refs, options, thread_depth, {}};
-    reserve_huge(b.nodes, 2 * boxes.size() / std::max(1u, options.min_leaf_size));
-    b.nodes.emplace_back();
-    b.build(0, 0, static_cast<std::uint32_t>(boxes.size()), b.bounds(0, static_cast<std::uint32_t>(boxes.size())), 0);
-    Bvh bvh;
-    bvh.nodes = std::move(b.nodes);
-    reserve_huge(bvh.order, refs.size());
-    bvh.order.resize(refs.size());
-    for (std::size_t i = 0; i < refs.size(); ++i) bvh.order[i] = refs[i].index;
+    Bvh bvh = build_over(refs, options);
+    for (const PrimitiveRef& r : refs) bvh.order.push_back(r.index);
+    return bvh;
+}
+
+Bvh build_bvh_from(std::vector<Aabb>&& boxes, const BvhOptions& options, std::vector<Aabb>* leaf_boxes) {
+    if (boxes.empty()) return {};
+    std::vector<PrimitiveRef> refs;
+    reserve_huge(refs, boxes.size());
+    std::uint32_t index = 0;
+    drain(boxes, [&](const Aabb& box) { refs.push_back({box, index++}); });
+    Bvh bvh = build_over(refs, options);
+    if (leaf_boxes) reserve_huge(*leaf_boxes, refs.size());
+    drain(refs, [&](const PrimitiveRef& r) {
+        bvh.order.push_back(r.index);
+        if (leaf_boxes) leaf_boxes->push_back(r.box);
+    });
     return bvh;
 }
 

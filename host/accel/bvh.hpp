@@ -33,6 +33,10 @@ struct BvhOptions {
 
 Bvh build_bvh(std::span<const Aabb> boxes, const BvhOptions& options = {});
 
+// The same tree over boxes it takes, freed as it copies them (no second copy held); with
+// `leaf_boxes`, the boxes in leaf order come back there (leaf_boxes[i] = boxes[order[i]]).
+Bvh build_bvh_from(std::vector<Aabb>&& boxes, const BvhOptions& options = {}, std::vector<Aabb>* leaf_boxes = nullptr);
+
 // The last tree built, for a renderer that draws frame after frame: static geometry gives the
 // same boxes, and then the same tree without building it again. Boxes are compared exactly,
 // so any change at all rebuilds.

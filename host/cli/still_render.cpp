@@ -18,6 +18,7 @@ int render_still(const RenderOptions& options, const Scene& scene, const std::st
     check_output_writable(output);
     check_output_is_not_an_input(output, scene_inputs(scene));
     std::unique_ptr<Renderer> renderer = make_renderer(options);
+    renderer->expect_one_still();
 
     Interrupts interrupts;
     ProgressLine progress(options.quiet);

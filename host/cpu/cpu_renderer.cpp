@@ -32,6 +32,7 @@ std::string CpuRenderer::description() const {
 }
 
 FloatImage CpuRenderer::render(const Scene& scene, const ProgressFn& progress) {
+    tree_cache_ = one_still_ && !scene.render.aa_threshold ? nullptr : &bvh_cache_;
     if (scene.photons) return render_photons(scene, progress);
     if (!scene.render.aa_threshold) return render_grid(scene, progress);
     HostAdaptivePicture picture([&](const Scene& s, const ProgressFn& p) { return render_grid(s, p); },
@@ -112,7 +113,7 @@ void CpuRenderer::run_parallel(std::size_t count, std::size_t chunk, const std::
 
 FloatImage CpuRenderer::render_grid(const Scene& scene, const ProgressFn& progress) {
     const RenderSettings& rs = scene.render;
-    const cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
+    const cpu::Tracer tracer(scene, acceleration_, tree_cache_);
     const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
     FloatImage image(rs.width, rs.height);
     run_parallel(
@@ -127,7 +128,7 @@ FloatImage CpuRenderer::render_grid(const Scene& scene, const ProgressFn& progre
 std::vector<ListedPixel> CpuRenderer::render_listed(const Scene& scene, const std::vector<std::uint32_t>& pixels,
                                                     bool spread, const ProgressFn& progress) {
     const RenderSettings& rs = scene.render;
-    const cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
+    const cpu::Tracer tracer(scene, acceleration_, tree_cache_);
     const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
     std::vector<ListedPixel> listed(pixels.size());
     // Chunks of a row's length: as many progress reports as a full render's rows.
@@ -145,7 +146,7 @@ FloatImage CpuRenderer::render_photons(const Scene& scene, const ProgressFn& pro
     check_photon_lights(scene);
     const RenderSettings& rs = scene.render;
     const PhotonSettings& ps = *scene.photons;
-    cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
+    cpu::Tracer tracer(scene, acceleration_, tree_cache_);
     const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
     const int first = ps.first_pass, last = ps.last_pass();
     const auto n = static_cast<std::uint32_t>(rs.samples);
@@ -183,7 +184,7 @@ FloatImage CpuRenderer::render_photons(const Scene& scene, const ProgressFn& pro
 
 FloatImage CpuRenderer::render_hits(const Scene& scene) {
     const RenderSettings& rs = scene.render;
-    const cpu::Tracer tracer(scene, acceleration_, &bvh_cache_);
+    const cpu::Tracer tracer(scene, acceleration_, tree_cache_);
     const CameraBasis cam = make_camera_basis(scene.camera, rs.width, rs.height);
     FloatImage image(rs.width, rs.height);
     for (int y = 0; y < rs.height; ++y) {

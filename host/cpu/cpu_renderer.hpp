@@ -15,6 +15,7 @@ public:
     std::string description() const override;
     FloatImage render(const Scene& scene, const ProgressFn& progress) override;
     FloatImage render_hits(const Scene& scene) override;
+    void expect_one_still() override { one_still_ = true; }
 
     std::size_t bvh_builds() const { return bvh_cache_.builds(); }  // trees built so far (for tests)
 
@@ -35,6 +36,10 @@ private:
     unsigned threads_;
     Acceleration acceleration_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
+    bool one_still_ = false;
+    // The cache this render's tracers use: none for a still traced in one step, whose one tree
+    // needs no copy of its boxes kept to compare against.
+    BvhCache* tree_cache_ = &bvh_cache_;
 };
 
 }  // namespace lancer

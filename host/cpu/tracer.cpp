@@ -67,7 +67,7 @@ Tracer::Tracer(const Scene& scene, Acceleration acceleration, BvhCache* cache)
             unbounded_.push_back(&object);
         }
     }
-    bvh_ = cache ? cache->build(boxes) : std::make_shared<const Bvh>(build_bvh(boxes));
+    bvh_ = cache ? cache->build(boxes) : std::make_shared<const Bvh>(build_bvh_from(std::move(boxes)));
     std::vector<Aabb>().swap(boxes);
     std::vector<const Object*> ordered;
     ordered.reserve(bvh_->order.size());

@@ -164,14 +164,28 @@ std::string GpuRenderer::description() const {
 
 gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated) {
     const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
+    BvhCache* cache = one_still_ ? nullptr : &bvh_cache_;  // a still's one tree is built once
+    if (upload_once_) {
+        gpu::PackedScene packed = gpu::pack_scene(scene, {acceleration_, grid_use_, cache, &limits});
+        ++scenes_packed_;
+        const gpu::ShaderFeatures features = admit_packed(scene, packed, output_bytes, limits, generated);
+        resources_.upload_releasing(packed, gpu::pack_frame(scene, packed));
+        return features;
+    }
     std::shared_ptr<const gpu::PackedScene> fresh;
     if (!packing_once_ || !packed_) {
         (packing_once_ ? packed_ : fresh) =
-            std::make_shared<const gpu::PackedScene>(gpu::pack_scene(scene, {acceleration_, grid_use_, &bvh_cache_, &limits}));
+            std::make_shared<const gpu::PackedScene>(gpu::pack_scene(scene, {acceleration_, grid_use_, cache, &limits}));
         ++scenes_packed_;
     }
     const std::shared_ptr<const gpu::PackedScene>& shared = fresh ? fresh : packed_;
-    const gpu::PackedScene& packed = *shared;
+    const gpu::ShaderFeatures features = admit_packed(scene, *shared, output_bytes, limits, generated);
+    resources_.upload(shared, gpu::pack_frame(scene, *shared));
+    return features;
+}
+
+gpu::ShaderFeatures GpuRenderer::admit_packed(const Scene& scene, const gpu::PackedScene& packed, std::uint64_t output_bytes,
+                                              const gpu::DeviceMemoryLimits& limits, gpu::ShaderFiles& generated) {
     std::vector<gpu::BufferNeed> needs = gpu::render_buffer_needs(packed, output_bytes, selection_pixels_);
     gpu::check_memory_budget(needs, limits);
     std::uint64_t buffer_bytes = 0;
@@ -179,7 +193,6 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
     gpu::check_render_memory(scene, buffer_bytes);
     emitters_ = packed.emitters;
     float_notes_ = packed.float_notes;
-    resources_.upload(shared, gpu::pack_frame(scene, packed));
     if (std::string code = gpu::surface_functions_glsl(scene, context_->float64()); !code.empty()) generated["surface_functions.glsl"] = code;
     gpu::ShaderFeatures features = packed.features;
     features.check_loop_limit = gpu::limits_loop_iterations(context_->info());
@@ -218,10 +231,12 @@ FloatImage GpuRenderer::render_in_steps(const Scene& scene, const ProgressFn& pr
     // pass, the grid), so the scene is packed once for all of them (a parametric surface's
     // cells take 20-120 ms).
     packing_once_ = true;
+    upload_once_ = one_still_ && !scene.photons && !scene.render.aa_threshold;
     struct PackedOnce {
         GpuRenderer& renderer;
         ~PackedOnce() {
             renderer.packing_once_ = false;
+            renderer.upload_once_ = false;
             renderer.packed_.reset();
         }
     } packed_once{*this};

@@ -45,6 +45,7 @@ public:
     FloatImage render_in_steps(const Scene& scene, const ProgressFn& progress, const AdaptiveStepFn& step);
     FloatImage render_hits(const Scene& scene) override;
     void prepare(const Scene& scene, const ProgressFn& progress) override;
+    void expect_one_still() override { one_still_ = true; }
     std::vector<std::string> notes() const override;
     bool runs_shaders() const override { return true; }
     void use_shader_directory(const std::string& directory) override;
@@ -95,6 +96,10 @@ private:
     // Packs the scene within the device's limits and uploads it; returns the shader features
     // it needs, and adds the generated shader files it needs to `generated`.
     gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated);
+    // What upload_scene does with a packed scene before its upload: checks that it fits, keeps
+    // its notes and emitters, adds its generated code; returns its shader features.
+    gpu::ShaderFeatures admit_packed(const Scene& scene, const gpu::PackedScene& packed, std::uint64_t output_bytes,
+                                     const gpu::DeviceMemoryLimits& limits, gpu::ShaderFiles& generated);
     // Makes spirv_ the tracer built from base_tree_ with `generated` in place of the files of
     // the same names, compiling only when that changed; with `photons`, photon_spirv_ the
     // photon pass built the same way.
@@ -166,9 +171,11 @@ private:
     bool check_grid_contract_ = false;
     std::function<void(gpu::ShaderFeatures&)> override_features_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
+    bool one_still_ = false;  // expect_one_still(): no tree cached, and a one-step render's upload frees the host's arrays
     std::size_t bands_rerendered_ = 0;
     // Within one render_in_steps(): the scene as packed by its first upload, for the others.
     bool packing_once_ = false;
+    bool upload_once_ = false;  // a still of one step (no photons, no adaptive steps): uploaded once, nothing kept
     std::size_t scenes_packed_ = 0;
     std::shared_ptr<const gpu::PackedScene> packed_;  // also what resources_ compares the next upload against
     std::size_t max_dispatch_samples_ = 0;

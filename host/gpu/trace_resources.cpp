@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/page_release.hpp"
 #include "gpu/vulkan/resource_kinds.hpp"
 #include "gpu/vulkan/vk_check.hpp"
 
@@ -81,6 +82,30 @@ void TraceResources::upload(std::shared_ptr<const PackedScene> packed, const Fra
         last_upload_.bytes_written += end - first;
     }
     held_ = std::move(packed);
+    write_frame(frame);
+}
+
+void TraceResources::upload_releasing(PackedScene& packed, const FrameParams& frame) {
+    last_upload_ = {};
+    held_.reset();  // the buffers no longer hold it: the next upload writes every array
+    for (std::size_t a = 0; a < kSceneArrayCount; ++a) {
+        const std::span<const std::byte> bytes = packed.bytes(SceneArray(a));
+        const uint binding = kSceneArrays[a].binding;
+        reserve(binding, bytes.size());
+        constexpr std::size_t kStep = std::size_t(2) << 20;
+        const void* released = bytes.data();
+        for (std::size_t done = 0; done < bytes.size(); done += kStep) {
+            const std::size_t n = std::min(kStep, bytes.size() - done);
+            buffers_[binding].write(bytes.data() + done, n, done);
+            released = release_pages(released, bytes.data() + done + n);  // the host's copy, behind the device's
+        }
+        last_upload_.bytes_written += bytes.size();
+        packed.release(SceneArray(a));
+    }
+    write_frame(frame);
+}
+
+void TraceResources::write_frame(const FrameParams& frame) {
     reserve(BINDING_FRAME, sizeof(frame));
     buffers_[BINDING_FRAME].write(&frame, sizeof(frame));
     last_upload_.bytes_written += sizeof(frame);

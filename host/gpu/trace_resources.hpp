@@ -38,6 +38,9 @@ public:
     void upload(const PackedScene& packed, const FrameParams& frame) {  // keeps a copy
         upload(std::make_shared<const PackedScene>(packed), frame);
     }
+    // A scene uploaded once and never compared against (a still): each array is freed on the
+    // host as soon as its buffer holds it, so that the two copies never coexist whole.
+    void upload_releasing(PackedScene& packed, const FrameParams& frame);
     const UploadStats& last_upload() const { return last_upload_; }
 
     // The output band: at least `bytes`, mapped for reading back.
@@ -55,6 +58,7 @@ public:
 private:
     // Makes the buffer of `binding` hold at least `bytes`; true when it was (re)made.
     bool reserve(uint binding, std::size_t bytes);
+    void write_frame(const FrameParams& frame);
 
     const Context& context_;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;

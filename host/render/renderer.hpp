@@ -40,6 +40,11 @@ public:
     // `progress` can cancel it (RenderCancelled), as it can a render.
     virtual void prepare(const Scene& /*scene*/, const ProgressFn& /*progress*/) {}
 
+    // The caller renders one still with this renderer and no frame after it (lancer render):
+    // the renderer keeps nothing for frames to come (a BVH cache, the host's copy of what it
+    // uploaded), which would only add to the peak memory.
+    virtual void expect_one_still() {}
+
     // For tests of exactness: per pixel, the first hit of the ray through the pixel's centre as
     // (t, u, v, part): t < 0 for a miss, (u, v) the surface's own parameters where it has them,
     // part the index of the patch hit in a Bezier surface (else -1).

@@ -1,5 +1,7 @@
 #include "scene/load_scene.hpp"
 
+#include <malloc.h>
+
 #include <cerrno>
 #include <cstring>
 #include <deque>
@@ -341,7 +343,7 @@ Scene parse_scene_batches(std::string_view text, const SceneTextParts& parts, co
     SceneValuesScope values_scope(values);
     const toml::table head = toml::parse(std::string_view(parts.head), std::string_view(path));
     EntryNames names("object");
-    return read_scene(head, path, values, [&](TableReader& top, ObjectEntries& entries) -> const EntryNames* {
+    Scene scene = read_scene(head, path, values, [&](TableReader& top, ObjectEntries& entries) -> const EntryNames* {
         entries.reserve(parts.objects);
         for_each_batch(text, parts, path, [&](const toml::table& tree, const ObjectBatch& batch) {
             const FilePartScope part(tree, batch.first_line);
@@ -351,6 +353,10 @@ Scene parse_scene_batches(std::string_view text, const SceneTextParts& parts, co
         });
         return &names;
     });
+    // The batches' trees were freed in the parsing threads' malloc arenas, whose free pages the
+    // kernel gets back only when asked: asked here, before the renderers make their arrays.
+    ::malloc_trim(0);
+    return scene;
 }
 
 Scene parse_scene(std::string_view text, const std::string& path, SceneTime time, TomlReading reading) {

@@ -353,6 +353,34 @@ TEST(BvhReuse, StaticGeometryIsNotBuiltAgainFrameAfterFrame) {
     EXPECT_TRUE(identical(c, CpuRenderer().render(scene, {})));
 }
 
+// A renderer told it renders one still (lancer render) keeps no tree and, on the GPU, frees the
+// host's packed arrays as it uploads them: the same pictures as any renderer's; and should it
+// render again, a moved object included, nothing stale is left (the next upload writes every array).
+TEST(BvhReuse, ARendererForOneStillKeepsNoTreeAndRendersTheSame) {
+    std::string text = std::string(kStill);
+    for (int i = 0; i < 20; ++i)  // enough bounded objects for the GPU to use its BVH
+        text += fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, 0.2, 2]\nradius = 0.15\n", -2.0 + 0.2 * i);
+    Scene scene = test::scene_from_text(text);
+    scene.render.width = 32;
+    scene.render.height = 18;
+    GpuRenderer gpu(gpu::ContextOptions{"", true});
+    CpuRenderer cpu;
+    gpu.expect_one_still();
+    cpu.expect_one_still();
+    for (int round = 0; round < 2; ++round) {
+        const FloatImage g = gpu.render(scene, {}), c = cpu.render(scene, {});
+        EXPECT_EQ(gpu.bvh_builds(), 0u);
+        EXPECT_EQ(cpu.bvh_builds(), 0u);
+        EXPECT_TRUE(identical(g, GpuRenderer(gpu::ContextOptions{"", true}).render(scene, {}))) << "round " << round;
+        EXPECT_TRUE(identical(c, CpuRenderer().render(scene, {}))) << "round " << round;
+        std::get<Sphere>(scene.objects.back().shape).center.y += 0.3;
+    }
+    // Adaptive anti-aliasing traces in steps: the CPU's share one tree.
+    scene.render.aa_threshold = 0.1;
+    cpu.render(scene, {});
+    EXPECT_EQ(cpu.bvh_builds(), 1u);
+}
+
 // Skipping must never leave stale data: B after A equals B after B, and A really differs.
 TEST(GpuUpload, AlternatingScenesRenderAsFreshOnes) {
     Scene a = test::scene_from_text(kStill);

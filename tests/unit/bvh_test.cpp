@@ -76,6 +76,27 @@ TEST(Bvh, DegenerateLineOfBoxesKeepsDepthBounded) {
     check(boxes);
 }
 
+// Enough boxes for the right subtree to be built on a thread of its own, its nodes then drained
+// into the tree's (core/page_release.hpp): the tree still nests, and build_bvh_from, which takes
+// the boxes, gives the same tree with the boxes in leaf order beside it.
+TEST(Bvh, ThreadedBuildAndBuildFromGiveTheSameTree) {
+    const std::vector<Aabb> boxes = random_boxes(100000, 5, false);
+    check(boxes);
+    const Bvh bvh = build_bvh(boxes);
+    std::vector<Aabb> taken = boxes, leaf_boxes;
+    const Bvh from = build_bvh_from(std::move(taken), {}, &leaf_boxes);
+    EXPECT_TRUE(taken.empty());
+    ASSERT_EQ(from.nodes.size(), bvh.nodes.size());
+    for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
+        EXPECT_EQ(from.nodes[i].box, bvh.nodes[i].box);
+        EXPECT_EQ(from.nodes[i].first, bvh.nodes[i].first);
+        EXPECT_EQ(from.nodes[i].count, bvh.nodes[i].count);
+    }
+    EXPECT_EQ(from.order, bvh.order);
+    ASSERT_EQ(leaf_boxes.size(), boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) EXPECT_EQ(leaf_boxes[i], boxes[bvh.order[i]]);
+}
+
 TEST(Bvh, EmptyInputGivesEmptyTree) {
     Bvh bvh = build_bvh({});
     EXPECT_TRUE(bvh.nodes.empty());

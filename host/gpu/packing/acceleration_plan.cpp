@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/page_release.hpp"
 #include "gpu/packing/float_bounds.hpp"
 
 namespace lancer::gpu {
@@ -59,56 +60,84 @@ bool every_ray_takes_a_grid(const AccelerationPlan& plan, const PlanInput& input
     return true;
 }
 
+// primitives[i] becomes the old primitives[order[i]] (order: a permutation), in place: the
+// primitives are the plan's largest array, and a second one would double it.
+void put_in_leaf_order(std::vector<Primitive>& primitives, std::span<const std::uint32_t> order) {
+    std::vector<bool> placed(order.size());
+    for (std::size_t start = 0; start < order.size(); ++start) {
+        if (placed[start]) continue;
+        const Primitive first = primitives[start];
+        std::size_t i = start;
+        for (; order[i] != start; i = order[i]) {
+            primitives[i] = primitives[order[i]];
+            placed[i] = true;
+        }
+        primitives[i] = first;
+        placed[i] = true;
+    }
+}
+
 }  // namespace
 
-AccelerationPlan plan_scene(const PlanInput& input, const PlanOptions& options) {
+AccelerationPlan plan_scene(PlanInput input, const PlanOptions& options) {
     AccelerationPlan plan;
     PlanFlags& f = plan.flags;
     std::size_t bounded_count = 0;
+    Aabb everything;
     for (const auto& [p, box] : input.primitives) {
         bounded_count += box.has_value();
         f.scene_shapes |= 1u << p.type;
+        if (box) everything.extend(*box);
     }
     const Acceleration acceleration = options.acceleration;
     const bool use_bvh = acceleration == Acceleration::BvhAlways ||
                          (acceleration == Acceleration::Bvh &&
                           (bounded_count >= kMinPrimitivesForBvh || (options.grids == GridUse::Forced && bounded_count > 0)));
     const bool analytic_outside = cheap_ones_stay_outside(input.primitives);
-    std::vector<std::uint32_t> bounded;  // indices into input.primitives: a primitive is 16 times the size
-    std::vector<PrimitiveWithBox> unbounded;
+    // The BVH's primitives (then put in its leaf order, to become plan.primitives) and boxes apart
+    // from the others, the scene's pairs freed behind them: each array is held once.
+    std::vector<Primitive> bounded;
     std::vector<Aabb> boxes;
+    std::vector<PrimitiveWithBox> unbounded;
     if (use_bvh) {
-        bounded.reserve(bounded_count);
+        bounded.reserve(input.primitives.size());  // the unbounded ones follow it in plan.primitives
         boxes.reserve(bounded_count);
     }
-    for (std::size_t i = 0; i < input.primitives.size(); ++i) {
-        const auto& [p, box] = input.primitives[i];
-        if (use_bvh && box && !(analytic_outside && shape_is_boxable(p.type))) {
-            bounded.push_back(static_cast<std::uint32_t>(i));
-            boxes.push_back(*box);
+    drain(input.primitives, [&](const PrimitiveWithBox& e) {
+        if (use_bvh && e.second && !(analytic_outside && shape_is_boxable(e.first.type))) {
+            bounded.push_back(e.first);
+            boxes.push_back(*e.second);
         } else {
-            unbounded.emplace_back(p, box);
+            unbounded.push_back(e);
         }
-    }
+    });
     std::shared_ptr<const Bvh> cached;
     Bvh built;
-    const Bvh& bvh = options.cache ? *(cached = options.cache->build(boxes)) : (built = build_bvh(boxes));
-    // Sized once: growing by doubling would hold the old and the new array at once.
-    plan.primitives.reserve(bvh.order.size() + unbounded.size());
-    plan.grid_boxes.reserve(bvh.order.size());
-    plan.nodes.reserve(bvh.nodes.size());
-    for (std::uint32_t index : bvh.order) {
-        plan.primitives.push_back(input.primitives[bounded[index]].first);
-        plan.grid_boxes.push_back(boxes[index]);
+    if (options.cache) {
+        cached = options.cache->build(boxes);
+        plan.grid_boxes.reserve(cached->order.size());
+        for (std::uint32_t index : cached->order) plan.grid_boxes.push_back(boxes[index]);
+        std::vector<Aabb>().swap(boxes);  // freed before the direction grids are built
+    } else {
+        built = build_bvh_from(std::move(boxes), {}, &plan.grid_boxes);
     }
-    std::vector<Aabb>().swap(boxes);  // freed before the direction grids are built
-    std::vector<std::uint32_t>().swap(bounded);
-    for (const lancer::BvhNode& n : bvh.nodes) {
+    const Bvh& bvh = cached ? *cached : built;
+    put_in_leaf_order(bounded, bvh.order);
+    plan.primitives = std::move(bounded);
+    plan.nodes.reserve(bvh.nodes.size());
+    auto pack_node = [&](const lancer::BvhNode& n) {
         BvhNode g{};
         pack_box(n.box, g.lo, g.hi);
         g.first = n.first;
         g.count = n.count;
         plan.nodes.push_back(g);
+    };
+    if (cached) {
+        for (const lancer::BvhNode& n : cached->nodes) pack_node(n);
+        cached.reset();
+    } else {
+        drain(built.nodes, pack_node);
+        built = {};
     }
     f.has_bvh = !plan.nodes.empty();
     for (const Primitive& p : plan.primitives) f.bvh_has_analytic |= shape_is_boxable(p.type);
@@ -116,9 +145,6 @@ AccelerationPlan plan_scene(const PlanInput& input, const PlanOptions& options) 
     // By family, so that the shader tests each family in a loop of its own (scene.glsl), with a
     // box around each family of cheap bounded shapes where it pays (family_boxes.hpp).
     std::stable_sort(unbounded.begin(), unbounded.end(), [](const auto& a, const auto& b) { return a.first.type < b.first.type; });
-    Aabb everything;
-    for (const auto& [p, box] : input.primitives)
-        if (box) everything.extend(*box);
     for (uint type = 0; type < SHAPE_COUNT; ++type) {
         if (!shape_is_boxable(type)) continue;
         auto begin = std::find_if(unbounded.begin(), unbounded.end(), [&](const auto& e) { return e.first.type == type; });
@@ -127,6 +153,7 @@ AccelerationPlan plan_scene(const PlanInput& input, const PlanOptions& options) 
         if (plan.families[type].boxed) f.boxed_families |= 1u << type;
         if (plan.families[type].split) f.split_families |= 1u << type;
     }
+    plan.primitives.reserve(plan.primitives.size() + unbounded.size());
     for (const auto& e : unbounded) plan.primitives.push_back(e.first);
     plan.unbounded_count = static_cast<uint>(unbounded.size());
 

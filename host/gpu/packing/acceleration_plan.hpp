@@ -64,7 +64,8 @@ struct AccelerationPlan {
 };
 
 struct PlanInput {
-    std::span<const PrimitiveWithBox> primitives;  // in the scene's object order, boxes where bounded
+    std::vector<PrimitiveWithBox> primitives;      // in the scene's object order, boxes where bounded;
+                                                   // taken, and freed as the plan is made
     std::span<const lancer::Material> materials;   // the scene's, which primitives index
     std::span<const gpu::Light> lights;            // as packed (the GPU's coordinates)
     bool photons = false;                          // photon mapping traces rays of its own, without grids
@@ -72,7 +73,7 @@ struct PlanInput {
                                                    // object's coordinates is no flat mirror to the plan
 };
 
-AccelerationPlan plan_scene(const PlanInput& input, const PlanOptions& options = {});
+AccelerationPlan plan_scene(PlanInput input, const PlanOptions& options = {});
 
 // The scene's grids with the view's added: the eye's, and the mirror's for the plan's mirror.
 DirectionGrids plan_view(const AccelerationPlan& plan, const EyeView& view);

@@ -67,7 +67,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     }
 
     AccelerationPlan plan =
-        plan_scene({primitives, scene.materials, packed.lights, scene.photons.has_value(), packed.object_frames},
+        plan_scene({std::move(primitives), scene.materials, packed.lights, scene.photons.has_value(), packed.object_frames},
                    {options.acceleration, options.grids, options.cache});
     // The eye as the shader has it (pack_frame), so that camera rays start at the grid's origin.
     const CameraBasis cam = make_camera_basis(scene.camera, scene.render.width, scene.render.height);
@@ -154,6 +154,15 @@ std::span<const std::byte> PackedScene::bytes(SceneArray array) const {
 #undef LANCER_PACKED_BYTES
     }
     return {};
+}
+
+void PackedScene::release(SceneArray array) {
+    switch (array) {
+#define LANCER_PACKED_RELEASE(NAME, slot, kind, Element, member, reader, what) \
+    case SceneArray::NAME: std::vector<Element>().swap(member); return;
+        LANCER_SCENE_ARRAYS(LANCER_PACKED_RELEASE)
+#undef LANCER_PACKED_RELEASE
+    }
 }
 
 std::vector<BufferNeed> scene_buffer_needs(const PackedScene& packed) {

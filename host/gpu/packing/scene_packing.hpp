@@ -62,6 +62,7 @@ struct PackedScene {
 
     std::size_t count(SceneArray array) const;
     std::span<const std::byte> bytes(SceneArray array) const;
+    void release(SceneArray array);  // frees the array's memory (once the device holds a copy)
 };
 
 struct PackOptions {
