@@ -1,7 +1,8 @@
 // POV-Ray's lathe (shaders/shapes/lathe.glsl, host/cpu/shapes/lathe.cpp) on both backends:
 // against the shapes a linear lathe is (a rectangle turned about the axis is the capped
 // cylinder, a trapezoid the capped cone), and the backends against each other where no other
-// shape is the same (a cubic vase, Bezier pieces, an open quadratic urn, CSG both ways, glass).
+// shape is the same (a cubic vase, Bezier pieces, an open quadratic urn, CSG both ways, a linear
+// lathe in CSG, glass).
 #include <string>
 #include <tuple>
 #include <utility>
@@ -90,6 +91,18 @@ TEST(Lathe, CsgCutsItAndIsCutByIt) {
                                                       "radius = 0.9 }, { " + vase + " }]\n" + std::string(kLatheTurn));
     expect_lathe_backends_agree("lathe-cuts", "type = \"difference\"\nobjects = [{ type = \"box\", min = [-0.8, -0.6, -0.8], "
                                               "max = [0.8, 0.6, 0.8] }, { " + vase + " }]\n" + std::string(kLatheTurn));
+}
+
+// A linear lathe in CSG (POV-Ray's lathe1a, scaled down): its closed form, and the roots its walk
+// hands to the hit (the cut's inner walls seen through it, the rings' faces), both ways round.
+TEST(Lathe, ALinearLatheInCsgRendersAsTheReferenceDoes) {
+    const std::string ring = "type = \"lathe\", points = [[0.5, 0.25], [0.5, -0.25], [0.75, -0.25], [0.85, -0.5], [1, -0.275], "
+                             "[0.9, -0.225], [0.65, 0], [0.9, 0.225], [1, 0.275], [0.85, 0.5], [0.75, 0.25], [0.5, 0.25]]";
+    const std::string box = "type = \"box\", min = [0, -1.2, -1.2], max = [1.2, 1.2, 0], transform = { rotate = [0, 30, 0] }";
+    expect_lathe_backends_agree("lathe-linear-difference",
+                                "type = \"difference\"\nobjects = [{ " + ring + " }, { " + box + " }]\n" + kLatheTurn);
+    expect_lathe_backends_agree("lathe-linear-intersection",
+                                "type = \"intersection\"\nobjects = [{ " + ring + " }, { " + box + " }]\n" + kLatheTurn);
 }
 
 // Glass needs the normals out of the solid (the side a ray enters by): the vase's curve drawn
