@@ -19,6 +19,7 @@
 // and they cross); else, once both are under the tolerance, they meet (touch or cross).
 #include "scene/lathe_crossing.hpp"
 
+#include "scene/bezier_curve.hpp"
 #include "scene/limits.hpp"
 
 #include <algorithm>
@@ -137,44 +138,6 @@ void set_box(Item& item, int n) {
     }
 }
 
-// The Bezier piece over [s, 1] and over [0, s] of control points c (de Casteljau).
-void split(const std::array<dvec2, 4>& c, int n, double s, std::array<dvec2, 4>& left, std::array<dvec2, 4>& right) {
-    std::array<dvec2, 4> w = c;
-    left[0] = w[0];
-    right[n] = w[n];
-    for (int level = n; level > 0; --level) {
-        for (int i = 0; i < level; ++i) w[i] = (1.0 - s) * w[i] + s * w[i + 1];
-        left[n - level + 1] = w[0];
-        right[level - 1] = w[level - 1];
-    }
-}
-
-// The roots in (0, 1) of the derivative of a Bezier of degree n (<= 3) with control values b.
-void turning_points(const std::array<double, 4>& b, int n, std::vector<double>& out) {
-    if (n < 2) return;
-    std::array<double, 3> d{};
-    for (int i = 0; i < n; ++i) d[i] = b[i + 1] - b[i];
-    double c0 = d[0], c1, c2 = 0.0;  // the derivative / n in power form
-    if (n == 2) {
-        c1 = d[1] - d[0];
-    } else {
-        c1 = 2.0 * (d[1] - d[0]);
-        c2 = d[0] - 2.0 * d[1] + d[2];
-    }
-    auto keep = [&](double s) {
-        if (s > 0.0 && s < 1.0) out.push_back(s);
-    };
-    if (c2 != 0.0) {
-        const double disc = c1 * c1 - 4.0 * c2 * c0;
-        if (disc < 0.0) return;
-        const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-        if (q != 0.0) keep(c0 / q);
-        keep(q / c2);
-    } else if (c1 != 0.0) {
-        keep(-c0 / c1);
-    }
-}
-
 std::vector<Item> make_items(const Lathe& o) {
     const int n = o.degree;
     std::vector<Item> items;
@@ -187,9 +150,8 @@ std::vector<Item> make_items(const Lathe& o) {
             point = point && c[i] == c[0];
         }
         if (point) continue;  // a segment that is a point: its neighbours meet through it
-        std::vector<double> cuts;
-        turning_points(g.r, n, cuts);
-        turning_points(g.y, n, cuts);
+        std::vector<double> cuts = bezier_turning_points(g.r, n);
+        for (double s : bezier_turning_points(g.y, n)) cuts.push_back(s);
         std::sort(cuts.begin(), cuts.end());
         cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
         double done = 0.0;
@@ -198,7 +160,7 @@ std::vector<Item> make_items(const Lathe& o) {
             const double t = (s - done) / (1.0 - done);
             if (!(t > 0.0 && t < 1.0)) continue;
             std::array<dvec2, 4> left{}, right{};
-            split(c, n, t, left, right);
+            bezier_split(c, n, t, left, right);
             Item item;
             item.segment = k;
             item.c = left;
@@ -479,7 +441,7 @@ struct Refiner {
         const bool cut_a = asize >= bsize;
         const Piece& whole = cut_a ? a : b;
         Piece left, right;
-        split(whole.c, n, 0.5, left.c, right.c);
+        bezier_split(whole.c, n, 0.5, left.c, right.c);
         left.has_start = whole.has_start;
         left.has_end = false;
         right.has_start = false;

@@ -20,6 +20,7 @@
 
 #include <fmt/format.h>
 
+#include "scene/bezier_curve.hpp"
 #include "scene/lathe_crossing.hpp"
 #include "scene/limits.hpp"
 #include "scene/parse_surfaces.hpp"
@@ -41,42 +42,10 @@ std::vector<LathePoint> read_lathe_points(TableReader& t) {
     return points;
 }
 
-// The Bezier curve of degree n with control values b at s.
-double lathe_bezier(const std::array<double, 4>& b, int n, double s) {
-    std::array<double, 4> w = b;
-    for (int level = n; level > 0; --level)
-        for (int i = 0; i < level; ++i) w[i] = (1.0 - s) * w[i] + s * w[i + 1];
-    return w[0];
-}
-
-// The smallest radius of a segment's curve over s in [0, 1]: at its ends or where r'(s) = 0
-// (r' a Bezier of degree n - 1 in the control radii's differences: at most a quadratic).
+// The smallest radius of a segment's curve over s in [0, 1]: at its ends or where r turns.
 double lathe_least_radius(const LatheSegment& g, int n) {
     double least = std::min(g.r[0], g.r[n]);
-    if (n < 2) return least;
-    std::array<double, 3> d{};
-    for (int i = 0; i < n; ++i) d[i] = g.r[i + 1] - g.r[i];
-    // r'(s)/n in power form: c0 + c1 s + c2 s^2.
-    double c0 = d[0], c1 = 0.0, c2 = 0.0;
-    if (n == 2) {
-        c1 = d[1] - d[0];
-    } else {
-        c1 = 2.0 * (d[1] - d[0]);
-        c2 = d[0] - 2.0 * d[1] + d[2];
-    }
-    std::vector<double> roots;
-    if (c2 != 0.0) {
-        const double disc = c1 * c1 - 4.0 * c2 * c0;
-        if (disc >= 0.0) {
-            const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-            if (q != 0.0) roots.push_back(c0 / q);
-            roots.push_back(q / c2);
-        }
-    } else if (c1 != 0.0) {
-        roots.push_back(-c0 / c1);
-    }
-    for (double s : roots)
-        if (s > 0.0 && s < 1.0) least = std::min(least, lathe_bezier(g.r, n, s));
+    for (double s : bezier_turning_points(g.r, n)) least = std::min(least, bezier_at(g.r, n, s));
     return least;
 }
 
@@ -93,8 +62,8 @@ double lathe_twice_area(const LatheSegment& g, int n) {
     double sum = 0.0;
     for (int k = 0; k < 3; ++k) {
         const double s = 0.5 * (kNode[k] + 1.0);
-        const double r = lathe_bezier(g.r, n, s), y = lathe_bezier(g.y, n, s);
-        const double rp = lathe_bezier(dr, n - 1, s), yp = lathe_bezier(dy, n - 1, s);
+        const double r = bezier_at(g.r, n, s), y = bezier_at(g.y, n, s);
+        const double rp = bezier_at(dr, n - 1, s), yp = bezier_at(dy, n - 1, s);
         sum += 0.5 * kWeight[k] * (r * yp - y * rp);
     }
     return sum;

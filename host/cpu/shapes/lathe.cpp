@@ -37,6 +37,7 @@
 
 #include "cpu/shapes/bernstein_roots.hpp"
 #include "cpu/shapes/shapes.hpp"
+#include "scene/bezier_curve.hpp"
 
 namespace lancer::cpu {
 namespace {
@@ -57,19 +58,6 @@ std::optional<LatheLine> lathe_line(const Ray& ray) {
     return line;
 }
 
-// The Bezier curve of degree n with control values b at s (de Casteljau), and its derivative.
-double lathe_at(const std::array<double, 4>& b, int n, double s) {
-    std::array<double, 4> w = b;
-    for (int level = n; level > 0; --level)
-        for (int i = 0; i < level; ++i) w[i] = (1.0 - s) * w[i] + s * w[i + 1];
-    return w[0];
-}
-double lathe_derivative(const std::array<double, 4>& b, int n, double s) {
-    std::array<double, 4> d{};
-    for (int i = 0; i < n; ++i) d[i] = n * (b[i + 1] - b[i]);
-    return lathe_at(d, n - 1, s);
-}
-
 double lathe_size(const Lathe& o) { return std::max({o.r_max, std::abs(o.y_lo), std::abs(o.y_hi)}); }
 
 // The outward unit normal at the curve's parameter s (the segment's side of (y', -r'), turned
@@ -77,7 +65,7 @@ double lathe_size(const Lathe& o) { return std::max({o.r_max, std::abs(o.y_lo), 
 // repeated control point at an end), its chord's.
 dvec3 lathe_normal(const Lathe& o, const LatheSegment& g, double s, const dvec3& p, const dvec3& d) {
     const int n = o.degree;
-    double rp = lathe_derivative(g.r, n, s), yp = lathe_derivative(g.y, n, s);
+    double rp = bezier_slope(g.r, n, s), yp = bezier_slope(g.y, n, s);
     if (rp == 0.0 && yp == 0.0) {
         rp = g.r[n] - g.r[0];
         yp = g.y[n] - g.y[0];
@@ -95,53 +83,20 @@ struct LatheRoot {
     glm::dvec2 uv;  // (segment, s)
 };
 
-// The piece [s0, s1] of a segment's curve (de Casteljau twice): control values of degree n.
+// The piece [s0, s1] of a segment's curve (split twice): control values of degree n.
 std::array<double, 4> lathe_piece(const std::array<double, 4>& b, int n, double s0, double s1) {
-    auto right_of = [n](std::array<double, 4> w, double s) {  // the part over [s, 1]
-        std::array<double, 4> out{};
-        for (int level = n; level >= 0; --level) {
-            out[level] = w[level];
-            for (int i = 0; i < level; ++i) w[i] = (1.0 - s) * w[i] + s * w[i + 1];
-        }
-        return out;
-    };
-    auto left_of = [n](std::array<double, 4> w, double s) {  // the part over [0, s]
-        std::array<double, 4> out{};
-        for (int level = n; level >= 0; --level) {
-            out[n - level] = w[0];
-            for (int i = 0; i < level; ++i) w[i] = (1.0 - s) * w[i] + s * w[i + 1];
-        }
-        return out;
-    };
-    if (s0 > 0.0) {
-        std::array<double, 4> r = right_of(b, s0);
-        return s1 < 1.0 ? left_of(r, (s1 - s0) / (1.0 - s0)) : r;
-    }
-    return s1 < 1.0 ? left_of(b, s1) : b;
+    std::array<double, 4> left{}, right = b;
+    if (s0 > 0.0) bezier_split(b, n, s0, left, right);
+    if (!(s1 < 1.0)) return right;
+    std::array<double, 4> piece{}, rest{};
+    bezier_split(right, n, s0 > 0.0 ? (s1 - s0) / (1.0 - s0) : s1, piece, rest);
+    return piece;
 }
 
 // Where the segment's y(s) turns (y'(s) = 0 in (0, 1)), with 0 and 1, in order.
 std::vector<double> lathe_monotone_ends(const std::array<double, 4>& y, int n) {
     std::vector<double> ends{0.0};
-    if (n >= 2) {
-        // y'(s)/n: the Bezier of the differences, in power form c0 + c1 s + c2 s^2.
-        const double d0 = y[1] - y[0], d1 = y[2] - y[1], d2 = n == 3 ? y[3] - y[2] : 0.0;
-        const double c0 = d0, c1 = n == 3 ? 2.0 * (d1 - d0) : d1 - d0, c2 = n == 3 ? d0 - 2.0 * d1 + d2 : 0.0;
-        std::vector<double> roots;
-        if (c2 != 0.0) {
-            const double disc = c1 * c1 - 4.0 * c2 * c0;
-            if (disc > 0.0) {
-                const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-                roots.push_back(q / c2);
-                if (q != 0.0) roots.push_back(c0 / q);
-            }
-        } else if (c1 != 0.0) {
-            roots.push_back(-c0 / c1);
-        }
-        std::sort(roots.begin(), roots.end());
-        for (double s : roots)
-            if (s > 0.0 && s < 1.0 && s > ends.back()) ends.push_back(s);
-    }
+    for (double s : bezier_turning_points(y, n)) ends.push_back(s);
     ends.push_back(1.0);
     return ends;
 }
@@ -151,7 +106,7 @@ double lathe_height_at(const std::array<double, 4>& y, int n, double Y, double a
     for (int i = 0; i < 200; ++i) {
         const double m = 0.5 * (a + b);
         if (!(m > a && m < b)) break;
-        if ((lathe_at(y, n, m) - Y > 0.0) == a_above) a = m; else b = m;
+        if ((bezier_at(y, n, m) - Y > 0.0) == a_above) a = m; else b = m;
     }
     return 0.5 * (a + b);
 }
@@ -208,7 +163,7 @@ void lathe_piece_roots(const Lathe& o, std::size_t k, const LatheLine& line, con
     // A few roundings per control value (the pieces' de Casteljau too) and per product and sum.
     const double error = 256.0 * bernstein::kEpsilon * magnitude;
     auto value = [&](double u) {
-        const double q = lathe_at(py, n, u) - c.y, r = lathe_at(pr, n, u);
+        const double q = bezier_at(py, n, u) - c.y, r = bezier_at(pr, n, u);
         const double a = d.y * c.x + q * d.x, b = d.y * c.z + q * d.z, e = d.y * r;
         return a * a + b * b - e * e;
     };
@@ -216,9 +171,9 @@ void lathe_piece_roots(const Lathe& o, std::size_t k, const LatheLine& line, con
         const double s = s0 + (s1 - s0) * u;
         double sigma;
         if (side == 0.0) {
-            sigma = (lathe_at(g.y, n, s) - c.y) / d.y;
+            sigma = (bezier_at(g.y, n, s) - c.y) / d.y;
         } else {
-            const double r = lathe_at(g.r, n, s), gap = r * r - w.rho0_2;
+            const double r = bezier_at(g.r, n, s), gap = r * r - w.rho0_2;
             if (gap < -64.0 * bernstein::kEpsilon * (r * r + w.rho0_2)) return false;  // the circle misses the line
             sigma = w.middle + side * std::sqrt(std::max(gap, 0.0) / w.across);
         }
@@ -275,9 +230,9 @@ void lathe_segment_roots(const Lathe& o, std::size_t k, const LatheLine& line, d
             f[i] = g.r[i] - rho0;
             magnitude = std::max(magnitude, std::abs(g.r[i]) + rho0);
         }
-        auto value = [&](double s) { return lathe_at(g.r, n, s) - rho0; };
+        auto value = [&](double s) { return bezier_at(g.r, n, s) - rho0; };
         auto accept = [&](double s, double, double) {
-            const double sigma = (lathe_at(g.y, n, s) - c.y) / d.y;
+            const double sigma = (bezier_at(g.y, n, s) - c.y) / d.y;
             if (sigma > s_min && sigma < s_max) out.push_back({sigma, lathe_normal(o, g, s, c + sigma * d, d), glm::dvec2(double(k), s)});
             return false;
         };
@@ -296,7 +251,7 @@ void lathe_segment_roots(const Lathe& o, std::size_t k, const LatheLine& line, d
         const double Ylo = std::min(Ya, Yb), Yhi = std::max(Ya, Yb);
         for (std::size_t e = 0; e + 1 < ends.size(); ++e) {
             const double p0 = ends[e], p1 = ends[e + 1];
-            const double y0 = lathe_at(g.y, n, p0), y1 = lathe_at(g.y, n, p1);
+            const double y0 = bezier_at(g.y, n, p0), y1 = bezier_at(g.y, n, p1);
             if (y0 == y1) {  // level along the piece: a flat ring, which a level line in its plane only grazes
                 if (d.y == 0.0 || y0 < Ylo || y0 > Yhi) continue;
                 lathe_piece_roots<n>(o, k, line, w, p0, p1, side, out);
@@ -365,10 +320,10 @@ bool inside(const Lathe& o, const dvec3& p) {
             magnitude = std::max(magnitude, std::abs(g.y[i]) + std::abs(p.y));
         }
         const double error = 8.0 * bernstein::kEpsilon * magnitude;
-        auto value = [&](double s) { return lathe_at(g.y, n, s) - p.y; };
+        auto value = [&](double s) { return bezier_at(g.y, n, s) - p.y; };
         auto accept = [&](double s, double from, double to) {
             const bool crosses = from == to || ((value(from) > 0.0) != (value(to) > 0.0));
-            if (crosses && lathe_at(g.r, n, s) > rho) ++crossings;
+            if (crosses && bezier_at(g.r, n, s) > rho) ++crossings;
             return false;
         };
         if (n == 1) bernstein::isolate(std::array<double, 2>{c[0], c[1]}, 0.0, 1.0, error, value, accept, true);
