@@ -324,15 +324,21 @@ TEST(GpuUpload, ACameraMoveWritesOnlyTheViewAndKeepsThePipeline) {
     }
 }
 
-// Frames that move only the camera and lights reuse the BVH; moving an object builds it again,
-// and the picture is then exactly that of a fresh renderer (no stale tree), on both backends.
-TEST(BvhReuse, StaticGeometryIsNotBuiltAgainFrameAfterFrame) {
+// kStill with 20 small spheres more, enough bounded objects for the GPU to use its BVH, at 32x18.
+Scene still_with_twenty_spheres() {
     std::string text = std::string(kStill);
-    for (int i = 0; i < 20; ++i)  // enough bounded objects for the GPU to use its BVH
+    for (int i = 0; i < 20; ++i)
         text += fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, 0.2, 2]\nradius = 0.15\n", -2.0 + 0.2 * i);
     Scene scene = test::scene_from_text(text);
     scene.render.width = 32;
     scene.render.height = 18;
+    return scene;
+}
+
+// Frames that move only the camera and lights reuse the BVH; moving an object builds it again,
+// and the picture is then exactly that of a fresh renderer (no stale tree), on both backends.
+TEST(BvhReuse, StaticGeometryIsNotBuiltAgainFrameAfterFrame) {
+    Scene scene = still_with_twenty_spheres();
     GpuRenderer gpu(gpu::ContextOptions{"", true});
     CpuRenderer cpu;
     auto builds = [&] { return std::pair{gpu.bvh_builds(), cpu.bvh_builds()}; };
@@ -357,12 +363,7 @@ TEST(BvhReuse, StaticGeometryIsNotBuiltAgainFrameAfterFrame) {
 // host's packed arrays as it uploads them: the same pictures as any renderer's; and should it
 // render again, a moved object included, nothing stale is left (the next upload writes every array).
 TEST(BvhReuse, ARendererForOneStillKeepsNoTreeAndRendersTheSame) {
-    std::string text = std::string(kStill);
-    for (int i = 0; i < 20; ++i)  // enough bounded objects for the GPU to use its BVH
-        text += fmt::format("[[object]]\ntype = \"sphere\"\ncenter = [{}, 0.2, 2]\nradius = 0.15\n", -2.0 + 0.2 * i);
-    Scene scene = test::scene_from_text(text);
-    scene.render.width = 32;
-    scene.render.height = 18;
+    Scene scene = still_with_twenty_spheres();
     GpuRenderer gpu(gpu::ContextOptions{"", true});
     CpuRenderer cpu;
     gpu.expect_one_still();
