@@ -215,4 +215,20 @@ std::shared_ptr<const Bvh> BvhCache::build(std::span<const Aabb> boxes) {
     return bvh_;
 }
 
+std::shared_ptr<const Bvh> ElementTreeCache::tree(const std::shared_ptr<const void>& set, const std::function<Bvh()>& build) {
+    if (auto found = entries_.find(set.get()); found != entries_.end()) {
+        found->second.asked = true;
+        return found->second.tree;
+    }
+    auto tree = std::make_shared<const Bvh>(build());  // built before it is entered: a throw leaves no entry
+    ++builds_;
+    entries_.emplace(set.get(), Entry{set, tree});
+    return tree;
+}
+
+void ElementTreeCache::prune() {
+    std::erase_if(entries_, [](const auto& e) { return !e.second.asked; });
+    for (auto& [set, entry] : entries_) entry.asked = false;
+}
+
 }  // namespace lancer

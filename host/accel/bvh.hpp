@@ -3,7 +3,9 @@
 // of an inner node are adjacent (left, left + 1), and each leaf refers to a contiguous range of
 // `order`, so a renderer can reorder its primitives once and address leaves by range.
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <unordered_map>
 #include <span>
 #include <vector>
 
@@ -49,6 +51,28 @@ public:
 private:
     std::vector<Aabb> boxes_;
     std::shared_ptr<const Bvh> bvh_;
+    std::size_t builds_ = 0;
+};
+
+// The trees over element sets that the scene shares and never changes (a mesh's triangles, a
+// sphere set's spheres: held by shared_ptr<const ...>), for a renderer that draws frame after
+// frame: each set's tree is built once, not at every frame or camera move. The cache holds each
+// set while it holds its tree, so that the set's address names it; prune() lets go of the sets
+// not asked for since the last prune (a scene's old meshes).
+class ElementTreeCache {
+public:
+    // The tree over `set`'s elements, from `build` the first time.
+    std::shared_ptr<const Bvh> tree(const std::shared_ptr<const void>& set, const std::function<Bvh()>& build);
+    void prune();
+    std::size_t builds() const { return builds_; }  // trees built so far (for tests)
+
+private:
+    struct Entry {
+        std::shared_ptr<const void> set;
+        std::shared_ptr<const Bvh> tree;
+        bool asked = true;
+    };
+    std::unordered_map<const void*, Entry> entries_;
     std::size_t builds_ = 0;
 };
 

@@ -164,9 +164,11 @@ std::string GpuRenderer::description() const {
 
 gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated) {
     const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
-    BvhCache* cache = one_still_ ? nullptr : &bvh_cache_;  // a still's one tree is built once
+    // A still's trees are built once: no cache.
+    BvhCache* cache = one_still_ ? nullptr : &bvh_cache_;
+    ElementTreeCache* trees = one_still_ ? nullptr : &element_trees_;
     if (upload_once_) {
-        gpu::PackedScene packed = gpu::pack_scene(scene, {acceleration_, grid_use_, cache, &limits});
+        gpu::PackedScene packed = gpu::pack_scene(scene, {acceleration_, grid_use_, cache, trees, &limits});
         ++scenes_packed_;
         const gpu::ShaderFeatures features = admit_packed(scene, packed, output_bytes, limits, generated);
         resources_.upload_releasing(packed, gpu::pack_frame(scene, packed));
@@ -175,7 +177,7 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
     std::shared_ptr<const gpu::PackedScene> fresh;
     if (!packing_once_ || !packed_) {
         (packing_once_ ? packed_ : fresh) =
-            std::make_shared<const gpu::PackedScene>(gpu::pack_scene(scene, {acceleration_, grid_use_, cache, &limits}));
+            std::make_shared<const gpu::PackedScene>(gpu::pack_scene(scene, {acceleration_, grid_use_, cache, trees, &limits}));
         ++scenes_packed_;
     }
     const std::shared_ptr<const gpu::PackedScene>& shared = fresh ? fresh : packed_;

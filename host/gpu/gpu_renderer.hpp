@@ -80,6 +80,7 @@ public:
     std::size_t scenes_packed() const { return scenes_packed_; }
     const gpu::UploadStats& last_upload() const { return resources_.last_upload(); }
     std::size_t bvh_builds() const { return bvh_cache_.builds(); }  // trees built so far (for tests)
+    std::size_t element_tree_builds() const { return element_trees_.builds(); }  // meshes' and sphere sets' (for tests)
     // Choices of pixels to refine (adaptive anti-aliasing) made on the device so far (for tests).
     std::size_t device_selections() const { return device_selections_; }
     // Adaptive renders choose their pixels on the host, as where the device cannot hold the
@@ -171,6 +172,7 @@ private:
     bool check_grid_contract_ = false;
     std::function<void(gpu::ShaderFeatures&)> override_features_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
+    ElementTreeCache element_trees_;  // and every frame a mesh's or sphere set's
     bool one_still_ = false;  // expect_one_still(): no tree cached, and a one-step render's upload frees the host's arrays
     std::size_t bands_rerendered_ = 0;
     // Within one render_in_steps(): the scene as packed by its first upload, for the others.

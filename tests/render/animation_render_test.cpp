@@ -7,13 +7,17 @@
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 #include <gtest/gtest.h>
 
 #include "cpu/cpu_renderer.hpp"
 #include "gpu/layout.hpp"
 #include "gpu/packing/scene_packing.hpp"
+#include "mesh/mesh_geometry.hpp"
 #include "scene/animation.hpp"
 #include "scene/load_scene.hpp"
+#include "support/test_meshes.hpp"
 #include "support/test_support.hpp"
 
 namespace lancer {
@@ -380,6 +384,50 @@ TEST(BvhReuse, ARendererForOneStillKeepsNoTreeAndRendersTheSame) {
     scene.render.aa_threshold = 0.1;
     cpu.render(scene, {});
     EXPECT_EQ(cpu.bvh_builds(), 1u);
+}
+
+// kStill's spheres turned into a mesh (an icosphere) and a sphere set placed beside it.
+Scene still_with_a_mesh_and_a_sphere_set() {
+    Scene scene = test::scene_from_text(kStill);
+    scene.objects.push_back(scene.objects[1]);
+    Mesh mesh;
+    mesh.geometry = std::make_shared<const MeshGeometry>(test::icosphere(2, dvec3(-0.8, 0.6, 1.0), 0.6));
+    scene.objects[1].shape = mesh;
+    SphereSet set;
+    set.cloud = std::make_shared<const SphereCloud>(std::vector<glm::vec4>{{0.9f, 0.3f, 0.8f, 0.3f}, {1.4f, 0.25f, 1.2f, 0.25f}},
+                                                    std::vector<std::uint32_t>{}, std::vector<dvec3>{});
+    scene.objects[2].shape = set;
+    for (int k : {1, 2}) scene.objects[k].placement = Placement{glm::dmat4(1.0), glm::dmat4(1.0), true};
+    return scene;
+}
+
+// A mesh's and a sphere set's trees are built once for frame after frame (the shared geometry
+// names them), while their placements move; a new geometry gets its own tree, the old one's is let
+// go, and every picture is a fresh renderer's. A renderer for one still keeps none.
+TEST(BvhReuse, AMeshOrSphereSetTreeIsBuiltOnceForEveryFrame) {
+    Scene scene = still_with_a_mesh_and_a_sphere_set();
+    GpuRenderer gpu(gpu::ContextOptions{"", true});
+    auto fresh = [&] { return GpuRenderer(gpu::ContextOptions{"", true}).render(scene, {}); };
+    EXPECT_TRUE(identical(gpu.render(scene, {}), fresh()));
+    EXPECT_EQ(gpu.element_tree_builds(), 2u);
+    scene.camera.eye.x += 0.5;
+    for (int k : {1, 2}) {
+        const glm::dmat4 moved = glm::translate(glm::dmat4(1.0), dvec3(0.1 * k, 0.2, 0.0));
+        scene.objects[k].placement = Placement{moved, glm::inverse(moved), true};
+    }
+    EXPECT_TRUE(identical(gpu.render(scene, {}), fresh())) << "camera and placements moved";
+    EXPECT_EQ(gpu.element_tree_builds(), 2u) << "camera and placements moved, geometry did not";
+
+    const std::weak_ptr<const MeshGeometry> old_geometry = std::get<Mesh>(scene.objects[1].shape).geometry;
+    std::get<Mesh>(scene.objects[1].shape).geometry = std::make_shared<const MeshGeometry>(test::icosphere(1, dvec3(-0.7, 0.5, 1.0), 0.5));
+    EXPECT_TRUE(identical(gpu.render(scene, {}), fresh())) << "a new mesh";
+    EXPECT_EQ(gpu.element_tree_builds(), 3u) << "a new mesh";
+    EXPECT_TRUE(old_geometry.expired()) << "the old mesh's tree is let go";
+
+    GpuRenderer one_still(gpu::ContextOptions{"", true});
+    one_still.expect_one_still();
+    EXPECT_TRUE(identical(one_still.render(scene, {}), fresh()));
+    EXPECT_EQ(one_still.element_tree_builds(), 0u);
 }
 
 // Skipping must never leave stale data: B after A equals B after B, and A really differs.

@@ -27,6 +27,7 @@ struct PrimitivePacker {
     uint material = 0;
     uint object = 0;
     const SpherePacking& spheres;
+    ElementTreeCache* trees = nullptr;
 
     void add(Primitive p, std::optional<Aabb> box) { prims.emplace_back(p, box); }
 
@@ -116,7 +117,7 @@ struct PrimitivePacker {
             const bool own_space = leaf.placement && leaf.placement->shape_in_object_space;
             const SpherePacking leaf_spheres{spheres.by_near_points, own_space ? leaf.placement->object_point(spheres.eye) : spheres.eye};
             const uint frame = out.csg_leaf_frames + out.csg_leaves_framed++;
-            pack_object(leaf.shape, leaf.material, frame, leaf_spheres, out, one);
+            pack_object(leaf.shape, leaf.material, frame, leaf_spheres, out, one, trees);
             const int outward = outward_side(leaf.shape);
             if (!shape_has(shape_type(leaf.shape), SHAPE_IN_PIECES)) {
                 Primitive p = one.at(0).first;
@@ -168,7 +169,7 @@ struct PrimitivePacker {
     // materials where a placement takes them (the same for every such placement).
     void operator()(const Mesh& m) {
         const auto [found, added] = out.mesh_indices.try_emplace(m.geometry.get(), static_cast<uint>(out.meshes.size()));
-        if (added) pack_mesh(*m.geometry);
+        if (added) pack_mesh(*m.geometry, *element_tree(m.geometry, [&] { return mesh_tree(*m.geometry); }));
         pack_element_materials(out.meshes[found->second], m, out.mesh_order);
         add({SHAPE_MESH, material, found->second, object,
              vec4(m.smooth ? 1.0f : 0.0f, m.part_materials.empty() ? 0.0f : 1.0f, 0.0f, 0.0f), {}, {}},
@@ -197,16 +198,26 @@ struct PrimitivePacker {
         }
         return info;
     }
-    void pack_mesh(const MeshGeometry& geometry) {
+    // The tree of a set the scene shares (a mesh's geometry, a sphere set's cloud): the cache's,
+    // where the renderer keeps one, else built now.
+    template <class Set>
+    std::shared_ptr<const Bvh> element_tree(const std::shared_ptr<const Set>& set, const std::function<Bvh()>& build) {
+        return trees ? trees->tree(set, build) : std::make_shared<const Bvh>(build());
+    }
+    // Over the triangles' boxes around their float vertices, which the shader tests.
+    static Bvh mesh_tree(const MeshGeometry& geometry) {
         const TriangleMesh& mesh = geometry.mesh();
         std::vector<Aabb> boxes;
         reserve_huge(boxes, mesh.triangles.size());
         for (const auto& t : mesh.triangles) {
             Aabb box;
-            for (std::uint32_t v : t) box.extend(dvec3(glm::vec3(mesh.positions[v])));  // the float vertex
+            for (std::uint32_t v : t) box.extend(dvec3(glm::vec3(mesh.positions[v])));
             boxes.push_back(box);
         }
-        const Bvh bvh = build_bvh(boxes);
+        return build_bvh_from(std::move(boxes));
+    }
+    void pack_mesh(const MeshGeometry& geometry, const Bvh& bvh) {
+        const TriangleMesh& mesh = geometry.mesh();
         const MeshInfo info = pack_element_tree(bvh, static_cast<uint>(out.mesh_triangles.size()), static_cast<uint>(mesh.triangles.size()));
         constexpr glm::dvec2 kCorners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
         reserve_huge(out.mesh_triangles, out.mesh_triangles.size() + mesh.triangles.size());
@@ -230,23 +241,24 @@ struct PrimitivePacker {
     // itself once, its spheres in its own BVH's leaf order.
     void operator()(const SphereSet& s) {
         const auto [found, added] = out.mesh_indices.try_emplace(s.cloud.get(), static_cast<uint>(out.meshes.size()));
-        if (added) pack_sphere_set(*s.cloud);
+        if (added) pack_sphere_set(*s.cloud, *element_tree(s.cloud, [&] { return sphere_set_tree(*s.cloud); }));
         pack_element_materials(out.meshes[found->second], s, out.set_order);
         add({SHAPE_SPHERES, material, found->second, object, vec4(0.0f, s.part_materials.empty() ? 0.0f : 1.0f, 0.0f, 0.0f), {}, {}},
             shape_bounds(s));
     }
-    void pack_sphere_set(const SphereCloud& cloud) {
-        const auto& spheres = cloud.spheres();
+    static Bvh sphere_set_tree(const SphereCloud& cloud) {
         std::vector<Aabb> boxes;
-        reserve_huge(boxes, spheres.size());
-        for (std::uint32_t i = 0; i < spheres.size(); ++i) {
+        reserve_huge(boxes, cloud.spheres().size());
+        for (std::uint32_t i = 0; i < cloud.spheres().size(); ++i) {
             Aabb& box = boxes.emplace_back();
             cloud.extend(i, box.lo, box.hi);
         }
         // Leaves of up to 4 whatever the SAH says: half the nodes, and faster on lavapipe (a sphere's
         // test costs about a box's; docs/performance.md).
-        const Bvh bvh = build_bvh(boxes, BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
-        boxes = {};
+        return build_bvh_from(std::move(boxes), BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
+    }
+    void pack_sphere_set(const SphereCloud& cloud, const Bvh& bvh) {
+        const auto& spheres = cloud.spheres();
         out.meshes.push_back(pack_element_tree(bvh, static_cast<uint>(out.set_spheres.size()), static_cast<uint>(spheres.size())));
         reserve_huge(out.set_spheres, out.set_spheres.size() + spheres.size());
         reserve_huge(out.set_order, out.set_order.size() + spheres.size());
@@ -491,8 +503,8 @@ SpherePacking sphere_packing(const Scene& scene) {
 }
 
 void pack_object(const Shape& shape, uint material, uint object, const SpherePacking& spheres, PackedScene& out,
-                 std::vector<PrimitiveWithBox>& primitives) {
-    std::visit(PrimitivePacker{out, primitives, material, object, spheres}, shape);
+                 std::vector<PrimitiveWithBox>& primitives, ElementTreeCache* trees) {
+    std::visit(PrimitivePacker{out, primitives, material, object, spheres, trees}, shape);
 }
 
 std::uint64_t bezier_leaf_count(const Scene& scene) {

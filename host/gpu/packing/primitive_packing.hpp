@@ -23,9 +23,9 @@ struct SpherePacking {
 SpherePacking sphere_packing(const Scene& scene);
 
 // Appends the primitives of scene object `object`, made of `material`, to `primitives`, and what
-// they index to `out`'s arrays.
+// they index to `out`'s arrays; the trees of meshes and sphere sets from `trees` where given.
 void pack_object(const Shape& shape, uint material, uint object, const SpherePacking& spheres, PackedScene& out,
-                 std::vector<PrimitiveWithBox>& primitives);
+                 std::vector<PrimitiveWithBox>& primitives, ElementTreeCache* trees = nullptr);
 
 // The Bezier leaves of the whole scene, counted before any is made: a scene with too many for
 // the device is refused before the packer spends seconds and gigabytes on them.

@@ -41,7 +41,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         const Object& o = scene.objects[i];
         placed |= o.placement.has_value();
         if (!o.placement || !o.placement->shape_in_object_space) {
-            pack_object(o.shape, o.material, static_cast<uint>(i), spheres, packed, primitives);
+            pack_object(o.shape, o.material, static_cast<uint>(i), spheres, packed, primitives, options.element_trees);
             continue;
         }
         // A shape in its own coordinates is packed there, by its point nearest the anchor there;
@@ -49,7 +49,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         object_space = true;
         const std::size_t first = primitives.size();
         pack_object(o.shape, o.material, static_cast<uint>(i), {spheres.by_near_points, o.placement->object_point(spheres.eye)},
-                    packed, primitives);
+                    packed, primitives, options.element_trees);
         for (std::size_t k = first; k < primitives.size(); ++k)
             if (primitives[k].second) primitives[k].second = object_bounds(o);
     }
@@ -66,6 +66,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         packed.photon_count = static_cast<uint>(scene.photons->count);
     }
 
+    if (options.element_trees) options.element_trees->prune();  // the sets of earlier scenes let go
     AccelerationPlan plan =
         plan_scene({std::move(primitives), scene.materials, packed.lights, scene.photons.has_value(), packed.object_frames},
                    {options.acceleration, options.grids, options.cache});

@@ -69,6 +69,7 @@ struct PackOptions {
     Acceleration acceleration = Acceleration::Bvh;
     GridUse grids = GridUse::Auto;
     BvhCache* cache = nullptr;  // with one, a BVH over the same boxes as the last one is not built again
+    ElementTreeCache* element_trees = nullptr;  // with one, a mesh's or sphere set's tree is built once
     // When given, an array that would not fit the device is refused (UserError) before it is
     // filled: Bezier leaves multiply a scene's patches by up to 256.
     const DeviceMemoryLimits* limits = nullptr;
