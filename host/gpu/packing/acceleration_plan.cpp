@@ -13,6 +13,18 @@ namespace {
 // With this few bounded primitives, testing them all beats traversing a tree (measured on
 // lavapipe: the BVH loop's stack and divergence cost more than a handful of sphere tests).
 constexpr std::size_t kMinPrimitivesForBvh = 16;
+// But two shapes that are costly to test and tightly boxed (prisms and text, lathes, sors, blobs,
+// superellipsoids, meshes, sphere sets) pay for a tree already: outside one, every ray runs each
+// one's whole test, masked where it misses its box (bench/extrusions.toml 0.42 of the time).
+// Not counted: CSG objects, tori and implicit surfaces, whose scenes ran as fast or slower in a
+// tree (scenes/lens.toml 1.07, tori.toml 1.0, implicit.toml 1.05), its traversal making their
+// pipelines slower to create (docs/performance.md).
+constexpr std::size_t kMinCostlyForBvh = 2;
+
+bool costly_in_a_tree(uint type) {
+    return !shape_has(type, SHAPE_CHEAP) && type != SHAPE_CSG && type != SHAPE_TORUS && type != SHAPE_IMPLICIT;
+}
+
 // At most this many cheap bounded shapes stay outside a BVH of costly ones.
 constexpr std::size_t kMaxAnalyticOutsideBvh = 8;
 
@@ -82,17 +94,18 @@ void put_in_leaf_order(std::vector<Primitive>& primitives, std::span<const std::
 AccelerationPlan plan_scene(PlanInput input, const PlanOptions& options) {
     AccelerationPlan plan;
     PlanFlags& f = plan.flags;
-    std::size_t bounded_count = 0;
+    std::size_t bounded_count = 0, costly_count = 0;
     Aabb everything;
     for (const auto& [p, box] : input.primitives) {
         bounded_count += box.has_value();
+        costly_count += box.has_value() && costly_in_a_tree(p.type);
         f.scene_shapes |= 1u << p.type;
         if (box) everything.extend(*box);
     }
     const Acceleration acceleration = options.acceleration;
+    const bool enough = bounded_count >= kMinPrimitivesForBvh || costly_count >= kMinCostlyForBvh;
     const bool use_bvh = acceleration == Acceleration::BvhAlways ||
-                         (acceleration == Acceleration::Bvh &&
-                          (bounded_count >= kMinPrimitivesForBvh || (options.grids == GridUse::Forced && bounded_count > 0)));
+                         (acceleration == Acceleration::Bvh && (enough || (options.grids == GridUse::Forced && bounded_count > 0)));
     const bool analytic_outside = cheap_ones_stay_outside(input.primitives);
     // The BVH's primitives (then put in its leaf order, to become plan.primitives) and boxes apart
     // from the others, the scene's pairs freed behind them: each array is held once.
