@@ -13,16 +13,18 @@ namespace {
 // With this few bounded primitives, testing them all beats traversing a tree (measured on
 // lavapipe: the BVH loop's stack and divergence cost more than a handful of sphere tests).
 constexpr std::size_t kMinPrimitivesForBvh = 16;
-// But two shapes that are costly to test and tightly boxed (prisms and text, lathes, sors, blobs,
-// superellipsoids, meshes, sphere sets) pay for a tree already: outside one, every ray runs each
-// one's whole test, masked where it misses its box (bench/extrusions.toml 0.42 of the time).
-// Not counted: CSG objects, tori and implicit surfaces, whose scenes ran as fast or slower in a
-// tree (scenes/lens.toml 1.07, tori.toml 1.0, implicit.toml 1.05), its traversal making their
-// pipelines slower to create (docs/performance.md).
+// But two shapes that are costly to test and tightly boxed pay for a tree already: outside one,
+// every ray runs each one's whole test, masked where it misses its box (bench/extrusions.toml 0.42
+// of the time). Those are prisms and text, lathes, sors, blobs, superellipsoids, meshes and sphere
+// sets, and cheap shapes kept in their own coordinates, whose test carries the ray there first
+// (scenes/transforms.toml 0.58 at 1280x720). Not counted: CSG objects, tori and implicit
+// surfaces, whose scenes ran as fast or slower in a tree (scenes/lens.toml 1.07, tori.toml 1.0,
+// implicit.toml 1.05), its traversal making their pipelines slower to create (docs/performance.md).
 constexpr std::size_t kMinCostlyForBvh = 2;
 
-bool costly_in_a_tree(uint type) {
-    return !shape_has(type, SHAPE_CHEAP) && type != SHAPE_CSG && type != SHAPE_TORUS && type != SHAPE_IMPLICIT;
+bool costly_in_a_tree(const Primitive& p, std::span<const ObjectFrame> frames) {
+    if (shape_has(p.type, SHAPE_CHEAP)) return !frames.empty() && frames[p.object].in_object_space != 0;
+    return p.type != SHAPE_CSG && p.type != SHAPE_TORUS && p.type != SHAPE_IMPLICIT;
 }
 
 // At most this many cheap bounded shapes stay outside a BVH of costly ones.
@@ -98,7 +100,7 @@ AccelerationPlan plan_scene(PlanInput input, const PlanOptions& options) {
     Aabb everything;
     for (const auto& [p, box] : input.primitives) {
         bounded_count += box.has_value();
-        costly_count += box.has_value() && costly_in_a_tree(p.type);
+        costly_count += box.has_value() && costly_in_a_tree(p, input.frames);
         f.scene_shapes |= 1u << p.type;
         if (box) everything.extend(*box);
     }
