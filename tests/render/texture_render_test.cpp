@@ -144,6 +144,45 @@ TEST_P(Textures, ScaleOffsetRotateAndWrapPlaceTheImageAsDocumented) {
     expect_texels_on_rectangle(GetParam(), {", scale = 0.6, offset = [0.2, 0.3], wrap = \"clamp\"", {0.6, 0.6}, {0.2, 0.3}, 0.0, true});
 }
 
+// The same plate as a mesh of two triangles (an OBJ), its texture coordinates the file's and
+// turned a quarter against the plate's edges: u = 1 - b, v = a. Every pixel away from texel edges
+// shows the texel those coordinates name, interpolated across either triangle (the same affine
+// map on both, so the diagonal between them is no exception).
+TEST_P(Textures, TexelsLandWhereAMeshsOwnTextureCoordinatesPutThem) {
+    std::string file = write_texture("mesh-labels", 4, 3, label);
+    const std::string obj = test::fresh_dir("plate") + "/plate.obj";
+    test::write_file(obj, "v -1.5 -1 0\nv 1.5 -1 0\nv 1.5 1 0\nv -1.5 1 0\n"
+                          "vt 1 0\nvt 1 1\nvt 0 1\nvt 0 0\n"
+                          "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+    Scene s = test::scene_from_text(view_of(64, 48, "[0.2, 0.1, -4]", 45) + fmt::format(R"(
+        {}
+        [material.m]
+        ambient = 1
+        texture = {{ file = "{}", filter = "nearest" }}
+        [[object]]
+        type = "mesh"
+        file = "{}"
+        material = "m"
+    )", kUnlit, file, obj));
+    FloatImage img = test::render_on(GetParam(), s);
+    int checked = 0;
+    for (int y = 0; y < img.height; ++y) {
+        for (int x = 0; x < img.width; ++x) {
+            glm::dvec3 p = on_plate(s, x, y);
+            dvec2 ab((p.x + 1.5) / 3.0, (p.y + 1.0) / 2.0);
+            if (ab.x < 0.01 || ab.x > 0.99 || ab.y < 0.01 || ab.y > 0.99) continue;
+            auto texel = texel_at(1.0 - ab.y, ab.x, 4, 3);
+            if (!texel) continue;
+            std::array<int, 3> bytes = label(texel->x, texel->y);
+            for (int c = 0; c < 3; ++c)
+                ASSERT_NEAR(img.at(x, y)[c], srgb_to_linear(bytes[c]), 2e-5)
+                    << "pixel " << x << "," << y << " should show texel " << texel->x << "," << texel->y;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 700);  // of the ~1250 pixels on the plate
+}
+
 // A sphere turned by rotate = [20, 35, 0]: the texel seen at each pixel is the one at the
 // longitude and latitude of the hit point in the sphere's own frame.
 TEST_P(Textures, SphericalMappingFollowsLongitudeAndLatitude) {
