@@ -79,7 +79,11 @@ private:
         std::string_view name;
         toml::source_position begin, end;
     };
-    enum class Last { Nothing, Comma, Item };  // in an array or inline table
+    // The items of an array or inline table, their opening bracket next: `item(c)` reads one that
+    // starts with c. An array's may be on several lines, with comments, and a comma may end it.
+    enum class List { Array, InlineTable };
+    template <class ReadItem>
+    void comma_separated(List list, ReadItem item);
 
     [[noreturn]] static void decline() { throw NotPlain{}; }
     bool done() const { return at_ >= text_.size(); }
@@ -418,57 +422,49 @@ NodePtr PlainReader::number() {
     return make_value(negative ? -1 * x : x);  // toml::parse multiplies by the sign: -0.0 stays
 }
 
-// [values, ...] over any lines, with comments; a comma may end it.
-NodePtr PlainReader::array() {
+template <class ReadItem>
+void PlainReader::comma_separated(List list, ReadItem item) {
+    const char close = list == List::Array ? ']' : '}';
+    enum class Last { Nothing, Comma, Item } last = Last::Nothing;
     ++at_;
-    auto a = std::make_unique<toml::array>();
-    Last last = Last::Nothing;
     while (true) {
-        skip_blank_lines();
+        list == List::Array ? skip_blank_lines() : skip_blanks();
         if (done()) decline();
         const char c = peek();
         if (c == ',') {
             if (last != Last::Item) decline();
             last = Last::Comma;
             ++at_;
-        } else if (c == ']') {
+        } else if (c == close) {
+            if (last == Last::Comma && list == List::InlineTable) decline();  // TOML 1.0: none in an inline table
             ++at_;
-            break;
+            return;
         } else {
             if (last == Last::Item) decline();
-            if (a->empty()) a->reserve(4);  // as toml::parse: an array's first four values, one allocation
-            a->emplace_back<NodePtr>(value());
+            item(c);
             last = Last::Item;
         }
     }
+}
+
+// [values, ...]
+NodePtr PlainReader::array() {
+    auto a = std::make_unique<toml::array>();
+    comma_separated(List::Array, [&](char) {
+        if (a->empty()) a->reserve(4);  // as toml::parse: an array's first four values, one allocation
+        a->emplace_back<NodePtr>(value());
+    });
     return a;
 }
 
-// { key = value, ... } on one line, without a trailing comma (TOML 1.0).
+// { key = value, ... } on one line.
 NodePtr PlainReader::inline_table() {
-    ++at_;
     auto table = std::make_unique<toml::table>();
     table->is_inline(true);
-    Last last = Last::Nothing;
-    while (true) {
-        skip_blanks();
-        if (done()) decline();
-        const char c = peek();
-        if (c == ',') {
-            if (last != Last::Item) decline();
-            last = Last::Comma;
-            ++at_;
-        } else if (c == '}') {
-            if (last == Last::Comma) decline();
-            ++at_;
-            break;
-        } else if (is_bare_key_char(c) && last != Last::Item) {
-            key_value(*table);
-            last = Last::Item;
-        } else {
-            decline();
-        }
-    }
+    comma_separated(List::InlineTable, [&](char c) {
+        if (!is_bare_key_char(c)) decline();
+        key_value(*table);
+    });
     return table;
 }
 
