@@ -172,7 +172,7 @@ private:
     bool check_grid_contract_ = false;
     std::function<void(gpu::ShaderFeatures&)> override_features_;
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
-    ElementTreeCache element_trees_;  // and every frame a mesh's or sphere set's
+    ElementTreeCache element_trees_;  // each mesh's and sphere set's tree, built once for every frame
     bool one_still_ = false;  // expect_one_still(): no tree cached, and a one-step render's upload frees the host's arrays
     std::size_t bands_rerendered_ = 0;
     // Within one render_in_steps(): the scene as packed by its first upload, for the others.

@@ -386,7 +386,7 @@ TEST(BvhReuse, ARendererForOneStillKeepsNoTreeAndRendersTheSame) {
     EXPECT_EQ(cpu.bvh_builds(), 1u);
 }
 
-// kStill's spheres turned into a mesh (an icosphere) and a sphere set placed beside it.
+// kStill with its sphere made a mesh (an icosphere), and a sphere set of two beside it.
 Scene still_with_a_mesh_and_a_sphere_set() {
     Scene scene = test::scene_from_text(kStill);
     scene.objects.push_back(scene.objects[1]);
