@@ -93,44 +93,52 @@ struct Placement {
     bool clamp = false;
 };
 
-// A rectangle facing the camera, textured with a 4 x 3 labelled image placed by `placement`:
-// every pixel away from texel edges shows the texel the documented mapping gives, exactly.
-void expect_texels_on_rectangle(Backend backend, const Placement& placement) {
+// A plate facing the camera, (-1.5, -1) to (1.5, 1) in z = 0, drawn by `object` (its [[object]]
+// table, of material "m") and textured with a 4 x 3 labelled image (`texture_keys`: the texture
+// table's extra keys): every pixel away from the plate's and the texels' edges shows, exactly, the
+// texel at image coordinates st_of(a, b), (a, b) the point's place along the plate's edges.
+template <class StOf>
+void expect_texels_on_plate(Backend backend, const std::string& object, const std::string& texture_keys, StOf st_of,
+                            int least_checked) {
     std::string file = write_texture("labels", 4, 3, label);
     Scene s = test::scene_from_text(view_of(64, 48, "[0.2, 0.1, -4]", 45) + fmt::format(R"(
         {}
         [material.m]
         ambient = 1
         texture = {{ file = "{}", filter = "nearest"{} }}
-        [[object]]
-        type = "rectangle"
-        corner = [-1.5, -1, 0]
-        edge_u = [3, 0, 0]
-        edge_v = [0, 2, 0]
-        material = "m"
-    )", kUnlit, file, placement.keys));
+    )", kUnlit, file, texture_keys) + object);
     FloatImage img = test::render_on(backend, s);
     int checked = 0;
     for (int y = 0; y < img.height; ++y) {
         for (int x = 0; x < img.width; ++x) {
             glm::dvec3 p = on_plate(s, x, y);
-            dvec2 uv((p.x + 1.5) / 3.0, (p.y + 1.0) / 2.0);               // (a, b) along the edges
-            if (uv.x < 0.01 || uv.x > 0.99 || uv.y < 0.01 || uv.y > 0.99) continue;
-            // Image (s, t) = scale^-1 rotate(-angle) (uv - offset), then repeat or clamp.
-            double a = placement.rotate_deg * std::numbers::pi / 180.0;
-            dvec2 d = uv - placement.offset;
-            dvec2 st = dvec2(std::cos(a) * d.x + std::sin(a) * d.y, -std::sin(a) * d.x + std::cos(a) * d.y) / placement.scale;
-            if (!placement.clamp) st -= glm::floor(st);  // repeat
+            dvec2 ab((p.x + 1.5) / 3.0, (p.y + 1.0) / 2.0);
+            if (ab.x < 0.01 || ab.x > 0.99 || ab.y < 0.01 || ab.y > 0.99) continue;
+            dvec2 st = st_of(ab);
             auto texel = texel_at(st.x, st.y, 4, 3);
             if (!texel) continue;
             std::array<int, 3> bytes = label(texel->x, texel->y);
             for (int c = 0; c < 3; ++c)
                 ASSERT_NEAR(img.at(x, y)[c], srgb_to_linear(bytes[c]), 2e-5)
-                    << placement.keys << ": pixel " << x << "," << y << " should show texel " << texel->x << "," << texel->y;
+                    << texture_keys << ": pixel " << x << "," << y << " should show texel " << texel->x << "," << texel->y;
             ++checked;
         }
     }
-    EXPECT_GT(checked, 800) << placement.keys;  // of the ~1250 pixels on the rectangle
+    EXPECT_GT(checked, least_checked) << texture_keys;  // of the ~1250 pixels on the plate
+}
+
+// The plate as a rectangle, its image placed by `placement`: the documented mapping.
+void expect_texels_on_rectangle(Backend backend, const Placement& placement) {
+    const char* rectangle = "[[object]]\ntype = \"rectangle\"\ncorner = [-1.5, -1, 0]\nedge_u = [3, 0, 0]\nedge_v = [0, 2, 0]\n"
+                            "material = \"m\"\n";
+    expect_texels_on_plate(backend, rectangle, placement.keys, [&](dvec2 uv) {
+        // Image (s, t) = scale^-1 rotate(-angle) (uv - offset), then repeat or clamp.
+        double a = placement.rotate_deg * std::numbers::pi / 180.0;
+        dvec2 d = uv - placement.offset;
+        dvec2 st = dvec2(std::cos(a) * d.x + std::sin(a) * d.y, -std::sin(a) * d.x + std::cos(a) * d.y) / placement.scale;
+        if (!placement.clamp) st -= glm::floor(st);  // repeat
+        return st;
+    }, 800);
 }
 
 TEST_P(Textures, TexelsLandWhereTheRayMeetsThemOnARectangle) {
@@ -149,38 +157,12 @@ TEST_P(Textures, ScaleOffsetRotateAndWrapPlaceTheImageAsDocumented) {
 // shows the texel those coordinates name, interpolated across either triangle (the same affine
 // map on both, so the diagonal between them is no exception).
 TEST_P(Textures, TexelsLandWhereAMeshsOwnTextureCoordinatesPutThem) {
-    std::string file = write_texture("mesh-labels", 4, 3, label);
     const std::string obj = test::fresh_dir("plate") + "/plate.obj";
     test::write_file(obj, "v -1.5 -1 0\nv 1.5 -1 0\nv 1.5 1 0\nv -1.5 1 0\n"
                           "vt 1 0\nvt 1 1\nvt 0 1\nvt 0 0\n"
                           "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
-    Scene s = test::scene_from_text(view_of(64, 48, "[0.2, 0.1, -4]", 45) + fmt::format(R"(
-        {}
-        [material.m]
-        ambient = 1
-        texture = {{ file = "{}", filter = "nearest" }}
-        [[object]]
-        type = "mesh"
-        file = "{}"
-        material = "m"
-    )", kUnlit, file, obj));
-    FloatImage img = test::render_on(GetParam(), s);
-    int checked = 0;
-    for (int y = 0; y < img.height; ++y) {
-        for (int x = 0; x < img.width; ++x) {
-            glm::dvec3 p = on_plate(s, x, y);
-            dvec2 ab((p.x + 1.5) / 3.0, (p.y + 1.0) / 2.0);
-            if (ab.x < 0.01 || ab.x > 0.99 || ab.y < 0.01 || ab.y > 0.99) continue;
-            auto texel = texel_at(1.0 - ab.y, ab.x, 4, 3);
-            if (!texel) continue;
-            std::array<int, 3> bytes = label(texel->x, texel->y);
-            for (int c = 0; c < 3; ++c)
-                ASSERT_NEAR(img.at(x, y)[c], srgb_to_linear(bytes[c]), 2e-5)
-                    << "pixel " << x << "," << y << " should show texel " << texel->x << "," << texel->y;
-            ++checked;
-        }
-    }
-    EXPECT_GT(checked, 700);  // of the ~1250 pixels on the plate
+    expect_texels_on_plate(GetParam(), fmt::format("[[object]]\ntype = \"mesh\"\nfile = \"{}\"\nmaterial = \"m\"\n", obj), "",
+                           [](dvec2 ab) { return dvec2(1.0 - ab.y, ab.x); }, 700);
 }
 
 // A sphere turned by rotate = [20, 35, 0]: the texel seen at each pixel is the one at the
