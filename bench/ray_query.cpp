@@ -210,7 +210,7 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
     try {
         const int code = run(argc, argv);  // every Vulkan object released: teardown is checked too
-        if (const std::uint32_t n = bench::validation_messages()) {
+        if (const std::uint32_t n = gpu::validation_message_count()) {
             std::fprintf(stderr, "lancer_ray_query: error: %u Vulkan validation message(s) on the driver's path\n", n);
             return 1;
         }

@@ -1,13 +1,16 @@
 #pragma once
-// A Vulkan 1.2 device with the driver's acceleration structures and ray queries switched on
-// (bench/ray_query.sh). lancer's gpu::Context enables no device extensions, so the benchmark makes
-// its own: the same choice of device (the most GPU-like), the same validation layer and message
-// count, plus VK_KHR_acceleration_structure, VK_KHR_ray_query and buffer device addresses.
+// A Vulkan device with the driver's acceleration structures and ray queries switched on
+// (bench/ray_query.sh): lancer's gpu::Context (the same choice of device, validation layer and
+// message count) asked for VK_KHR_acceleration_structure, VK_KHR_ray_query and buffer device
+// addresses, with a command buffer and a fence to run the benchmark's commands.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include <vulkan/vulkan.h>
+
+#include "gpu/vulkan/context.hpp"
 
 namespace lancer::bench {
 
@@ -20,10 +23,6 @@ struct RayQueryFunctions {
     PFN_vkGetAccelerationStructureDeviceAddressKHR structure_address = nullptr;
 };
 
-// Validation messages the layer reported on any RayQueryDevice so far, teardown included (each
-// also printed to stderr).
-std::uint32_t validation_messages();
-
 class RayQueryDevice {
 public:
     // Throws lancer::UserError where no device offers ray queries.
@@ -32,31 +31,22 @@ public:
     RayQueryDevice(const RayQueryDevice&) = delete;
     RayQueryDevice& operator=(const RayQueryDevice&) = delete;
 
-    VkDevice device() const { return device_; }
+    VkDevice device() const { return context_->device(); }
     const RayQueryFunctions& functions() const { return functions_; }
     const std::string& description() const { return description_; }
     // Where a build's scratch memory may start: a multiple of this (a power of two).
     VkDeviceSize scratch_alignment() const { return scratch_alignment_; }
-    std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required) const;
+    std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required) const {
+        return context_->memory_type(type_bits, required, 0);
+    }
     // Records commands with `record`, submits them and waits: the host's wall seconds from
     // submission to the fence.
     double run(const std::function<void(VkCommandBuffer)>& record) const;
 
 private:
-    static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                      VkDebugUtilsMessageTypeFlagsEXT types,
-                                                      const VkDebugUtilsMessengerCallbackDataEXT* data, void* self);
-    void release() noexcept;
-
-    VkInstance instance_ = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
-    VkPhysicalDevice physical_ = VK_NULL_HANDLE;
-    VkDevice device_ = VK_NULL_HANDLE;
-    VkQueue queue_ = VK_NULL_HANDLE;
-    VkCommandPool pool_ = VK_NULL_HANDLE;
+    std::unique_ptr<gpu::Context> context_;
     VkCommandBuffer commands_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
-    VkPhysicalDeviceMemoryProperties memory_{};
     RayQueryFunctions functions_;
     std::string description_;
     VkDeviceSize scratch_alignment_ = 1;

@@ -114,8 +114,23 @@ std::string lowercase(std::string s) {
     return s;
 }
 
-// Picks by index or name fragment when asked, otherwise the most GPU-like device with compute.
-std::uint32_t choose_device(const std::vector<VkPhysicalDevice>& devices, const std::string& wanted) {
+// The first of `extensions` that `device` does not offer, or none.
+std::optional<std::string> missing_extension(VkPhysicalDevice device, const std::vector<const char*>& extensions) {
+    std::uint32_t count = 0;
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
+    std::vector<VkExtensionProperties> offered(count);
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, offered.data()));
+    for (const char* wanted : extensions)
+        if (std::none_of(offered.begin(), offered.end(),
+                         [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, wanted) == 0; }))
+            return wanted;
+    return std::nullopt;
+}
+
+// Picks by index or name fragment when asked, otherwise the most GPU-like device with compute;
+// either way one that offers `extensions`.
+std::uint32_t choose_device(const std::vector<VkPhysicalDevice>& devices, const std::string& wanted,
+                            const std::vector<const char*>& extensions) {
     if (devices.empty()) throw UserError(kNoDevice);
     if (!wanted.empty()) {
         bool numeric = std::all_of(wanted.begin(), wanted.end(), [](unsigned char c) { return std::isdigit(c); });
@@ -127,6 +142,8 @@ std::uint32_t choose_device(const std::vector<VkPhysicalDevice>& devices, const 
                                  : lowercase(info.name).find(lowercase(wanted)) != std::string::npos;
             if (match) {
                 if (!compute_queue_family(devices[i])) throw UserError("device '" + info.name + "' has no compute queue");
+                if (auto missing = missing_extension(devices[i], extensions))
+                    throw UserError("device '" + info.name + "' does not offer " + *missing);
                 return i;
             }
         }
@@ -135,7 +152,7 @@ std::uint32_t choose_device(const std::vector<VkPhysicalDevice>& devices, const 
     std::optional<std::uint32_t> best;
     int best_score = -1;
     for (std::uint32_t i = 0; i < devices.size(); ++i) {
-        if (!compute_queue_family(devices[i])) continue;
+        if (!compute_queue_family(devices[i]) || missing_extension(devices[i], extensions)) continue;
         VkPhysicalDeviceProperties props;
         vkGetPhysicalDeviceProperties(devices[i], &props);
         if (preference(props.deviceType) > best_score) {
@@ -143,7 +160,11 @@ std::uint32_t choose_device(const std::vector<VkPhysicalDevice>& devices, const 
             best = i;
         }
     }
-    if (!best) throw UserError("no Vulkan device with a compute queue found");
+    if (!best) {
+        std::string needed = "a compute queue";
+        for (const char* e : extensions) needed += std::string(", ") + e;
+        throw UserError("no Vulkan device with " + needed + " found");
+    }
     return *best;
 }
 
@@ -203,7 +224,7 @@ Context::Context(const ContextOptions& options) {
         }
 
         auto devices = physical_devices(instance_);
-        std::uint32_t index = choose_device(devices, options.device);
+        std::uint32_t index = choose_device(devices, options.device, options.device_extensions);
         physical_ = devices[index];
         info_ = describe(physical_, index);
         memory_in_a_file_ = keeps_device_memory_in_a_file(info_);
@@ -221,13 +242,16 @@ Context::Context(const ContextOptions& options) {
         queue_info.pQueuePriorities = &priority;
         VkPhysicalDeviceFeatures supported{};
         vkGetPhysicalDeviceFeatures(physical_, &supported);
-        VkPhysicalDeviceFeatures enabled{};
-        enabled.shaderFloat64 = supported.shaderFloat64;  // where there, implicit surfaces use it (surface_codegen)
+        VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        enabled.pNext = options.device_features;
+        enabled.features.shaderFloat64 = supported.shaderFloat64;  // where there, implicit surfaces use it (surface_codegen)
         float64_ = supported.shaderFloat64 == VK_TRUE;
         VkDeviceCreateInfo device_info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+        device_info.pNext = &enabled;
         device_info.queueCreateInfoCount = 1;
         device_info.pQueueCreateInfos = &queue_info;
-        device_info.pEnabledFeatures = &enabled;
+        device_info.enabledExtensionCount = static_cast<std::uint32_t>(options.device_extensions.size());
+        device_info.ppEnabledExtensionNames = options.device_extensions.data();
         VK_CHECK(vkCreateDevice(physical_, &device_info, nullptr, &device_));
         vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
         if (debug_utils)

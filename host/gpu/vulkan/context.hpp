@@ -22,6 +22,13 @@ struct DeviceInfo {
 struct ContextOptions {
     std::string device;       // "" = best available; otherwise an index or part of the name
     bool validation = false;  // enable VK_LAYER_KHRONOS_validation and count its messages
+    // Device extensions to enable: only a device that offers all of them is chosen (lancer's
+    // tracer needs none; bench/ray_query's device needs the driver's ray queries).
+    std::vector<const char*> device_extensions;
+    // Features to enable beside lancer's own: a chain of feature structs (VkPhysicalDeviceVulkan12Features,
+    // ...) that becomes the pNext of the device's VkPhysicalDeviceFeatures2; read only while the
+    // context is made.
+    void* device_features = nullptr;
 };
 
 // Validation messages (warnings and errors) seen by any context of this process so far, teardown
