@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <utility>
-#include <vector>
 
 #include "core/error.hpp"
 #include "gpu/vulkan/vk_check.hpp"
@@ -87,64 +85,8 @@ double RayQueryDevice::run(const std::function<void(VkCommandBuffer)>& record) c
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-DeviceBuffer::DeviceBuffer(const RayQueryDevice& device, VkDeviceSize size, VkBufferUsageFlags usage)
-    : device_(device.device()), size_(size) {
-    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    info.size = std::max<VkDeviceSize>(size, 4);  // an empty scene still binds its buffers
-    info.usage = usage;
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VK_CHECK(vkCreateBuffer(device_, &info, nullptr, &buffer_));
-    try {
-        VkMemoryRequirements req;
-        vkGetBufferMemoryRequirements(device_, buffer_, &req);
-        const bool addressed = usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-        VkMemoryAllocateFlagsInfo flags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
-        flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
-        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-        alloc.pNext = addressed ? &flags : nullptr;
-        alloc.allocationSize = req.size;
-        alloc.memoryTypeIndex = device.memory_type(
-            req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-        VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
-        VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
-        VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
-        if (addressed) {
-            VkBufferDeviceAddressInfo where{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
-            where.buffer = buffer_;
-            address_ = vkGetBufferDeviceAddress(device_, &where);
-        }
-    } catch (...) {
-        release();
-        throw;
-    }
-}
-
-DeviceBuffer::~DeviceBuffer() { release(); }
-
-DeviceBuffer::DeviceBuffer(DeviceBuffer&& other) noexcept { *this = std::move(other); }
-
-DeviceBuffer& DeviceBuffer::operator=(DeviceBuffer&& other) noexcept {
-    if (this != &other) {
-        release();
-        device_ = std::exchange(other.device_, VK_NULL_HANDLE);
-        buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
-        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
-        size_ = std::exchange(other.size_, 0);
-        address_ = std::exchange(other.address_, 0);
-        mapped_ = std::exchange(other.mapped_, nullptr);
-    }
-    return *this;
-}
-
-void DeviceBuffer::release() noexcept {
-    if (!device_) return;
-    if (mapped_) vkUnmapMemory(device_, memory_);
-    if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
-    if (memory_) vkFreeMemory(device_, memory_, nullptr);
-    buffer_ = VK_NULL_HANDLE;
-    memory_ = VK_NULL_HANDLE;
-    mapped_ = nullptr;
-    device_ = VK_NULL_HANDLE;
+gpu::Buffer RayQueryDevice::buffer(VkDeviceSize size, VkBufferUsageFlags usage, const std::string& name) const {
+    return gpu::Buffer(*context_, std::max<VkDeviceSize>(size, 4), usage, "ray query " + name);
 }
 
 }  // namespace lancer::bench

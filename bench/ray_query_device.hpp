@@ -10,6 +10,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "gpu/vulkan/buffer.hpp"
 #include "gpu/vulkan/context.hpp"
 
 namespace lancer::bench {
@@ -36,9 +37,9 @@ public:
     const std::string& description() const { return description_; }
     // Where a build's scratch memory may start: a multiple of this (a power of two).
     VkDeviceSize scratch_alignment() const { return scratch_alignment_; }
-    std::uint32_t memory_type(std::uint32_t type_bits, VkMemoryPropertyFlags required) const {
-        return context_->memory_type(type_bits, required, 0);
-    }
+    // A buffer of `size` bytes (at least 4: an empty scene still binds its buffers), labelled
+    // "ray query NAME".
+    gpu::Buffer buffer(VkDeviceSize size, VkBufferUsageFlags usage, const std::string& name) const;
     // Records commands with `record`, submits them and waits: the host's wall seconds from
     // submission to the fence.
     double run(const std::function<void(VkCommandBuffer)>& record) const;
@@ -53,31 +54,7 @@ private:
 };
 
 // A buffer in host-visible, coherent memory (lavapipe's only kind), mapped, with its device
-// address where `usage` asks for one.
-class DeviceBuffer {
-public:
-    DeviceBuffer() = default;
-    DeviceBuffer(const RayQueryDevice& device, VkDeviceSize size, VkBufferUsageFlags usage);
-    ~DeviceBuffer();
-    DeviceBuffer(DeviceBuffer&& other) noexcept;
-    DeviceBuffer& operator=(DeviceBuffer&& other) noexcept;
-    DeviceBuffer(const DeviceBuffer&) = delete;
-    DeviceBuffer& operator=(const DeviceBuffer&) = delete;
-
-    VkBuffer handle() const { return buffer_; }
-    VkDeviceSize size() const { return size_; }
-    VkDeviceAddress address() const { return address_; }
-    void* data() const { return mapped_; }
-
-private:
-    void release() noexcept;
-
-    VkDevice device_ = VK_NULL_HANDLE;
-    VkBuffer buffer_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
-    VkDeviceSize size_ = 0;
-    VkDeviceAddress address_ = 0;
-    void* mapped_ = nullptr;
-};
+// address where its usage asks for one: lancer's own.
+using DeviceBuffer = gpu::Buffer;
 
 }  // namespace lancer::bench

@@ -28,7 +28,7 @@ void build_barrier(VkCommandBuffer commands) {
 // One structure of `size` bytes in a buffer of its own.
 VkAccelerationStructureKHR create_structure(const RayQueryDevice& device, VkAccelerationStructureTypeKHR type,
                                             VkDeviceSize size, DeviceBuffer& storage) {
-    storage = DeviceBuffer(device, size, kStructureUsage);
+    storage = device.buffer(size, kStructureUsage, "structure");
     VkAccelerationStructureCreateInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
     info.buffer = storage.handle();
     info.size = size;
@@ -83,7 +83,7 @@ DriverStructures::DriverStructures(const RayQueryDevice& device, const MeshSet& 
         report_.bottom_bytes += sizes.accelerationStructureSize;
     }
     {
-        DeviceBuffer scratch(device, bottom_scratch + align, kScratchUsage);
+        DeviceBuffer scratch = device.buffer(bottom_scratch + align, kScratchUsage, "scratch");
         const VkDeviceAddress base = round_up(scratch.address(), align);
         std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> range_pointers;
         for (std::size_t i = 0; i < n; ++i) {
@@ -110,7 +110,7 @@ DriverStructures::DriverStructures(const RayQueryDevice& device, const MeshSet& 
         instance.accelerationStructureReference = vk.structure_address(device.device(), &where);
     }
     report_.instance_bytes = instances.size() * sizeof(VkAccelerationStructureInstanceKHR);
-    instances_ = DeviceBuffer(device, report_.instance_bytes, kInputUsage);
+    instances_ = device.buffer(report_.instance_bytes, kInputUsage, "instances");
     std::memcpy(instances_.data(), instances.data(), report_.instance_bytes);
 
     VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
@@ -132,7 +132,7 @@ DriverStructures::DriverStructures(const RayQueryDevice& device, const MeshSet& 
     build.dstAccelerationStructure = top_;
     report_.top_bytes = sizes.accelerationStructureSize;
     report_.scratch_bytes = bottom_scratch + sizes.buildScratchSize;
-    DeviceBuffer scratch(device, sizes.buildScratchSize + align, kScratchUsage);
+    DeviceBuffer scratch = device.buffer(sizes.buildScratchSize + align, kScratchUsage, "scratch");
     build.scratchData.deviceAddress = round_up(scratch.address(), align);
     const VkAccelerationStructureBuildRangeInfoKHR range{count, 0, 0, 0};
     const VkAccelerationStructureBuildRangeInfoKHR* range_pointer = &range;

@@ -21,7 +21,7 @@ constexpr VkBufferUsageFlags kMeshUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | V
 
 template <class T>
 DeviceBuffer filled(const RayQueryDevice& device, const std::vector<T>& values, VkBufferUsageFlags usage) {
-    DeviceBuffer buffer(device, values.size() * sizeof(T), usage);
+    DeviceBuffer buffer = device.buffer(values.size() * sizeof(T), usage, "input");
     std::memcpy(buffer.data(), values.data(), values.size() * sizeof(T));
     return buffer;
 }
@@ -36,7 +36,7 @@ RayQueryTracer::RayQueryTracer(const RayQueryDevice& device, const MeshSet& set,
     std::vector<glm::uvec2> starts;
     for (const MeshRange& m : set.meshes) starts.emplace_back(m.first_index, m.first_vertex);
     mesh_starts_ = filled(device, starts, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    pixels_ = DeviceBuffer(device, VkDeviceSize(view.size.x) * view.size.y * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    pixels_ = device.buffer(VkDeviceSize(view.size.x) * view.size.y * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "pixels");
     view_buffer_ = filled(device, std::vector<ViewBlock>{view}, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
 
     std::array<VkDescriptorSetLayoutBinding, kBindings.size()> bindings{};

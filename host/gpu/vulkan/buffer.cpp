@@ -33,13 +33,22 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
     try {
         VkMemoryRequirements req;
         vkGetBufferMemoryRequirements(device_, buffer_, &req);
+        const bool addressed = (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) != 0;
+        VkMemoryAllocateFlagsInfo flags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
+        flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
         VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        alloc.pNext = addressed ? &flags : nullptr;
         alloc.allocationSize = req.size;
         alloc.memoryTypeIndex = context.memory_type(req.memoryTypeBits, kRequired, kPreferred);
         context.reserve_device_memory(req.size);
         VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
         VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
         VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+        if (addressed) {
+            VkBufferDeviceAddressInfo where{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
+            where.buffer = buffer_;
+            address_ = vkGetBufferDeviceAddress(device_, &where);
+        }
         // lavapipe's memory is the process's own: a large buffer is filled faster in huge pages.
         if (size >= kHugeArrayBytes) advise_huge_pages(mapped_, size);
         context.set_name(VK_OBJECT_TYPE_BUFFER, buffer_, name);
@@ -70,6 +79,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
         memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
         view_ = std::exchange(other.view_, VK_NULL_HANDLE);
         size_ = std::exchange(other.size_, 0);
+        address_ = std::exchange(other.address_, 0);
         mapped_ = std::exchange(other.mapped_, nullptr);
     }
     return *this;

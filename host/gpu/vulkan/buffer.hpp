@@ -22,7 +22,8 @@ public:
     Buffer() = default;
     // `name` labels the buffer (and its view) in validation messages and debuggers. With a
     // `view_format`, the buffer also gets a VkBufferView of that format over all of it (a texel
-    // buffer).
+    // buffer). With VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT in `usage`, it has a device address
+    // (the device's bufferDeviceAddress feature enabled: bench/ray_query's).
     Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage, const std::string& name,
            VkFormat view_format = VK_FORMAT_UNDEFINED);
     ~Buffer();
@@ -34,6 +35,7 @@ public:
     VkBuffer handle() const { return buffer_; }
     VkBufferView view() const { return view_; }
     VkDeviceSize size() const { return size_; }
+    VkDeviceAddress address() const { return address_; }
     void* data() const { return mapped_; }
     void write(const void* src, std::size_t bytes, std::size_t offset = 0) const {
         std::memcpy(static_cast<char*>(mapped_) + offset, src, bytes);
@@ -47,6 +49,7 @@ private:
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkBufferView view_ = VK_NULL_HANDLE;
     VkDeviceSize size_ = 0;
+    VkDeviceAddress address_ = 0;
     void* mapped_ = nullptr;
 };
 
