@@ -107,8 +107,9 @@ def finish(m):
 def pigment(m):
     if "checker" in m:
         c = m["checker"]
+        own = transform(c.get("transform"))  # none: no second space, so the kept twins stay as written
         return (f"pigment {{ checker {rgb(c['colors'][0])}, {rgb(c['colors'][1])} "
-                f"scale {c.get('size', 1.0):.9g} {transform(c.get('transform'))} }}")
+                f"scale {c.get('size', 1.0):.9g} {own + ' ' if own else ''}}}")
     return f"pigment {{ {rgb(m.get('color', [1, 1, 1]))} }}"
 
 
