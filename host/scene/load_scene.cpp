@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/file_reading.hpp"
+#include "core/page_release.hpp"
 #include "image/adaptive.hpp"
 #include "scene/camera.hpp"
 #include "scene/limits.hpp"
@@ -310,10 +311,15 @@ Scene parse_whole(std::string_view text, const std::string& path, SceneTime time
 // takes less than the reading: for it, the second costs only a batch's tree).
 constexpr std::size_t kParsesAhead = 2;
 
+// Called after each batch is read, with the offset where its text ends: nothing before it is
+// read again (load_scene gives those pages back to the kernel).
+using TextRead = std::function<void(std::size_t end)>;
+
 // Calls read(tree, batch) for each batch in order, its TOML tree parsed on another thread: by the
 // plain reader where the batch is plain TOML (the same tree, faster), by toml::parse otherwise.
 template <class Read>
-void for_each_batch(std::string_view text, const SceneTextParts& parts, const std::string& path, Read read) {
+void for_each_batch(std::string_view text, const SceneTextParts& parts, const std::string& path, Read read,
+                    const TextRead& text_read) {
     const auto parse = [&](std::size_t i) {
         const ObjectBatch& b = parts.batches[i];
         const std::string_view batch = text.substr(b.begin, b.end - b.begin);
@@ -331,12 +337,13 @@ void for_each_batch(std::string_view text, const SceneTextParts& parts, const st
         ahead.pop_front();
         if (launched < parts.batches.size()) launch();
         read(tree, parts.batches[i]);
+        // The batches parsed ahead lie after this one: its text is done with.
+        if (text_read) text_read(parts.batches[i].end);
     }
 }
 
-}  // namespace
-
-Scene parse_scene_batches(std::string_view text, const SceneTextParts& parts, const std::string& path, SceneTime time) {
+Scene read_batches(std::string_view text, const SceneTextParts& parts, const std::string& path, SceneTime time,
+                   const TextRead& text_read) {
     if (parts.objects > static_cast<std::size_t>(limits::kMaxObjects))
         throw UserError("too many objects (the limit is " + std::to_string(limits::kMaxObjects) + ")");
     SceneValues values(time);
@@ -350,7 +357,7 @@ Scene parse_scene_batches(std::string_view text, const SceneTextParts& parts, co
             const toml::array& objects = *tree.get_as<toml::array>("object");
             entries.read(objects, top.file());  // one name shared by every object's location
             names.add(objects, path);
-        });
+        }, text_read);
         return &names;
     });
     // The batches' trees were freed in the parsing threads' malloc arenas, whose free pages the
@@ -359,22 +366,20 @@ Scene parse_scene_batches(std::string_view text, const SceneTextParts& parts, co
     return scene;
 }
 
-Scene parse_scene(std::string_view text, const std::string& path, SceneTime time, TomlReading reading) {
-    SourceTextScope source(path, text);  // for messages pointing inside strings (expressions)
-    if (reading == TomlReading::Batches) {
-        if (const std::optional<SceneTextParts> parts = split_object_tables(text, kObjectsPerBatch)) {
-            try {
-                return parse_scene_batches(text, *parts, path, time);
-            } catch (const UserError&) {
-                // The whole parse reports it: its first error, where it is.
-            } catch (const toml::parse_error&) {
-            }
-        }
+// The scene read in batches, or nullopt where the text cannot be split or an error was found
+// (the whole parse then reports its first error, where it is).
+std::optional<Scene> try_batches(std::string_view text, const std::string& path, SceneTime time, const TextRead& text_read) {
+    const std::optional<SceneTextParts> parts = split_object_tables(text, kObjectsPerBatch);
+    if (!parts) return std::nullopt;
+    try {
+        return read_batches(text, *parts, path, time, text_read);
+    } catch (const UserError&) {
+    } catch (const toml::parse_error&) {
     }
-    return parse_whole(text, path, time);
+    return std::nullopt;
 }
 
-Scene load_scene(const std::string& path, SceneTime time) {
+std::string read_scene_text(const std::string& path) {
     // In pieces, stopping past the limit: /dev/zero or an endless pipe is an error, not a hang.
     FileText file;
     try {
@@ -385,7 +390,38 @@ Scene load_scene(const std::string& path, SceneTime time) {
     if (!file.complete)
         throw UserError(fmt::format("cannot read scene file '{}': it is larger than the limit of {} MiB", path,
                                     limits::kMaxSceneFileBytes >> 20));
-    return parse_scene(file.text, path, time);
+    return std::move(file.text);
+}
+
+}  // namespace
+
+Scene parse_scene_batches(std::string_view text, const SceneTextParts& parts, const std::string& path, SceneTime time) {
+    return read_batches(text, parts, path, time, {});
+}
+
+Scene parse_scene(std::string_view text, const std::string& path, SceneTime time, TomlReading reading) {
+    SourceTextScope source(path, text);  // for messages pointing inside strings (expressions)
+    if (reading == TomlReading::Batches)
+        if (std::optional<Scene> scene = try_batches(text, path, time, {})) return std::move(*scene);
+    return parse_whole(text, path, time);
+}
+
+Scene load_scene(const std::string& path, SceneTime time) {
+    std::string text = read_scene_text(path);
+    // A million objects' text is as large as their objects: each batch's pages go back to the
+    // kernel once it is read, so that the two never coexist whole (docs/performance.md).
+    const char* const start = text.data();
+    const void* released = start;
+    std::optional<Scene> scene;
+    {
+        SourceTextScope source(path, text);
+        scene = try_batches(text, path, time, [&](std::size_t end) { released = release_pages(released, start + end); });
+    }
+    if (scene) return std::move(*scene);
+    // The whole parse finds the error again; where pages were given back, in the file read again.
+    if (released != start) text = read_scene_text(path);
+    SourceTextScope source(path, text);
+    return parse_whole(text, path, time);
 }
 
 }  // namespace lancer

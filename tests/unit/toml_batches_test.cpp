@@ -210,5 +210,39 @@ TEST(TomlBatches, ErrorsInLateBatchesNameTheWholeParsesPlace) {
     }
 }
 
+// A file of many batches gives each batch's pages back once read (load_scene): the scene is the
+// same, and an error after pages were given back is found again in the file read anew, with the
+// whole parse's message and place.
+TEST(TomlBatches, AFileReadInBatchesGivesTheSameSceneAndErrorsAfterItsTextIsGivenBack) {
+    const int count = 3 * 4096 + 7;  // four batches of load_scene's, each hundreds of KiB
+    const auto text_with = [&](int bad, const std::string& radius_line) {
+        std::string text = std::string(kStage);
+        for (int i = 0; i < count; ++i)
+            text += "[[object]]\ntype = \"sphere\"\ncenter = [" + std::to_string(i) + ", 0, 0]\n" +
+                    (i == bad ? radius_line : "radius = 0.25\n") + "\n";
+        return text;
+    };
+    const std::string path = test::fresh_dir("batches") + "/many.toml";
+    const std::string good = text_with(-1, "");
+    test::write_file(path, good);
+    expect_same_scene(parse_scene(good, path, {}, TomlReading::Whole), load_scene(path), path);
+    for (const auto& [bad, line] : std::vector<std::pair<int, std::string>>{
+             {count - 1, "radius = -1\n"},   // the reader's error, in the last batch
+             {count - 2, "radius = \n"},     // TOML's
+             {5, "radius = -2\n"},           // in the first batch, before anything was given back
+         }) {
+        const std::string text = text_with(bad, line);
+        test::write_file(path, text);
+        const std::string expected = whole_error(text, path);
+        ASSERT_NE(expected, "") << bad;
+        try {
+            load_scene(path);
+            ADD_FAILURE() << "loaded with an error at object " << bad;
+        } catch (const SceneError& e) {
+            EXPECT_EQ(format_error(e), expected);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace lancer
