@@ -272,7 +272,7 @@ void read_animation(TableReader& top, const toml::table& root, Scene& scene, std
         std::size_t index = resolve_reference(r, entry, "object", "object", entry_starts.size() - 1, object_names, false);
         const std::size_t first = entry_starts[index], count = entry_starts[index + 1] - first;  // a group: its members
         auto tracks = read_keys(r, {"translate"}, "objects", a.cyclic);
-        claims.claim(r, "object", "object '" + scene.objects[first].name + "'", "translate");
+        claims.claim(r, "object", "object '" + scene.objects[first].name.str() + "'", "translate");
         r.finish();
         a.object_keys.push_back({first, count, std::move(tracks.at("translate"))});
     });

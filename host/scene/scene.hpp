@@ -18,6 +18,7 @@
 #include "core/error.hpp"
 #include "core/heap_optional.hpp"
 #include "core/heap_value.hpp"
+#include "core/rare_string.hpp"
 #include "image/tone.hpp"
 #include "optics/metals.hpp"
 #include "mesh/mesh_geometry.hpp"
@@ -498,7 +499,7 @@ struct Object {
     HeapOptional<Placement> placement;  // none: the identity (on the heap: most objects have none)
     std::uint32_t material = 0;  // index into Scene::materials
     SourceLocation where;        // the [[object]] table, for messages
-    std::string name;            // optional, for [animation] to refer to it
+    RareString name;             // optional, for [animation] to refer to it (most objects have none)
 };
 
 // The material of a hit on `o` whose SurfaceHit::part is `part`: a mesh triangle's or a sphere

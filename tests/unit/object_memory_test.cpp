@@ -17,7 +17,25 @@ namespace {
 TEST(ObjectMemory, AnObjectStaysNearASpheresSize) {
     EXPECT_LE(sizeof(Shape), 128u);
     EXPECT_LE(sizeof(SourceLocation), 24u);
-    EXPECT_LE(sizeof(Object), 224u);
+    EXPECT_LE(sizeof(Object), 176u);
+    EXPECT_EQ(sizeof(RareString), sizeof(void*)) << "an object's name, which most lack";
+}
+
+TEST(ObjectMemory, ANameReadsAsAStringAndCopiesDeep) {
+    RareString none;
+    EXPECT_TRUE(none.empty());
+    EXPECT_EQ(none.str(), "");
+    RareString name("ball");
+    EXPECT_FALSE(name.empty());
+    EXPECT_EQ(name, "ball");
+    EXPECT_TRUE(RareString(std::string()).empty()) << "an empty string takes no room either";
+    RareString copy = name;
+    name = RareString("cue");
+    EXPECT_EQ(copy, "ball");
+    const std::string& text = copy;
+    EXPECT_EQ(text, "ball");
+    copy = none;
+    EXPECT_TRUE(copy.empty());
 }
 
 TEST(ObjectMemory, CopiesOfASurfaceOnTheHeapAreDeep) {

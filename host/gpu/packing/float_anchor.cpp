@@ -63,7 +63,7 @@ std::vector<std::string> float_resolution_notes(const Scene& scene, const glm::d
         const glm::dvec3 reach = glm::max(glm::abs(box->lo - anchor), glm::abs(box->hi - anchor));
         const double distance = std::max({reach.x, reach.y, reach.z});
         if (extent >= kMinExtentOverDistance * distance) continue;
-        const std::string name = o.name.empty() ? "" : " '" + o.name + "'";
+        const std::string name = o.name.empty() ? "" : " '" + o.name.str() + "'";
         notes.push_back(fmt::format(
             "the object{} at {}:{} is {:.3g} across, {:.3g} from the camera (in its largest coordinate): the "
             "GPU's float arithmetic resolves only {:.3g} there, so its picture may be coarse; --backend cpu "
