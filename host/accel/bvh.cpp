@@ -146,7 +146,7 @@ struct Builder {
         }
         // The right subtree on a thread of its own, into its own nodes, then appended to ours.
         Builder right{refs, options, thread_depth, {}};
-        reserve_huge(right.nodes, 2 * (end - s.mid) / std::max(1u, options.min_leaf_size));
+        reserve_huge(right.nodes, 2 * std::size_t(end - s.mid));
         right.nodes.emplace_back();
         std::thread worker([&] { right.build(0, s.mid, end, right_box, depth + 1); });
         build(left, begin, s.mid, left_box, depth + 1);
@@ -170,7 +170,10 @@ Bvh build_over(std::vector<PrimitiveRef>& refs, const BvhOptions& options) {
     int thread_depth = 0;
     for (unsigned threads = std::thread::hardware_concurrency(); threads > 1; threads /= 2) ++thread_depth;
     Builder b{refs, options, thread_depth, {}};
-    reserve_huge(b.nodes, 2 * std::size_t(n) / std::max(1u, options.min_leaf_size));
+    // Room for the most nodes any tree of n leaves can have, whatever the leaf sizes (a split may
+    // take one primitive off): the vector never grows, which would hold two copies at its peak.
+    // Only the pages used are ever touched.
+    reserve_huge(b.nodes, 2 * std::size_t(n));
     b.nodes.emplace_back();
     b.build(0, 0, n, b.bounds(0, n), 0);
     Bvh bvh;
@@ -206,10 +209,10 @@ Bvh build_bvh_from(std::vector<Aabb>&& boxes, const BvhOptions& options, std::ve
     return bvh;
 }
 
-std::shared_ptr<const Bvh> BvhCache::build(std::span<const Aabb> boxes) {
+std::shared_ptr<const Bvh> BvhCache::build(std::span<const Aabb> boxes, const BvhOptions& options) {
     if (bvh_ && std::equal(boxes.begin(), boxes.end(), boxes_.begin(), boxes_.end())) return bvh_;
     bvh_.reset();  // the old tree goes before the new one is built, unless a renderer still holds it
-    bvh_ = std::make_shared<const Bvh>(build_bvh(boxes));
+    bvh_ = std::make_shared<const Bvh>(build_bvh(boxes, options));
     boxes_.assign(boxes.begin(), boxes.end());
     ++builds_;
     return bvh_;

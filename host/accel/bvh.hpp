@@ -33,6 +33,16 @@ struct BvhOptions {
     int bins = 16;
 };
 
+// The options for a tree over `count` primitives: where there are many and each test costs about
+// a box's (the shapes registry's SHAPE_CHEAP), leaves of up to four, a third of the nodes of a
+// tree of single primitives, built and walked faster on both backends; a few keep single leaves,
+// which are faster there (docs/performance.md).
+inline constexpr std::size_t kManyCheapPrimitives = 10000;
+inline BvhOptions tree_options(std::size_t count, bool cheap_tests) {
+    if (cheap_tests && count >= kManyCheapPrimitives) return BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4};
+    return {};
+}
+
 Bvh build_bvh(std::span<const Aabb> boxes, const BvhOptions& options = {});
 
 // The same tree over boxes it takes, freed as it copies them (no second copy held); with
@@ -44,8 +54,9 @@ Bvh build_bvh_from(std::vector<Aabb>&& boxes, const BvhOptions& options = {}, st
 // so any change at all rebuilds.
 class BvhCache {
 public:
-    // The tree is shared: a renderer keeps it without a copy, and after the cache moves on.
-    std::shared_ptr<const Bvh> build(std::span<const Aabb> boxes);
+    // The tree is shared: a renderer keeps it without a copy, and after the cache moves on. One
+    // cache serves one renderer, which always asks with the same options for the same boxes.
+    std::shared_ptr<const Bvh> build(std::span<const Aabb> boxes, const BvhOptions& options = {});
     std::size_t builds() const { return builds_; }  // trees built so far (for tests)
 
 private:

@@ -57,17 +57,20 @@ Tracer::Tracer(const Scene& scene, Acceleration acceleration, BvhCache* cache)
     std::vector<Aabb> boxes;
     boxes.reserve(scene.objects.size());  // sized once: doubling would hold two arrays at once
     bounded_.reserve(scene.objects.size());
+    bool all_cheap = true;
     for (const Object& object : scene.objects) {
         std::optional<Aabb> box;
         if (acceleration != Acceleration::BruteForce) box = object_bounds(object);
         if (box) {
             bounded_.push_back(&object);
             boxes.push_back(*box);
+            all_cheap &= shape_has(shape_type(object.shape), SHAPE_CHEAP);
         } else {
             unbounded_.push_back(&object);
         }
     }
-    bvh_ = cache ? cache->build(boxes) : std::make_shared<const Bvh>(build_bvh_from(std::move(boxes)));
+    const BvhOptions options = tree_options(boxes.size(), all_cheap);
+    bvh_ = cache ? cache->build(boxes, options) : std::make_shared<const Bvh>(build_bvh_from(std::move(boxes), options));
     std::vector<Aabb>().swap(boxes);
     std::vector<const Object*> ordered;
     ordered.reserve(bvh_->order.size());

@@ -103,5 +103,22 @@ TEST(Bvh, EmptyInputGivesEmptyTree) {
     EXPECT_TRUE(bvh.order.empty());
 }
 
+// Leaves of up to four for many cheap primitives, fewer than one node a primitive; and the node
+// array is made once with room for any tree, never regrown (a second copy at its peak), though a
+// split may take one primitive off and leave more nodes than leaves of four would.
+TEST(Bvh, ManyCheapPrimitivesTakeLeavesOfUpToFour) {
+    EXPECT_EQ(tree_options(kManyCheapPrimitives - 1, true).min_leaf_size, 1u);
+    EXPECT_EQ(tree_options(kManyCheapPrimitives, false).min_leaf_size, 1u);
+    const BvhOptions options = tree_options(kManyCheapPrimitives, true);
+    EXPECT_EQ(options.min_leaf_size, 4u);
+    EXPECT_EQ(options.max_leaf_size, 4u);
+    const std::vector<Aabb> boxes = random_boxes(50000, 6, false);
+    check(boxes, options);
+    const Bvh bvh = build_bvh(boxes, options);
+    EXPECT_LT(bvh.nodes.size(), boxes.size());
+    EXPECT_GT(build_bvh(boxes).nodes.size(), boxes.size() * 3 / 2) << "single leaves";
+    EXPECT_EQ(bvh.nodes.capacity(), 2 * boxes.size()) << "the node array grew";
+}
+
 }  // namespace
 }  // namespace lancer

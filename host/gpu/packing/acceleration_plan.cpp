@@ -126,15 +126,17 @@ AccelerationPlan plan_scene(PlanInput input, const PlanOptions& options) {
             unbounded.push_back(e);
         }
     });
+    bool cheap_tree = true;
+    for (const Primitive& p : bounded) cheap_tree &= shape_has(p.type, SHAPE_CHEAP);
     std::shared_ptr<const Bvh> cached;
     Bvh built;
     if (options.cache) {
-        cached = options.cache->build(boxes);
+        cached = options.cache->build(boxes, tree_options(bounded.size(), cheap_tree));
         plan.grid_boxes.reserve(cached->order.size());
         for (std::uint32_t index : cached->order) plan.grid_boxes.push_back(boxes[index]);
         std::vector<Aabb>().swap(boxes);  // freed before the direction grids are built
     } else {
-        built = build_bvh_from(std::move(boxes), {}, &plan.grid_boxes);
+        built = build_bvh_from(std::move(boxes), tree_options(bounded.size(), cheap_tree), &plan.grid_boxes);
     }
     const Bvh& bvh = cached ? *cached : built;
     put_in_leaf_order(bounded, bvh.order);
