@@ -51,6 +51,10 @@ double max_abs(const dvec3& p) { return std::max({std::abs(p.x), std::abs(p.y), 
 DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, const EyeView* view, DirectionGrids& out,
                              double slack, bool required) {
     DirectionGrid grid{};  // valid = 0: through the BVH
+    // Every box a light's grid holds is listed at least once: more than its entries' limit can
+    // never make a grid, and costs the projection of every box to find that out (at 10^6 boxes
+    // 0.2 s a light).
+    if (!view && !required && boxes.size() > kMaxEntries) return grid;
     dvec3 axis, u, v;
     if (view) {
         axis = glm::normalize(view->forward);
@@ -141,6 +145,7 @@ DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, c
         f.v1 = std::min(f.v1, wv1);
         return !(f.u0 <= f.u1 && f.v0 <= f.v1);
     });
+    if (prints.size() > kMaxEntries && !required) return grid;  // the same for the eye's, once its view is clipped
     for (const Footprint& f : prints)
         if (std::isfinite(f.near) && (f.u1 - f.u0) < (wu1 - wu0)) extents.push_back(std::max(f.u1 - f.u0, f.v1 - f.v0));
 
