@@ -148,12 +148,16 @@ void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated, bool photons
     if (photons && photon_spirv_.empty()) photon_spirv_ = build(gpu::kPhotonShader);
 }
 
-void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress) {
+gpu::PipelineBuild& GpuRenderer::start_pipeline(const gpu::ShaderFeatures& features) {
     auto& slot = pipelines_[features];
     if (!slot)
         slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv_, features,
                                                     gpu::spirv_cleanup_for(features));
-    pipeline_ = slot->wait([&] { return !progress || progress(0.0); });
+    return *slot;
+}
+
+void GpuRenderer::select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress) {
+    pipeline_ = start_pipeline(features).wait([&] { return !progress || progress(0.0); });
     if (!pipeline_) throw RenderCancelled();
 }
 
@@ -327,12 +331,14 @@ gpu::ShaderFeatures GpuRenderer::prepare_band_output(const Scene& scene, bool ou
     gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, generated);
     features.output_hits = output_hits;
     ensure_program(generated, photon_pass >= 0);
-    select_pipeline(features, progress);
     if (photon_pass >= 0) {
-        // The pass's photons and their grid first; the tracer gathers from them.
+        // The pass's photons and their grid first; the tracer gathers from them. Its pipeline
+        // builds on another core meanwhile (the first pass: both pipelines at once).
+        start_pipeline(features);
         photons_->use_programs(photon_spirv_, gpu::embedded_spirv(gpu::kGridShader));
         photons_->run(scene, photon_pass, features, emitters_, resources_, progress, 0.0);
     }
+    select_pipeline(features, progress);
     resources_.output(rows * row_bytes);
     return features;
 }

@@ -108,6 +108,9 @@ private:
     // Makes pipeline_ the one for `features`, building it first if needed (on a thread of its
     // own: `progress` can cancel the wait, RenderCancelled, and the build goes on for later).
     void select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress);
+    // Starts building the pipeline for `features` on its own thread where none is built or
+    // building, for select_pipeline to pick up: the photon pass runs meanwhile.
+    gpu::PipelineBuild& start_pipeline(const gpu::ShaderFeatures& features);
     struct SampleRange {
         std::uint32_t first, count;
     };
