@@ -52,8 +52,7 @@ DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, c
                              double slack, bool required) {
     DirectionGrid grid{};  // valid = 0: through the BVH
     // Every box a light's grid holds is listed at least once: more than its entries' limit can
-    // never make a grid, and costs the projection of every box to find that out (at 10^6 boxes
-    // 0.2 s a light).
+    // never make a grid, found here before every box is projected (at 10^6 boxes 0.2 s a light).
     if (!view && !required && boxes.size() > kMaxEntries) return grid;
     dvec3 axis, u, v;
     if (view) {
@@ -71,7 +70,11 @@ DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, c
     }
     if (!std::isfinite(axis.x + axis.y + axis.z + u.x + u.y + u.z + v.x + v.y + v.z)) return grid;
 
+    // The eye's window is its view (a little wider), known before any box is projected.
+    const double view_u = view ? 1.01 * glm::length(view->right) + 1e-6 : 0.0;
+    const double view_v = view ? 1.01 * glm::length(view->up) + 1e-6 : 0.0;
     std::vector<Footprint> prints;
+    prints.reserve(std::min(boxes.size(), kMaxEntries + 1));  // at most one past the limit: never regrown
     std::vector<uint> everywhere;  // the eye's: boxes around its plane
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         const Aabb& b = boxes[i];
@@ -109,15 +112,18 @@ DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, c
         // The float projection's rounding, and a direction `slack` away: tan moves by (1 + tan^2) per radian.
         const double most = std::max({std::abs(u0), std::abs(u1), std::abs(v0), std::abs(v1)});
         const double m = kPrintPad * (1.0 + most) + slack * (1.0 + 2.0 * most * most);
+        if (view && (u1 + m < -view_u || u0 - m > view_u || v1 + m < -view_v || v0 - m > view_v)) continue;  // out of view
         prints.push_back({u0 - m, u1 + m, v0 - m, v1 + m, near, static_cast<uint>(i)});
+        // Each print is listed at least once: more than the entries' limit can make no grid.
+        if (prints.size() > kMaxEntries && !required) return grid;
     }
     if (everywhere.size() > kMaxEverywhere && !required) return grid;
 
     // The window: the eye's view (a little wider), or everything the boxes cover.
     double wu0, wu1, wv0, wv1;
     if (view) {
-        wu1 = 1.01 * glm::length(view->right) + 1e-6;
-        wv1 = 1.01 * glm::length(view->up) + 1e-6;
+        wu1 = view_u;
+        wv1 = view_v;
         wu0 = -wu1;
         wv0 = -wv1;
     } else {
@@ -145,7 +151,6 @@ DirectionGrid direction_grid(const dvec3& origin, std::span<const Aabb> boxes, c
         f.v1 = std::min(f.v1, wv1);
         return !(f.u0 <= f.u1 && f.v0 <= f.v1);
     });
-    if (prints.size() > kMaxEntries && !required) return grid;  // the same for the eye's, once its view is clipped
     for (const Footprint& f : prints)
         if (std::isfinite(f.near) && (f.u1 - f.u0) < (wu1 - wu0)) extents.push_back(std::max(f.u1 - f.u0, f.v1 - f.v0));
 
