@@ -67,7 +67,7 @@ void add_animation_options(CLI::App& cmd, AnimationOptions& o) {
         ->check(not_empty("expected FILE.mp4, .webm or .gif"));
 }
 
-int run_animation(const RenderOptions& options, const AnimationOptions& opts, const Scene& scene) {
+int run_animation(const RenderOptions& options, const AnimationOptions& opts, const Scene& scene, RendererStart& renderer_start) {
     if (!scene.animation)
         throw UserError(fmt::format("{} has no [animation] table, so --frames and --video do not apply", options.scene));
     const Animation& animation = *scene.animation;
@@ -80,7 +80,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
     if (!pattern) {
         // A plain name: one still of one frame, e.g. a poster image.
         if (range.single() && !opts.frames.empty() && opts.video.empty())
-            return render_still(options, scene_for_frame(options, scene, range.first), options.output);
+            return render_still(options, scene_for_frame(options, scene, range.first), options.output, renderer_start);
         throw UserError(fmt::format("-o {}: an animation needs a frame number in the name, such as {} "
                                     "(or --frames N for a single frame)",
                                     options.output, suggest_pattern(options.output, animation.frames)));
@@ -121,7 +121,7 @@ int run_animation(const RenderOptions& options, const AnimationOptions& opts, co
 
         Interrupts interrupts;
         auto start = Clock::now();
-        std::unique_ptr<Renderer> renderer = make_renderer(options);
+        std::unique_ptr<Renderer> renderer = renderer_start.take();
         try {
             renderer->prepare(scene_for_frame(options, scene, todo.front()),
                               [&](double) { return !interrupts.requested(); });

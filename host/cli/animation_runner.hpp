@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/render_options.hpp"
+#include "app/renderer_start.hpp"
 
 namespace lancer {
 
@@ -19,7 +20,7 @@ void add_animation_options(CLI::App& cmd, AnimationOptions& o);
 
 // Renders the frames of `scene` (loaded, with the command line's overrides) to the -o pattern,
 // skipping finished ones unless --force, then makes the video if asked. One renderer serves
-// every frame, so start-up is paid once. Returns the exit code.
-int run_animation(const RenderOptions& options, const AnimationOptions& animation, const Scene& scene);
+// every frame (from `renderer_start`), so start-up is paid once. Returns the exit code.
+int run_animation(const RenderOptions& options, const AnimationOptions& animation, const Scene& scene, RendererStart& renderer_start);
 
 }  // namespace lancer

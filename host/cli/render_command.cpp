@@ -37,16 +37,17 @@ struct RenderCommand {
     int run() const {
         if (list_devices) return lancer::list_devices();
         if (options.scene.empty()) throw UserError("render: a scene file is required (see lancer render --help)");
+        RendererStart start(options);
         Scene scene = [&] {
             PhaseLine phase(options.quiet, "reading " + options.scene);
             return load_scene_with_overrides(options);
         }();
         if (!options.quiet) report_implicit_surfaces(scene);
-        if (scene.animation || animation.requested()) return run_animation(options, animation, scene);
+        if (scene.animation || animation.requested()) return run_animation(options, animation, scene, start);
         std::string output = output_path(options);
         if (has_frame_field(output))
             throw UserError("-o " + output + ": a frame number pattern, but " + options.scene + " has no [animation] table");
-        return render_still(options, scene, output);
+        return render_still(options, scene, output, start);
     }
 };
 

@@ -14,10 +14,10 @@
 
 namespace lancer {
 
-int render_still(const RenderOptions& options, const Scene& scene, const std::string& output) {
+int render_still(const RenderOptions& options, const Scene& scene, const std::string& output, RendererStart& renderer_start) {
     check_output_writable(output);
     check_output_is_not_an_input(output, scene_inputs(scene));
-    std::unique_ptr<Renderer> renderer = make_renderer(options);
+    std::unique_ptr<Renderer> renderer = renderer_start.take();
     renderer->expect_one_still();
 
     Interrupts interrupts;

@@ -3,11 +3,13 @@
 #include <string>
 
 #include "app/render_options.hpp"
+#include "app/renderer_start.hpp"
 
 namespace lancer {
 
-// Renders `scene` (already static: scene_at() for a frame of an animation) to `output`.
-// Returns the exit code: 1 when the Vulkan validation layer reported anything.
-int render_still(const RenderOptions& options, const Scene& scene, const std::string& output);
+// Renders `scene` (already static: scene_at() for a frame of an animation) to `output`, with the
+// renderer from `renderer_start` (taken once the output is known to be writable). Returns the exit code:
+// 1 when the Vulkan validation layer reported anything.
+int render_still(const RenderOptions& options, const Scene& scene, const std::string& output, RendererStart& renderer_start);
 
 }  // namespace lancer

@@ -279,6 +279,13 @@ INSTANTIATE_TEST_SUITE_P(
                 "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json", "lancer: error: no Vulkan device found"},
         BadCase{"unknown_device", "render " + test::source_path("scenes/seed.toml") + kSmall + "--device nosuchgpu -o OUT", "",
                 "lancer: error: no Vulkan device matches 'nosuchgpu'"},
+        // The renderer starts while the scene loads (app/renderer_start.hpp); the scene's and the
+        // output's errors still come first, as if it had not.
+        BadCase{"scene_error_before_device", "render " + bad("unknown_key") + " --device nosuchgpu -o OUT", "",
+                bad("unknown_key") + ":5:1: error: [camera]: unknown key 'fvo'"},
+        BadCase{"output_error_before_device", "render " + test::source_path("scenes/seed.toml") + kSmall +
+                    "--device nosuchgpu -o /nonexistent-dir/x.png", "",
+                "lancer: error: cannot write '/nonexistent-dir/x.png': directory '/nonexistent-dir' does not exist"},
         // Hostile input, round 3 (issue 42): integers are decimal digits (CLI11 read "0x10" as 16
         // and "010" as 8, and said "not in range" of "1e3").
         BadCase{"width_hex", "render " + kSeedSmall + "--width 0x10 -o OUT", "", "lancer: error: --width: '0x10" + kNotDecimal},
