@@ -166,32 +166,43 @@ std::string GpuRenderer::description() const {
     return "gpu: " + info.name + " (" + info.type + ", " + info.driver + ")";
 }
 
-gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated) {
+gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, bool output_hits) {
     const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
     // A still's trees are built once: no cache.
     BvhCache* cache = one_still_ ? nullptr : &bvh_cache_;
     ElementTreeCache* trees = one_still_ ? nullptr : &element_trees_;
+    // The pipeline builds on another core while the packer builds the meshes' trees.
+    const gpu::PackOptions options{acceleration_, grid_use_, cache, trees, &limits,
+                                   [&](const gpu::ShaderFeatures& f) { start_pipeline(pipeline_features(f, output_hits)); }};
     if (upload_once_) {
-        gpu::PackedScene packed = gpu::pack_scene(scene, {acceleration_, grid_use_, cache, trees, &limits});
+        gpu::PackedScene packed = gpu::pack_scene(scene, options);
         ++scenes_packed_;
-        const gpu::ShaderFeatures features = admit_packed(scene, packed, output_bytes, limits, generated);
+        admit_packed(scene, packed, output_bytes, limits);
+        const gpu::ShaderFeatures features = pipeline_features(packed.features, output_hits);
         resources_.upload_releasing(packed, gpu::pack_frame(scene, packed));
         return features;
     }
     std::shared_ptr<const gpu::PackedScene> fresh;
     if (!packing_once_ || !packed_) {
-        (packing_once_ ? packed_ : fresh) =
-            std::make_shared<const gpu::PackedScene>(gpu::pack_scene(scene, {acceleration_, grid_use_, cache, trees, &limits}));
+        (packing_once_ ? packed_ : fresh) = std::make_shared<const gpu::PackedScene>(gpu::pack_scene(scene, options));
         ++scenes_packed_;
     }
     const std::shared_ptr<const gpu::PackedScene>& shared = fresh ? fresh : packed_;
-    const gpu::ShaderFeatures features = admit_packed(scene, *shared, output_bytes, limits, generated);
+    admit_packed(scene, *shared, output_bytes, limits);
     resources_.upload(shared, gpu::pack_frame(scene, *shared));
-    return features;
+    return pipeline_features(shared->features, output_hits);
 }
 
-gpu::ShaderFeatures GpuRenderer::admit_packed(const Scene& scene, const gpu::PackedScene& packed, std::uint64_t output_bytes,
-                                              const gpu::DeviceMemoryLimits& limits, gpu::ShaderFiles& generated) {
+gpu::ShaderFeatures GpuRenderer::pipeline_features(gpu::ShaderFeatures f, bool output_hits) const {
+    f.check_loop_limit = gpu::limits_loop_iterations(context_->info());
+    f.check_grid_contract = check_grid_contract_;
+    if (override_features_) override_features_(f);
+    f.output_hits = output_hits;
+    return f;
+}
+
+void GpuRenderer::admit_packed(const Scene& scene, const gpu::PackedScene& packed, std::uint64_t output_bytes,
+                               const gpu::DeviceMemoryLimits& limits) {
     std::vector<gpu::BufferNeed> needs = gpu::render_buffer_needs(packed, output_bytes, selection_pixels_);
     gpu::check_memory_budget(needs, limits);
     std::uint64_t buffer_bytes = 0;
@@ -199,12 +210,6 @@ gpu::ShaderFeatures GpuRenderer::admit_packed(const Scene& scene, const gpu::Pac
     gpu::check_render_memory(scene, buffer_bytes);
     emitters_ = packed.emitters;
     float_notes_ = packed.float_notes;
-    if (std::string code = gpu::surface_functions_glsl(scene, context_->float64()); !code.empty()) generated["surface_functions.glsl"] = code;
-    gpu::ShaderFeatures features = packed.features;
-    features.check_loop_limit = gpu::limits_loop_iterations(context_->info());
-    features.check_grid_contract = check_grid_contract_;
-    if (override_features_) override_features_(features);
-    return features;
 }
 
 void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_pass, std::uint32_t width, double done,
@@ -327,10 +332,11 @@ std::size_t GpuRenderer::band_rows(const RenderSettings& rs, std::uint32_t sampl
 gpu::ShaderFeatures GpuRenderer::prepare_band_output(const Scene& scene, bool output_hits, std::size_t rows,
                                                      const ProgressFn& progress, int photon_pass) {
     const std::size_t row_bytes = std::size_t(scene.render.width) * sizeof(gpu::vec4);
+    // The program first: its pipeline starts building as soon as the packing knows its features.
     gpu::ShaderFiles generated;
-    gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, generated);
-    features.output_hits = output_hits;
+    if (std::string code = gpu::surface_functions_glsl(scene, context_->float64()); !code.empty()) generated["surface_functions.glsl"] = code;
     ensure_program(generated, photon_pass >= 0);
+    const gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, output_hits);
     if (photon_pass >= 0) {
         // The pass's photons and their grid first; the tracer gathers from them. Its pipeline
         // builds on another core meanwhile (the first pass: both pipelines at once).

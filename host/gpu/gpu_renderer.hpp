@@ -94,13 +94,15 @@ public:
     void use_shaders(const gpu::ShaderTree& tree, const std::string& display_root = "");
 
 private:
-    // Packs the scene within the device's limits and uploads it; returns the shader features
-    // it needs, and adds the generated shader files it needs to `generated`.
-    gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes, gpu::ShaderFiles& generated);
+    // Packs the scene within the device's limits and uploads it; returns the pipeline's features
+    // (pipeline_features), having started that pipeline's build as soon as the packing knew them.
+    gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes, bool output_hits);
     // What upload_scene does with a packed scene before its upload: checks that it fits, keeps
-    // its notes and emitters, adds its generated code; returns its shader features.
-    gpu::ShaderFeatures admit_packed(const Scene& scene, const gpu::PackedScene& packed, std::uint64_t output_bytes,
-                                     const gpu::DeviceMemoryLimits& limits, gpu::ShaderFiles& generated);
+    // its notes and emitters.
+    void admit_packed(const Scene& scene, const gpu::PackedScene& packed, std::uint64_t output_bytes,
+                      const gpu::DeviceMemoryLimits& limits);
+    // A packed scene's features with what the device and the render add to them.
+    gpu::ShaderFeatures pipeline_features(gpu::ShaderFeatures packed, bool output_hits) const;
     // Makes spirv_ the tracer built from base_tree_ with `generated` in place of the files of
     // the same names, compiling only when that changed; with `photons`, photon_spirv_ the
     // photon pass built the same way.

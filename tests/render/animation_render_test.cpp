@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -399,6 +400,31 @@ Scene still_with_a_mesh_and_a_sphere_set() {
     scene.objects[2].shape = set;
     for (int k : {1, 2}) scene.objects[k].placement = Placement{glm::dmat4(1.0), glm::dmat4(1.0), true};
     return scene;
+}
+
+// The packer gives out the features before it builds the meshes' and sphere sets' trees, so that
+// the renderer's pipeline builds meanwhile: at the call no tree is built, after it both are, and
+// the features given are the packed scene's.
+TEST(BvhReuse, ThePackerGivesTheFeaturesBeforeItBuildsTheSetsTrees) {
+    const Scene scene = still_with_a_mesh_and_a_sphere_set();
+    ElementTreeCache trees;
+    std::optional<gpu::ShaderFeatures> given;
+    std::size_t builds_then = 99;
+    gpu::PackOptions options;
+    options.element_trees = &trees;
+    options.on_features = [&](const gpu::ShaderFeatures& f) {
+        ASSERT_FALSE(given) << "given twice";
+        given = f;
+        builds_then = trees.builds();
+    };
+    const gpu::PackedScene packed = gpu::pack_scene(scene, options);
+    ASSERT_TRUE(given);
+    EXPECT_EQ(builds_then, 0u);
+    EXPECT_EQ(trees.builds(), 2u);
+    EXPECT_TRUE(*given == packed.features);
+    EXPECT_TRUE(packed.features.has_shape(SHAPE_MESH) && packed.features.has_shape(SHAPE_SPHERES));
+    EXPECT_FALSE(packed.mesh_triangles.empty());
+    EXPECT_EQ(packed.set_spheres.size(), 2u);
 }
 
 // A mesh's and a sphere set's trees are built once for frame after frame (the shared geometry

@@ -20,6 +20,113 @@
 namespace lancer::gpu {
 namespace {
 
+// The elements' tree, its leaves' ranges from `first_element` (the elements themselves are
+// the caller's to store, in bvh.order).
+MeshInfo pack_element_tree(PackedScene& out, const Bvh& bvh, uint first_element, uint count) {
+    const MeshInfo info{static_cast<uint>(out.mesh_nodes.size()), first_element, count, NO_MAP};
+    reserve_huge(out.mesh_nodes, out.mesh_nodes.size() + bvh.nodes.size());
+    for (const lancer::BvhNode& n : bvh.nodes) {
+        MeshNode g{};
+        pack_box(n.box, g.lo, g.hi);
+        g.first = n.count > 0 ? info.first_element + n.first : info.first_node + n.first;
+        g.count = n.count;
+        out.mesh_nodes.push_back(g);
+    }
+    return info;
+}
+
+// The meshes and sphere sets, once the scene's primitives are planned (pack_element_sets).
+struct ElementSetPacker {
+    PackedScene& out;
+    ElementTreeCache* trees = nullptr;
+
+    // A mesh, once: its triangles in the order of its own BVH's leaves (built here, over their
+    // float boxes), that tree, and the triangles' materials where a placement takes them (the
+    // same for every such placement).
+    void place(uint index, const Mesh& m, uint material, bool first) {
+        if (first) out.meshes[index] = pack_mesh(*m.geometry, *element_tree(m.geometry, [&] { return mesh_tree(*m.geometry); }));
+        pack_element_materials(out.meshes[index], m, out.mesh_order, material);
+    }
+    // Each element's material, once per mesh or set, where a placement takes the file's (the same
+    // for every such placement); `order` maps the packed elements to the file's.
+    template <class Set>
+    void pack_element_materials(MeshInfo& info, const Set& set, const std::vector<std::uint32_t>& order, uint material) {
+        if (set.part_materials.empty() || info.first_material != NO_MAP) return;
+        info.first_material = static_cast<uint>(out.mesh_materials.size());
+        for (std::uint32_t k = 0; k < info.element_count; ++k)
+            out.mesh_materials.push_back(set.material_of(order[info.first_element + k], material));
+    }
+    // The tree of a set the scene shares (a mesh's geometry, a sphere set's cloud): the cache's,
+    // where the renderer keeps one, else built now.
+    template <class Set>
+    std::shared_ptr<const Bvh> element_tree(const std::shared_ptr<const Set>& set, const std::function<Bvh()>& build) {
+        return trees ? trees->tree(set, build) : std::make_shared<const Bvh>(build());
+    }
+    // Over the triangles' boxes around their float vertices, which the shader tests.
+    static Bvh mesh_tree(const MeshGeometry& geometry) {
+        const TriangleMesh& mesh = geometry.mesh();
+        std::vector<Aabb> boxes;
+        reserve_huge(boxes, mesh.triangles.size());
+        for (const auto& t : mesh.triangles) {
+            Aabb box;
+            for (std::uint32_t v : t) box.extend(dvec3(glm::vec3(mesh.positions[v])));
+            boxes.push_back(box);
+        }
+        // Leaves of 4 to 8 triangles: on lavapipe a step through the tree costs more than a few
+        // triangle tests more (the bunny 0.94 of its render time, the 10^6-triangle knot 0.82 and
+        // 0.83 of its memory; docs/performance.md).
+        return build_bvh_from(std::move(boxes), BvhOptions{.max_leaf_size = 8, .min_leaf_size = 4});
+    }
+    MeshInfo pack_mesh(const MeshGeometry& geometry, const Bvh& bvh) {
+        const TriangleMesh& mesh = geometry.mesh();
+        const MeshInfo info = pack_element_tree(out, bvh, static_cast<uint>(out.mesh_triangles.size()), static_cast<uint>(mesh.triangles.size()));
+        constexpr glm::dvec2 kCorners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+        reserve_huge(out.mesh_triangles, out.mesh_triangles.size() + mesh.triangles.size());
+        reserve_huge(out.mesh_order, out.mesh_order.size() + mesh.triangles.size());
+        for (std::uint32_t index : bvh.order) {
+            out.mesh_order.push_back(index);
+            const auto& t = mesh.triangles[index];
+            MeshTriangle tr{};
+            vec4* vertices[3] = {&tr.v0, &tr.v1, &tr.v2};
+            vec4* normals[3] = {&tr.n0, &tr.n1, &tr.n2};
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec2 uv = mesh.uvs.empty() ? kCorners[k] : mesh.uvs[t[k]];
+                *vertices[k] = v4(mesh.positions[t[k]], uv.x);
+                *normals[k] = v4(mesh.normals[t[k]], uv.y);
+            }
+            out.mesh_triangles.push_back(tr);
+        }
+        return info;
+    }
+    // A sphere set, once: its spheres in its own BVH's leaf order.
+    void place(uint index, const SphereSet& s, uint material, bool first) {
+        if (first) out.meshes[index] = pack_sphere_set(*s.cloud, *element_tree(s.cloud, [&] { return sphere_set_tree(*s.cloud); }));
+        pack_element_materials(out.meshes[index], s, out.set_order, material);
+    }
+    static Bvh sphere_set_tree(const SphereCloud& cloud) {
+        std::vector<Aabb> boxes;
+        reserve_huge(boxes, cloud.spheres().size());
+        for (std::uint32_t i = 0; i < cloud.spheres().size(); ++i) {
+            Aabb& box = boxes.emplace_back();
+            cloud.extend(i, box.lo, box.hi);
+        }
+        // Leaves of up to 4 whatever the SAH says: half the nodes, and faster on lavapipe (a sphere's
+        // test costs about a box's; docs/performance.md).
+        return build_bvh_from(std::move(boxes), BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
+    }
+    MeshInfo pack_sphere_set(const SphereCloud& cloud, const Bvh& bvh) {
+        const auto& spheres = cloud.spheres();
+        const MeshInfo info = pack_element_tree(out, bvh, static_cast<uint>(out.set_spheres.size()), static_cast<uint>(spheres.size()));
+        reserve_huge(out.set_spheres, out.set_spheres.size() + spheres.size());
+        reserve_huge(out.set_order, out.set_order.size() + spheres.size());
+        for (std::uint32_t index : bvh.order) {
+            out.set_order.push_back(index);
+            out.set_spheres.push_back(SetSphere{spheres[index]});
+        }
+        return info;
+    }
+};
+
 // Turns each object into primitives (one, or many for patch sets), each with its box if bounded.
 struct PrimitivePacker {
     PackedScene& out;
@@ -27,7 +134,7 @@ struct PrimitivePacker {
     uint material = 0;
     uint object = 0;
     const SpherePacking& spheres;
-    ElementTreeCache* trees = nullptr;
+    ElementSets& sets;
 
     void add(Primitive p, std::optional<Aabb> box) { prims.emplace_back(p, box); }
 
@@ -117,7 +224,7 @@ struct PrimitivePacker {
             const bool own_space = leaf.placement && leaf.placement->shape_in_object_space;
             const SpherePacking leaf_spheres{spheres.by_near_points, own_space ? leaf.placement->object_point(spheres.eye) : spheres.eye};
             const uint frame = out.csg_leaf_frames + out.csg_leaves_framed++;
-            pack_object(leaf.shape, leaf.material, frame, leaf_spheres, out, one, trees);
+            pack_object(leaf.shape, leaf.material, frame, leaf_spheres, out, one, sets);
             const int outward = outward_side(leaf.shape);
             if (!shape_has(shape_type(leaf.shape), SHAPE_IN_PIECES)) {
                 Primitive p = one.at(0).first;
@@ -164,111 +271,26 @@ struct PrimitivePacker {
     }
     // One primitive per placement (in the file's coordinates: its object's frame carries rays
     // there; its box, the world's, comes from the caller), p0.x = 1 where shaded smooth, p0.y = 1
-    // where it takes the file's materials. The mesh itself, once: its triangles in the order of
-    // its own BVH's leaves (built here, over their float boxes), that tree, and the triangles'
-    // materials where a placement takes them (the same for every such placement).
+    // where it takes the file's materials. The mesh itself, its tree and its triangles' materials
+    // come later, from pack_element_sets.
     void operator()(const Mesh& m) {
-        const auto [found, added] = out.mesh_indices.try_emplace(m.geometry.get(), static_cast<uint>(out.meshes.size()));
-        if (added) pack_mesh(*m.geometry, *element_tree(m.geometry, [&] { return mesh_tree(*m.geometry); }));
-        pack_element_materials(out.meshes[found->second], m, out.mesh_order);
-        add({SHAPE_MESH, material, found->second, object,
+        add({SHAPE_MESH, material, element_set(m.geometry.get(), m), object,
              vec4(m.smooth ? 1.0f : 0.0f, m.part_materials.empty() ? 0.0f : 1.0f, 0.0f, 0.0f), {}, {}},
             shape_bounds(m));
     }
-    // Each element's material, once per mesh or set, where a placement takes the file's (the same
-    // for every such placement); `order` maps the packed elements to the file's.
-    template <class Set>
-    void pack_element_materials(MeshInfo& info, const Set& set, const std::vector<std::uint32_t>& order) {
-        if (set.part_materials.empty() || info.first_material != NO_MAP) return;
-        info.first_material = static_cast<uint>(out.mesh_materials.size());
-        for (std::uint32_t k = 0; k < info.element_count; ++k)
-            out.mesh_materials.push_back(set.material_of(order[info.first_element + k], material));
-    }
-    // The elements' tree, its leaves' ranges from `first_element` (the elements themselves are
-    // the caller's to store, in bvh.order).
-    MeshInfo pack_element_tree(const Bvh& bvh, uint first_element, uint count) {
-        const MeshInfo info{static_cast<uint>(out.mesh_nodes.size()), first_element, count, NO_MAP};
-        reserve_huge(out.mesh_nodes, out.mesh_nodes.size() + bvh.nodes.size());
-        for (const lancer::BvhNode& n : bvh.nodes) {
-            MeshNode g{};
-            pack_box(n.box, g.lo, g.hi);
-            g.first = n.count > 0 ? info.first_element + n.first : info.first_node + n.first;
-            g.count = n.count;
-            out.mesh_nodes.push_back(g);
-        }
-        return info;
-    }
-    // The tree of a set the scene shares (a mesh's geometry, a sphere set's cloud): the cache's,
-    // where the renderer keeps one, else built now.
-    template <class Set>
-    std::shared_ptr<const Bvh> element_tree(const std::shared_ptr<const Set>& set, const std::function<Bvh()>& build) {
-        return trees ? trees->tree(set, build) : std::make_shared<const Bvh>(build());
-    }
-    // Over the triangles' boxes around their float vertices, which the shader tests.
-    static Bvh mesh_tree(const MeshGeometry& geometry) {
-        const TriangleMesh& mesh = geometry.mesh();
-        std::vector<Aabb> boxes;
-        reserve_huge(boxes, mesh.triangles.size());
-        for (const auto& t : mesh.triangles) {
-            Aabb box;
-            for (std::uint32_t v : t) box.extend(dvec3(glm::vec3(mesh.positions[v])));
-            boxes.push_back(box);
-        }
-        // Leaves of 4 to 8 triangles: on lavapipe a step through the tree costs more than a few
-        // triangle tests more (the bunny 0.94 of its render time, the 10^6-triangle knot 0.82 and
-        // 0.83 of its memory; docs/performance.md).
-        return build_bvh_from(std::move(boxes), BvhOptions{.max_leaf_size = 8, .min_leaf_size = 4});
-    }
-    void pack_mesh(const MeshGeometry& geometry, const Bvh& bvh) {
-        const TriangleMesh& mesh = geometry.mesh();
-        const MeshInfo info = pack_element_tree(bvh, static_cast<uint>(out.mesh_triangles.size()), static_cast<uint>(mesh.triangles.size()));
-        constexpr glm::dvec2 kCorners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
-        reserve_huge(out.mesh_triangles, out.mesh_triangles.size() + mesh.triangles.size());
-        reserve_huge(out.mesh_order, out.mesh_order.size() + mesh.triangles.size());
-        for (std::uint32_t index : bvh.order) {
-            out.mesh_order.push_back(index);
-            const auto& t = mesh.triangles[index];
-            MeshTriangle tr{};
-            vec4* vertices[3] = {&tr.v0, &tr.v1, &tr.v2};
-            vec4* normals[3] = {&tr.n0, &tr.n1, &tr.n2};
-            for (int k = 0; k < 3; ++k) {
-                const glm::dvec2 uv = mesh.uvs.empty() ? kCorners[k] : mesh.uvs[t[k]];
-                *vertices[k] = v4(mesh.positions[t[k]], uv.x);
-                *normals[k] = v4(mesh.normals[t[k]], uv.y);
-            }
-            out.mesh_triangles.push_back(tr);
-        }
-        out.meshes.push_back(info);
-    }
-    // As a mesh: one primitive per placement, p0.y = 1 where it takes the file's colours; the set
-    // itself once, its spheres in its own BVH's leaf order.
+    // As a mesh: one primitive per placement, p0.y = 1 where it takes the file's colours.
     void operator()(const SphereSet& s) {
-        const auto [found, added] = out.mesh_indices.try_emplace(s.cloud.get(), static_cast<uint>(out.meshes.size()));
-        if (added) pack_sphere_set(*s.cloud, *element_tree(s.cloud, [&] { return sphere_set_tree(*s.cloud); }));
-        pack_element_materials(out.meshes[found->second], s, out.set_order);
-        add({SHAPE_SPHERES, material, found->second, object, vec4(0.0f, s.part_materials.empty() ? 0.0f : 1.0f, 0.0f, 0.0f), {}, {}},
+        add({SHAPE_SPHERES, material, element_set(s.cloud.get(), s), object, vec4(0.0f, s.part_materials.empty() ? 0.0f : 1.0f, 0.0f, 0.0f), {}, {}},
             shape_bounds(s));
     }
-    static Bvh sphere_set_tree(const SphereCloud& cloud) {
-        std::vector<Aabb> boxes;
-        reserve_huge(boxes, cloud.spheres().size());
-        for (std::uint32_t i = 0; i < cloud.spheres().size(); ++i) {
-            Aabb& box = boxes.emplace_back();
-            cloud.extend(i, box.lo, box.hi);
-        }
-        // Leaves of up to 4 whatever the SAH says: half the nodes, and faster on lavapipe (a sphere's
-        // test costs about a box's; docs/performance.md).
-        return build_bvh_from(std::move(boxes), BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
-    }
-    void pack_sphere_set(const SphereCloud& cloud, const Bvh& bvh) {
-        const auto& spheres = cloud.spheres();
-        out.meshes.push_back(pack_element_tree(bvh, static_cast<uint>(out.set_spheres.size()), static_cast<uint>(spheres.size())));
-        reserve_huge(out.set_spheres, out.set_spheres.size() + spheres.size());
-        reserve_huge(out.set_order, out.set_order.size() + spheres.size());
-        for (std::uint32_t index : bvh.order) {
-            out.set_order.push_back(index);
-            out.set_spheres.push_back(SetSphere{spheres[index]});
-        }
+    // The index in out.meshes of the set that `shared` names, whose MeshInfo pack_element_sets
+    // fills; this placement is noted for it where it is the set's first or takes the file's materials.
+    template <class Set>
+    uint element_set(const void* shared, const Set& set) {
+        const auto [found, added] = out.mesh_indices.try_emplace(shared, static_cast<uint>(out.meshes.size()));
+        if (added) out.meshes.emplace_back();
+        if (added || !set.part_materials.empty()) sets.placements.push_back({found->second, &set, material, added});
+        return found->second;
     }
     // One primitive, p0.x its threshold, p1 and p2 its box (the texture's (u, v) across it), data
     // its components' tree (a MeshInfo over BLOB_ELEMENTS, in the tree's leaf order).
@@ -278,7 +300,7 @@ struct PrimitivePacker {
         for (const BlobComponent& k : o.components) boxes.push_back(Aabb{glm::min(k.a, k.b) - k.radius, glm::max(k.a, k.b) + k.radius});
         const Bvh bvh = build_bvh(boxes, BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
         const auto index = static_cast<uint>(out.meshes.size());
-        out.meshes.push_back(pack_element_tree(bvh, static_cast<uint>(out.blob_elements.size()), static_cast<uint>(o.components.size())));
+        out.meshes.push_back(pack_element_tree(out, bvh, static_cast<uint>(out.blob_elements.size()), static_cast<uint>(o.components.size())));
         for (std::uint32_t i : bvh.order) {
             const BlobComponent& k = o.components[i];
             out.blob_elements.push_back(BlobElement{v4(k.a, k.radius), v4(k.b, k.strength)});
@@ -315,7 +337,7 @@ struct PrimitivePacker {
         }
         const Bvh bvh = build_bvh(boxes, BvhOptions{.max_leaf_size = 4, .min_leaf_size = 4});
         const auto index = static_cast<uint>(out.meshes.size());
-        out.meshes.push_back(pack_element_tree(bvh, static_cast<uint>(out.prism_curves.size()), static_cast<uint>(o.segments.size())));
+        out.meshes.push_back(pack_element_tree(out, bvh, static_cast<uint>(out.prism_curves.size()), static_cast<uint>(o.segments.size())));
         for (std::uint32_t i : bvh.order) {
             const PrismSegment& s = o.segments[i];
             PrismCurve g{};
@@ -506,8 +528,14 @@ SpherePacking sphere_packing(const Scene& scene) {
 }
 
 void pack_object(const Shape& shape, uint material, uint object, const SpherePacking& spheres, PackedScene& out,
-                 std::vector<PrimitiveWithBox>& primitives, ElementTreeCache* trees) {
-    std::visit(PrimitivePacker{out, primitives, material, object, spheres, trees}, shape);
+                 std::vector<PrimitiveWithBox>& primitives, ElementSets& sets) {
+    std::visit(PrimitivePacker{out, primitives, material, object, spheres, sets}, shape);
+}
+
+void pack_element_sets(const ElementSets& sets, PackedScene& out) {
+    ElementSetPacker packer{out, sets.trees};
+    for (const ElementSets::Placement& p : sets.placements)
+        std::visit([&](const auto* set) { packer.place(p.index, *set, p.material, p.first); }, p.set);
 }
 
 std::uint64_t bezier_leaf_count(const Scene& scene) {

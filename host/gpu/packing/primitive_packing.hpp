@@ -5,6 +5,7 @@
 // cells, implicit surfaces), and each primitive's box where it is bounded. A new shape adds its
 // case here (docs/adding-a-shape.md).
 #include <cstdint>
+#include <variant>
 #include <vector>
 
 #include "gpu/packing/family_boxes.hpp"
@@ -22,10 +23,28 @@ struct SpherePacking {
 };
 SpherePacking sphere_packing(const Scene& scene);
 
+// The meshes and sphere sets that pack_object met, whose trees and elements pack_element_sets
+// packs once the scene's primitives are planned: a renderer starts its pipeline from the
+// features meanwhile (the bunny's tree takes about as long as the pipeline). Each placement is
+// noted where it is its set's first or takes the file's materials; the pointers are the scene's.
+struct ElementSets {
+    struct Placement {
+        uint index;  // in PackedScene::meshes
+        std::variant<const Mesh*, const SphereSet*> set;
+        uint material;
+        bool first;
+    };
+    ElementTreeCache* trees = nullptr;  // where given, the trees come from (and stay in) it
+    std::vector<Placement> placements;
+};
+
 // Appends the primitives of scene object `object`, made of `material`, to `primitives`, and what
-// they index to `out`'s arrays; the trees of meshes and sphere sets from `trees` where given.
+// they index to `out`'s arrays but for meshes' and sphere sets', which it notes in `sets`.
 void pack_object(const Shape& shape, uint material, uint object, const SpherePacking& spheres, PackedScene& out,
-                 std::vector<PrimitiveWithBox>& primitives, ElementTreeCache* trees = nullptr);
+                 std::vector<PrimitiveWithBox>& primitives, ElementSets& sets);
+
+// The trees, elements and element materials of the sets noted in `sets`, into `out`.
+void pack_element_sets(const ElementSets& sets, PackedScene& out);
 
 // The Bezier leaves of the whole scene, counted before any is made: a scene with too many for
 // the device is refused before the packer spends seconds and gigabytes on them.

@@ -29,6 +29,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     const SpherePacking spheres = sphere_packing(scene);
     bool placed = false, object_space = false;
     packed.csg_leaf_frames = static_cast<uint>(scene.objects.size());
+    ElementSets sets{options.element_trees, {}};
     std::vector<const Object*> leaves;  // every CSG leaf, in the order their frames follow the objects'
     for (const Object& o : scene.objects)
         if (const auto* csg = std::get_if<Csg>(&o.shape))
@@ -41,7 +42,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         const Object& o = scene.objects[i];
         placed |= o.placement.has_value();
         if (!o.placement || !o.placement->shape_in_object_space) {
-            pack_object(o.shape, o.material, static_cast<uint>(i), spheres, packed, primitives, options.element_trees);
+            pack_object(o.shape, o.material, static_cast<uint>(i), spheres, packed, primitives, sets);
             continue;
         }
         // A shape in its own coordinates is packed there, by its point nearest the anchor there;
@@ -49,7 +50,7 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         object_space = true;
         const std::size_t first = primitives.size();
         pack_object(o.shape, o.material, static_cast<uint>(i), {spheres.by_near_points, o.placement->object_point(spheres.eye)},
-                    packed, primitives, options.element_trees);
+                    packed, primitives, sets);
         for (std::size_t k = first; k < primitives.size(); ++k)
             if (primitives[k].second) primitives[k].second = object_bounds(o);
     }
@@ -66,7 +67,6 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         packed.photon_count = static_cast<uint>(scene.photons->count);
     }
 
-    if (options.element_trees) options.element_trees->prune();  // the sets of earlier scenes let go
     AccelerationPlan plan =
         plan_scene({std::move(primitives), scene.materials, packed.lights, scene.photons.has_value(), packed.object_frames},
                    {options.acceleration, options.grids, options.cache});
@@ -134,6 +134,10 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         f.has_spot_lights |= l.type == LightType::Spot;
         f.has_falloff |= l.falloff != Falloff::None;
     }
+    // The features are whole: the renderer's pipeline builds while the sets' trees do.
+    if (options.on_features) options.on_features(packed.features);
+    pack_element_sets(sets, packed);
+    if (options.element_trees) options.element_trees->prune();  // the sets of earlier scenes let go
     return packed;
 }
 

@@ -4,6 +4,7 @@
 // BVH and direction grids (acceleration_plan), the materials and lights (material_packing); and
 // which optional shader features the scene needs. Pure data conversion, no Vulkan.
 #include <array>
+#include <functional>
 #include <map>
 #include <cstddef>
 #include <span>
@@ -73,6 +74,8 @@ struct PackOptions {
     // When given, an array that would not fit the device is refused (UserError) before it is
     // filled: Bezier leaves multiply a scene's patches by up to 256.
     const DeviceMemoryLimits* limits = nullptr;
+    // Called once the features are known, before the meshes' and sphere sets' trees are built.
+    std::function<void(const ShaderFeatures&)> on_features;
 };
 
 PackedScene pack_scene(const Scene& scene, const PackOptions& options = {});
