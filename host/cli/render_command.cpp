@@ -1,6 +1,7 @@
 // `lancer render`: scene file -> PNG, or an animated scene -> frames (and a video).
 #include <cstdio>
 #include <memory>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -47,7 +48,7 @@ struct RenderCommand {
         std::string output = output_path(options);
         if (has_frame_field(output))
             throw UserError("-o " + output + ": a frame number pattern, but " + options.scene + " has no [animation] table");
-        return render_still(options, scene, output, start);
+        return render_still(options, std::move(scene), output, start);
     }
 };
 

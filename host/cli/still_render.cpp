@@ -14,7 +14,7 @@
 
 namespace lancer {
 
-int render_still(const RenderOptions& options, const Scene& scene, const std::string& output, RendererStart& renderer_start) {
+int render_still(const RenderOptions& options, Scene scene, const std::string& output, RendererStart& renderer_start) {
     check_output_writable(output);
     check_output_is_not_an_input(output, scene_inputs(scene));
     std::unique_ptr<Renderer> renderer = renderer_start.take();
@@ -26,7 +26,7 @@ int render_still(const RenderOptions& options, const Scene& scene, const std::st
     FloatImage image;
     try {
         PhaseLine preparing(options.quiet, "preparing " + output + " (the scene's buffers and trees, the shaders)");
-        image = renderer->render(scene, [&](double f) {
+        image = renderer->render_once(scene, [&](double f) {
             preparing.clear();  // the render's own progress from here
             progress.update(output, f);
             return !interrupts.requested();

@@ -166,18 +166,21 @@ std::string GpuRenderer::description() const {
     return "gpu: " + info.name + " (" + info.type + ", " + info.driver + ")";
 }
 
-gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, bool output_hits) {
+gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t output_bytes, bool output_hits,
+                                              std::uint64_t compile_bytes) {
     const gpu::DeviceMemoryLimits limits = gpu::buffer_memory_limits(*context_);
     // A still's trees are built once: no cache.
     BvhCache* cache = one_still_ ? nullptr : &bvh_cache_;
     ElementTreeCache* trees = one_still_ ? nullptr : &element_trees_;
     // The pipeline builds on another core while the packer builds the meshes' trees.
-    const gpu::PackOptions options{acceleration_, grid_use_, cache, trees, &limits,
-                                   [&](const gpu::ShaderFeatures& f) { start_pipeline(pipeline_features(f, output_hits)); }};
+    gpu::PackOptions options{acceleration_, grid_use_, cache, trees, &limits,
+                             [&](const gpu::ShaderFeatures& f) { start_pipeline(pipeline_features(f, output_hits)); }};
     if (upload_once_) {
+        // Packed once for the whole render: render_once's objects can go as they are packed.
+        options.release_objects = release_objects_;
         gpu::PackedScene packed = gpu::pack_scene(scene, options);
         ++scenes_packed_;
-        admit_packed(scene, packed, output_bytes, limits);
+        admit_packed(scene, packed, output_bytes, limits, compile_bytes);
         const gpu::ShaderFeatures features = pipeline_features(packed.features, output_hits);
         resources_.upload_releasing(packed, gpu::pack_frame(scene, packed));
         return features;
@@ -188,7 +191,7 @@ gpu::ShaderFeatures GpuRenderer::upload_scene(const Scene& scene, std::uint64_t 
         ++scenes_packed_;
     }
     const std::shared_ptr<const gpu::PackedScene>& shared = fresh ? fresh : packed_;
-    admit_packed(scene, *shared, output_bytes, limits);
+    admit_packed(scene, *shared, output_bytes, limits, compile_bytes);
     resources_.upload(shared, gpu::pack_frame(scene, *shared));
     return pipeline_features(shared->features, output_hits);
 }
@@ -202,12 +205,12 @@ gpu::ShaderFeatures GpuRenderer::pipeline_features(gpu::ShaderFeatures f, bool o
 }
 
 void GpuRenderer::admit_packed(const Scene& scene, const gpu::PackedScene& packed, std::uint64_t output_bytes,
-                               const gpu::DeviceMemoryLimits& limits) {
+                               const gpu::DeviceMemoryLimits& limits, std::uint64_t compile_bytes) {
     std::vector<gpu::BufferNeed> needs = gpu::render_buffer_needs(packed, output_bytes, selection_pixels_);
     gpu::check_memory_budget(needs, limits);
     std::uint64_t buffer_bytes = 0;
     for (const gpu::BufferNeed& need : needs) buffer_bytes += need.bytes;
-    gpu::check_render_memory(scene, buffer_bytes);
+    gpu::check_render_memory(scene.render, buffer_bytes, compile_bytes);
     emitters_ = packed.emitters;
     float_notes_ = packed.float_notes;
 }
@@ -236,6 +239,15 @@ void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_p
 }
 
 FloatImage GpuRenderer::render(const Scene& scene, const ProgressFn& progress) { return render_in_steps(scene, progress, {}); }
+
+FloatImage GpuRenderer::render_once(Scene& scene, const ProgressFn& progress) {
+    if (one_still_) release_objects_ = &scene.objects;
+    struct Forget {
+        std::vector<Object>*& objects;
+        ~Forget() { objects = nullptr; }
+    } forget{release_objects_};
+    return render(scene, progress);
+}
 
 FloatImage GpuRenderer::render_in_steps(const Scene& scene, const ProgressFn& progress, const AdaptiveStepFn& step) {
     // A render's photon passes and adaptive steps differ only in what pack_frame writes (the
@@ -336,7 +348,7 @@ gpu::ShaderFeatures GpuRenderer::prepare_band_output(const Scene& scene, bool ou
     gpu::ShaderFiles generated;
     if (std::string code = gpu::surface_functions_glsl(scene, context_->float64()); !code.empty()) generated["surface_functions.glsl"] = code;
     ensure_program(generated, photon_pass >= 0);
-    const gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, output_hits);
+    const gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, output_hits, gpu::compile_memory(scene));
     if (photon_pass >= 0) {
         // The pass's photons and their grid first; the tracer gathers from them. Its pipeline
         // builds on another core meanwhile (the first pass: both pipelines at once).

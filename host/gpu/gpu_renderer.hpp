@@ -46,6 +46,9 @@ public:
     FloatImage render_hits(const Scene& scene) override;
     void prepare(const Scene& scene, const ProgressFn& progress) override;
     void expect_one_still() override { one_still_ = true; }
+    // After expect_one_still, frees the objects once the scene is packed, where it is packed
+    // once for the whole render (no photons, no adaptive steps).
+    FloatImage render_once(Scene& scene, const ProgressFn& progress) override;
     std::vector<std::string> notes() const override;
     bool runs_shaders() const override { return true; }
     void use_shader_directory(const std::string& directory) override;
@@ -96,11 +99,14 @@ public:
 private:
     // Packs the scene within the device's limits and uploads it; returns the pipeline's features
     // (pipeline_features), having started that pipeline's build as soon as the packing knew them.
-    gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes, bool output_hits);
+    // `compile_bytes`: the pipeline's compile, from the objects before they are packed (and
+    // maybe freed: render_once).
+    gpu::ShaderFeatures upload_scene(const Scene& scene, std::uint64_t output_bytes, bool output_hits,
+                                     std::uint64_t compile_bytes);
     // What upload_scene does with a packed scene before its upload: checks that it fits, keeps
     // its notes and emitters.
     void admit_packed(const Scene& scene, const gpu::PackedScene& packed, std::uint64_t output_bytes,
-                      const gpu::DeviceMemoryLimits& limits);
+                      const gpu::DeviceMemoryLimits& limits, std::uint64_t compile_bytes);
     // A packed scene's features with what the device and the render add to them.
     gpu::ShaderFeatures pipeline_features(gpu::ShaderFeatures packed, bool output_hits) const;
     // Makes spirv_ the tracer built from base_tree_ with `generated` in place of the files of
@@ -179,6 +185,7 @@ private:
     BvhCache bvh_cache_;  // frames of an animation with static geometry share one tree
     ElementTreeCache element_trees_;  // each mesh's and sphere set's tree, built once for every frame
     bool one_still_ = false;  // expect_one_still(): no tree cached, and a one-step render's upload frees the host's arrays
+    std::vector<Object>* release_objects_ = nullptr;  // render_once's scene's objects, while it runs
     std::size_t bands_rerendered_ = 0;
     // Within one render_in_steps(): the scene as packed by its first upload, for the others.
     bool packing_once_ = false;

@@ -427,6 +427,33 @@ TEST(BvhReuse, ThePackerGivesTheFeaturesBeforeItBuildsTheSetsTrees) {
     EXPECT_EQ(packed.set_spheres.size(), 2u);
 }
 
+// lancer render's one still: the GPU path frees the scene's objects once it has packed them
+// (render_once) and draws the picture of a renderer that keeps them; it keeps them where it was
+// not told of one still, or packs for more than one step (adaptive anti-aliasing).
+TEST(OneStill, RenderOnceFreesTheObjectsAndDrawsTheSame) {
+    const Scene scene = still_with_a_mesh_and_a_sphere_set();  // placed objects, a mesh and a set
+    const FloatImage kept = GpuRenderer(gpu::ContextOptions{"", true}).render(scene, {});
+
+    GpuRenderer one_still(gpu::ContextOptions{"", true});
+    one_still.expect_one_still();
+    Scene given = scene;
+    EXPECT_TRUE(identical(one_still.render_once(given, {}), kept));
+    EXPECT_TRUE(given.objects.empty());
+    EXPECT_EQ(given.render.width, scene.render.width) << "only the objects go";
+
+    Scene for_frames = scene;
+    EXPECT_TRUE(identical(GpuRenderer(gpu::ContextOptions{"", true}).render_once(for_frames, {}), kept));
+    EXPECT_EQ(for_frames.objects.size(), scene.objects.size());
+
+    Scene adaptive = scene;
+    adaptive.render.aa_threshold = 0.1;
+    GpuRenderer adaptive_still(gpu::ContextOptions{"", true});
+    adaptive_still.expect_one_still();
+    const FloatImage stepped = adaptive_still.render_once(adaptive, {});
+    EXPECT_EQ(adaptive.objects.size(), scene.objects.size());
+    EXPECT_TRUE(identical(stepped, GpuRenderer(gpu::ContextOptions{"", true}).render(adaptive, {})));
+}
+
 // A mesh's and a sphere set's trees are built once for frame after frame (the shared geometry
 // names them), while their placements move; a new geometry gets its own tree, the old one's is let
 // go, and every picture is a fresh renderer's. A renderer for one still keeps none.

@@ -289,7 +289,7 @@ struct PrimitivePacker {
     uint element_set(const void* shared, const Set& set) {
         const auto [found, added] = out.mesh_indices.try_emplace(shared, static_cast<uint>(out.meshes.size()));
         if (added) out.meshes.emplace_back();
-        if (added || !set.part_materials.empty()) sets.placements.push_back({found->second, &set, material, added});
+        if (added || !set.part_materials.empty()) sets.placements.push_back({found->second, set, material, added});
         return found->second;
     }
     // One primitive, p0.x its threshold, p1 and p2 its box (the texture's (u, v) across it), data
@@ -535,7 +535,7 @@ void pack_object(const Shape& shape, uint material, uint object, const SpherePac
 void pack_element_sets(const ElementSets& sets, PackedScene& out) {
     ElementSetPacker packer{out, sets.trees};
     for (const ElementSets::Placement& p : sets.placements)
-        std::visit([&](const auto* set) { packer.place(p.index, *set, p.material, p.first); }, p.set);
+        std::visit([&](const auto& set) { packer.place(p.index, set, p.material, p.first); }, p.set);
 }
 
 std::uint64_t bezier_leaf_count(const Scene& scene) {

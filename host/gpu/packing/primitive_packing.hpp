@@ -26,11 +26,12 @@ SpherePacking sphere_packing(const Scene& scene);
 // The meshes and sphere sets that pack_object met, whose trees and elements pack_element_sets
 // packs once the scene's primitives are planned: a renderer starts its pipeline from the
 // features meanwhile (the bunny's tree takes about as long as the pipeline). Each placement is
-// noted where it is its set's first or takes the file's materials; the pointers are the scene's.
+// noted where it is its set's first or takes the file's materials, with its own copy of the
+// shape (the geometry shared), so that the scene's objects may be freed first (PackOptions).
 struct ElementSets {
     struct Placement {
         uint index;  // in PackedScene::meshes
-        std::variant<const Mesh*, const SphereSet*> set;
+        std::variant<Mesh, SphereSet> set;
         uint material;
         bool first;
     };

@@ -66,6 +66,11 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         pack_emitters(scene, packed);
         packed.photon_count = static_cast<uint>(scene.photons->count);
     }
+    if (options.release_objects) {  // nothing below reads them (the sets have their copies)
+        leaves.clear();
+        std::vector<Object>().swap(*options.release_objects);
+        if (local) std::vector<Object>().swap(local->objects);
+    }
 
     AccelerationPlan plan =
         plan_scene({std::move(primitives), scene.materials, packed.lights, scene.photons.has_value(), packed.object_frames},

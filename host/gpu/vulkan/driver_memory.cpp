@@ -34,14 +34,11 @@ void check_driver_startup_memory() {
     check_memory_headroom(address_space, 140 * kMiB, "the Vulkan driver", kAdvice);
 }
 
-RenderMemoryEstimate render_memory_estimate(const Scene& scene, std::uint64_t scene_buffer_bytes) {
-    // The float image on the host and its copy while it is converted, the scene's buffers (host
-    // visible memory on lavapipe: both host and device), and the pipeline compile: with
-    // expression surfaces, glslang's run-time compile and a larger LLVM compile (the torus needs
+std::uint64_t compile_memory(const Scene& scene) {
+    // The pipeline compile: with expression surfaces, glslang's run-time compile and a larger LLVM compile (the torus needs
     // 400 to 450 MiB of address space in all, against 386 for a scene without them), and about
     // 0.6 MiB more for every operation of a parametric surface (measured: 205 MiB peak resident
     // memory for a one-operation surface, 508 MiB for 511 operations).
-    const std::uint64_t image = std::uint64_t(scene.render.width) * std::uint64_t(scene.render.height) * 16;
     std::uint64_t operations = 0, implicit_operations = 0;
     bool expressions = false;
     for_each_object_and_leaf(scene.objects, [&](const Object& o) {
@@ -65,14 +62,24 @@ RenderMemoryEstimate render_memory_estimate(const Scene& scene, std::uint64_t sc
     // estimate); 5 KiB per operation squared covers both drivers' measured peaks by 10%. The
     // double enclosure adds 1.5 MiB per implicit operation (8 surfaces of 11 operations: 128
     // MiB more than without it, on both drivers).
-    const std::uint64_t compile = (expressions ? 128 : 32) * kMiB + operations * (kMiB * 3 / 4) +
-                                  implicit_operations * (kMiB * 3 / 2) +
-                                  implicit_operations * implicit_operations * (kMiB * 5 / 1024);
-    return {2 * image + 2 * scene_buffer_bytes + compile, 2 * image + scene_buffer_bytes + compile};
+    return (expressions ? 128 : 32) * kMiB + operations * (kMiB * 3 / 4) + implicit_operations * (kMiB * 3 / 2) +
+           implicit_operations * implicit_operations * (kMiB * 5 / 1024);
 }
 
-void check_render_memory(const Scene& scene, std::uint64_t scene_buffer_bytes) {
-    const RenderMemoryEstimate need = render_memory_estimate(scene, scene_buffer_bytes);
+RenderMemoryEstimate render_memory_estimate(const RenderSettings& render, std::uint64_t scene_buffer_bytes,
+                                            std::uint64_t compile_bytes) {
+    // The float image on the host and its copy while it is converted, the scene's buffers (host
+    // visible memory on lavapipe: both host and device), and the pipeline compile.
+    const std::uint64_t image = std::uint64_t(render.width) * std::uint64_t(render.height) * 16;
+    return {2 * image + 2 * scene_buffer_bytes + compile_bytes, 2 * image + scene_buffer_bytes + compile_bytes};
+}
+
+RenderMemoryEstimate render_memory_estimate(const Scene& scene, std::uint64_t scene_buffer_bytes) {
+    return render_memory_estimate(scene.render, scene_buffer_bytes, compile_memory(scene));
+}
+
+void check_render_memory(const RenderSettings& render, std::uint64_t scene_buffer_bytes, std::uint64_t compile_bytes) {
+    const RenderMemoryEstimate need = render_memory_estimate(render, scene_buffer_bytes, compile_bytes);
     check_memory_headroom(need.address_space, need.resident, "this render", kAdvice);
 }
 

@@ -20,9 +20,14 @@ struct RenderMemoryEstimate {
     std::uint64_t resident;
 };
 RenderMemoryEstimate render_memory_estimate(const Scene& scene, std::uint64_t scene_buffer_bytes);
+// The same from its parts: the pipeline's compile (compile_memory) is the objects', which a
+// renderer reads before it packs them (and may free them: Renderer::render_once).
+std::uint64_t compile_memory(const Scene& scene);
+RenderMemoryEstimate render_memory_estimate(const RenderSettings& render, std::uint64_t scene_buffer_bytes,
+                                            std::uint64_t compile_bytes);
 
-// Throws UserError when rendering `scene` (its buffers, the image and the pipeline it needs) does
-// not fit in what is left.
-void check_render_memory(const Scene& scene, std::uint64_t scene_buffer_bytes);
+// Throws UserError when a render of `render`'s size with the scene's buffers and a pipeline
+// compile of `compile_bytes` (compile_memory) does not fit in what is left.
+void check_render_memory(const RenderSettings& render, std::uint64_t scene_buffer_bytes, std::uint64_t compile_bytes);
 
 }  // namespace lancer::gpu
