@@ -14,6 +14,7 @@
 
 #include "cpu/cpu_renderer.hpp"
 #include "gpu/layout.hpp"
+#include "gpu/packing/primitive_packing.hpp"
 #include "gpu/packing/scene_packing.hpp"
 #include "mesh/mesh_geometry.hpp"
 #include "scene/animation.hpp"
@@ -452,6 +453,30 @@ TEST(OneStill, RenderOnceFreesTheObjectsAndDrawsTheSame) {
     const FloatImage stepped = adaptive_still.render_once(adaptive, {});
     EXPECT_EQ(adaptive.objects.size(), scene.objects.size());
     EXPECT_TRUE(identical(stepped, GpuRenderer(gpu::ContextOptions{"", true}).render(adaptive, {})));
+}
+
+// A still of cheap unplaced shapes only is packed from its last object back, each freed as it is
+// packed (pack_scene): the same picture, near the origin and far from it (where the packer
+// works on a rebased copy of the scene).
+TEST(OneStill, CheapShapesArePackedFromTheBackAndDrawTheSame) {
+    for (const double offset : {0.0, 2e5}) {
+        Scene scene = test::scene_from_text(kStill);
+        for (int k = 0; k < 6; ++k) {
+            Object o = scene.objects.back();
+            o.shape = k % 3 == 0 ? Shape(Sphere{dvec3(-1.2 + 0.5 * k, 0.3, 1.5), 0.25})
+                      : k % 3 == 1 ? Shape(Box{dvec3(-1.3 + 0.5 * k, 0.1, 0.8), dvec3(-1.1 + 0.5 * k, 0.4, 1.0)})
+                                   : Shape(Torus{dvec3(-1.2 + 0.5 * k, 0.3, 2.2), dvec3(0, 1, 0), 0.2, 0.05});
+            scene.objects.push_back(o);
+        }
+        scene = test::moved_scene(scene, {offset, 0.0, 0.0});
+        for (const Object& o : scene.objects) ASSERT_TRUE(gpu::packs_alone(o));
+        const FloatImage kept = GpuRenderer(gpu::ContextOptions{"", true}).render(scene, {});
+        GpuRenderer one_still(gpu::ContextOptions{"", true});
+        one_still.expect_one_still();
+        Scene given = scene;
+        EXPECT_TRUE(identical(one_still.render_once(given, {}), kept)) << "offset " << offset;
+        EXPECT_TRUE(given.objects.empty());
+    }
 }
 
 // A mesh's and a sphere set's trees are built once for frame after frame (the shared geometry

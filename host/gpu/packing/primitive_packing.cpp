@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -530,6 +531,15 @@ SpherePacking sphere_packing(const Scene& scene) {
 void pack_object(const Shape& shape, uint material, uint object, const SpherePacking& spheres, PackedScene& out,
                  std::vector<PrimitiveWithBox>& primitives, ElementSets& sets) {
     std::visit(PrimitivePacker{out, primitives, material, object, spheres, sets}, shape);
+}
+
+bool packs_alone(const Object& o) {
+    if (o.placement) return false;
+    return std::visit([](const auto& shape) {
+        using S = std::decay_t<decltype(shape)>;
+        return std::is_same_v<S, Sphere> || std::is_same_v<S, Plane> || std::is_same_v<S, Rectangle> ||
+               std::is_same_v<S, Box> || std::is_same_v<S, Disc> || std::is_same_v<S, Cone> || std::is_same_v<S, Torus>;
+    }, o.shape);
 }
 
 void pack_element_sets(const ElementSets& sets, PackedScene& out) {

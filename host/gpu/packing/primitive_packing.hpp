@@ -44,6 +44,11 @@ struct ElementSets {
 void pack_object(const Shape& shape, uint material, uint object, const SpherePacking& spheres, PackedScene& out,
                  std::vector<PrimitiveWithBox>& primitives, ElementSets& sets);
 
+// Whether pack_object packs `o` alone into one primitive that indexes no array (the cheap shapes,
+// unplaced, outside CSG): a still's objects of that kind can be packed from the last back and
+// freed as they are (pack_scene).
+bool packs_alone(const Object& o);
+
 // The trees, elements and element materials of the sets noted in `sets`, into `out`.
 void pack_element_sets(const ElementSets& sets, PackedScene& out);
 
