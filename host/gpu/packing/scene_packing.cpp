@@ -19,12 +19,16 @@ namespace lancer::gpu {
 
 PackedScene pack_scene(const Scene& world, const PackOptions& options) {
     if (options.limits) check_buffer_need(array_need(SceneArray::PATCHES, bezier_leaf_count(world)), *options.limits);
+    if (options.release_objects && options.release_objects != &world.objects)
+        throw std::logic_error("pack_scene: release_objects must be the scene's own objects");
     PackedScene packed;
     packed.anchor = float_anchor(world.camera);
     packed.float_notes = float_resolution_notes(world, packed.anchor);
     std::optional<Scene> local;
     if (packed.anchor != dvec3(0.0)) local = rebased(world, packed.anchor);
+    if (local && options.release_objects) std::vector<Object>().swap(*options.release_objects);  // the copy is packed
     const Scene& scene = local ? *local : world;
+    std::vector<Object>* const release = options.release_objects ? (local ? &local->objects : options.release_objects) : nullptr;
 
     std::vector<PrimitiveWithBox> primitives;
     primitives.reserve(scene.objects.size());  // most objects are one primitive: no doubling's second array
@@ -40,15 +44,11 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
                 placed |= leaf.placement.has_value();
                 object_space |= leaf.placement && leaf.placement->shape_in_object_space;
             }
-    if (options.release_objects && options.release_objects != &world.objects)
-        throw std::logic_error("pack_scene: release_objects must be the scene's own objects");
-    if (options.release_objects && std::all_of(scene.objects.begin(), scene.objects.end(), packs_alone)) {
+    if (release && std::all_of(scene.objects.begin(), scene.objects.end(), packs_alone)) {
         // Each packed alone into one primitive, from the last back, and freed as it is packed: the
         // objects and their primitives never coexist whole (10^6 spheres: 168 and 114 MiB).
-        if (local) std::vector<Object>().swap(*options.release_objects);  // its rebased copy is packed
-        std::vector<Object>& objects = local ? local->objects : *options.release_objects;
-        drain_from_back(objects, [&](const Object& o) {
-            const auto i = static_cast<uint>(&o - objects.data());
+        drain_from_back(*release, [&](const Object& o) {
+            const auto i = static_cast<uint>(&o - release->data());
             const std::size_t before = primitives.size();
             pack_object(o.shape, o.material, i, spheres, packed, primitives, sets);
             if (primitives.size() != before + 1) throw std::logic_error("pack_scene: an object packed alone made other than one primitive");
@@ -83,10 +83,9 @@ PackedScene pack_scene(const Scene& world, const PackOptions& options) {
         pack_emitters(scene, packed);
         packed.photon_count = static_cast<uint>(scene.photons->count);
     }
-    if (options.release_objects) {  // nothing below reads them (the sets have their copies)
+    if (release) {  // nothing below reads them (the sets have their copies)
         leaves.clear();
-        std::vector<Object>().swap(*options.release_objects);
-        if (local) std::vector<Object>().swap(local->objects);
+        std::vector<Object>().swap(*release);
     }
 
     AccelerationPlan plan =
