@@ -288,6 +288,17 @@ void check_renderers_input(const Scene& accepted, const std::string& when) {
     scene.render.samples = 1;
     scene.render.max_depth = std::min(scene.render.max_depth, 3);
     gpu::PackedScene packed = gpu::pack_scene(scene);
+    // Packed again as lancer render's still is, its objects freed as they are packed (from the
+    // back where each is one cheap shape): the same primitives, byte for byte.
+    Scene given = scene;
+    gpu::PackOptions releasing;
+    releasing.release_objects = &given.objects;
+    const gpu::PackedScene released = gpu::pack_scene(given, releasing);
+    require(given.objects.empty(), when, ": the released objects were kept");
+    require(released.primitives.size() == packed.primitives.size() &&
+                (packed.primitives.empty() ||
+                 std::memcmp(released.primitives.data(), packed.primitives.data(), packed.primitives.size() * sizeof(gpu::Primitive)) == 0),
+            when, ": packing while freeing the objects made other primitives");
     gpu::FrameParams frame = gpu::pack_frame(scene, packed);
     for (const auto& v : {frame.eye, frame.forward, frame.right, frame.up, frame.background, frame.ambient})
         require_finite_floats(v, when, ": frame");
