@@ -351,7 +351,8 @@ gpu::ShaderFeatures GpuRenderer::prepare_band_output(const Scene& scene, bool ou
     const gpu::ShaderFeatures features = upload_scene(scene, rows * row_bytes, output_hits, gpu::compile_memory(scene));
     if (photon_pass >= 0) {
         // The pass's photons and their grid first; the tracer gathers from them. Its pipeline
-        // builds on another core meanwhile (the first pass: both pipelines at once).
+        // builds on another core meanwhile: started where the scene was packed, and here where a
+        // packed scene was reused after the programs changed (a no-op otherwise).
         start_pipeline(features);
         photons_->use_programs(photon_spirv_, gpu::embedded_spirv(gpu::kGridShader));
         photons_->run(scene, photon_pass, features, emitters_, resources_, progress, 0.0);
