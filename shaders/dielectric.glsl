@@ -96,6 +96,8 @@ const uint MAX_SHADOW_CROSSINGS = 16u;
 // bounces mostly meet the same blocker. Which primitive is found first does not change whether
 // the light is blocked, so the picture is the same.
 uvec4 shadow_blockers = uvec4(NO_PRIMITIVE);
+// And the element of a mesh or sphere set that did (shapes/element_tree.glsl's element hints).
+uvec4 shadow_element_blockers = uvec4(NO_PRIMITIVE);
 
 // The fraction of a light's colour that reaches the surface point `from` from the light point q,
 // along a straight shadow ray that starts at `origin` (just off the surface) inside `media`: 0
@@ -119,12 +121,18 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media, uint light) {
         // code, which lavapipe then compiles, even where it is dead.)
         const bool any_hit_blocks = !SCENE_HAS_TRANSPARENCY || SCENE_HAS_PHOTONS;
         bool hinted = SHADOW_HINTS && any_hit_blocks && light < 4u;
+        bool element_hinted = ELEMENT_HINTS && any_hit_blocks && light < 4u;
+        if (element_hinted) {
+            element_hint = shadow_element_blockers[light];
+            element_blocker = NO_PRIMITIVE;
+        }
         // The light's direction grid (point and spot lights: q is the light's position).
         uint grid = any_hit_blocks && DIRECTION_GRID_LIGHT + light < DIRECTION_GRID_COUNT ? DIRECTION_GRID_LIGHT + light : NO_GRID;
         if (!trace_scene(ray, 0.0, dist, any_hit_blocks, hinted ? shadow_blockers[light] : NO_PRIMITIVE, grid, best)) {
             return any_hit_blocks ? through : through * absorption_over(medium, length(q - from));
         }
         if (hinted) shadow_blockers[light] = best.prim;
+        if (element_hinted) shadow_element_blockers[light] = element_blocker;
         if (any_hit_blocks || k == MAX_SHADOW_CROSSINGS) break;
         // A CSG hit filters the light by its leaf's material (uv.x: the leaf's primitive). It goes on
         // along its own line: the leaf's normal would need the leaf intersected again, a second

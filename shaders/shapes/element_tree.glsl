@@ -7,6 +7,17 @@
 // every shape's <name>_intersect, for the one family that can use it.
 bool shadow_ray_any_hit = false;
 
+// Element hints: an any-hit walk first tests the element that blocked the last shadow ray to the
+// same light (dielectric.glsl's transmittance sets element_hint from what element_blocker said
+// then), which saves the walk down the set's tree wherever it still blocks: the samples of a
+// pixel and their bounces mostly meet the same triangle. Which element is found first does not
+// change whether the light is blocked, so the picture is the same. A sphere set's elements carry
+// SPHERE_ELEMENT: the indices of triangles and spheres overlap.
+const bool ELEMENT_HINTS = TRACES_MESH || TRACES_SPHERES;
+const uint SPHERE_ELEMENT = 0x80000000u;
+uint element_hint = NO_PRIMITIVE;
+uint element_blocker = NO_PRIMITIVE;  // the element the last any-hit walk found
+
 const int ELEMENT_STACK_SIZE = 64;  // host/accel/bvh.cpp bounds a tree's depth by 60
 
 // The element tests, each in its shape's file: t in (t_min, t_max), or -1. A triangle's takes the
@@ -24,6 +35,18 @@ uint element_tree_nearest(MeshInfo info, bool spheres, bool any_hit, Ray ray, fl
     ivec3 k = ivec3(0);
     vec3 s = vec3(0.0);
     if (!spheres) shear_axes(ray.dir, k, s);
+    uint tag = spheres ? SPHERE_ELEMENT : 0u;
+    if (ELEMENT_HINTS && any_hit) {
+        uint hint = element_hint ^ tag;
+        if (hint - info.first_element < info.element_count) {
+            float t = spheres ? spheres_element_hit(hint, ray, t_min, best) : mesh_element_hit(hint, ray.origin, k, s, t_min, best);
+            if (t >= 0.0) {
+                best = t;
+                element_blocker = element_hint;
+                return hint;
+            }
+        }
+    }
     uint best_element = NO_PRIMITIVE;
     uint stack[ELEMENT_STACK_SIZE];
     float stack_t[ELEMENT_STACK_SIZE];
@@ -72,7 +95,10 @@ uint element_tree_nearest(MeshInfo info, bool spheres, bool any_hit, Ray ray, fl
             if (t >= 0.0) {
                 best = t;
                 best_element = i;
-                if (any_hit) return i;
+                if (any_hit) {
+                    element_blocker = i | tag;
+                    return i;
+                }
             }
         }
         visit = false;
