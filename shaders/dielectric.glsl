@@ -122,8 +122,8 @@ vec3 transmittance(vec3 from, vec3 origin, vec3 q, Media media, uint light) {
         const bool any_hit_blocks = !SCENE_HAS_TRANSPARENCY || SCENE_HAS_PHOTONS;
         bool hinted = SHADOW_HINTS && any_hit_blocks && light < 4u;
         bool element_hinted = ELEMENT_HINTS && any_hit_blocks && light < 4u;
-        if (element_hinted) {
-            element_hint = shadow_element_blockers[light];
+        if (ELEMENT_HINTS) {
+            element_hint = element_hinted ? shadow_element_blockers[light] : NO_PRIMITIVE;
             element_blocker = NO_PRIMITIVE;
         }
         // The light's direction grid (point and spot lights: q is the light's position).
