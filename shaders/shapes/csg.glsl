@@ -188,7 +188,7 @@ vec2 csg_walk(Primitive node, Primitive leaf, Ray ray, vec2 now, float after, fl
 
 // A convex leaf's inside along the ray: (in, out), empty where in >= out.
 vec2 csg_inside(Primitive leaf, Ray ray) {
-    float t_in, t_out, error;
+    float error;
     vec2 uv;
     if (leaf.type == SHAPE_PLANE) {
         // The half-space behind the normal, in the plane's own coordinates (t is the same there).
@@ -200,10 +200,16 @@ vec2 csg_inside(Primitive leaf, Ray ray) {
         return along > 0.0 ? vec2(-INFINITY, t) : vec2(t, INFINITY);
     }
     // The exit is the reversed ray's entry: no second search from the entry, whose rounding
-    // could find the entry again or step past a close exit.
-    if (!leaf_hit(leaf, ray, -INFINITY, INFINITY, SHAPE_SOLID, t_in, uv, error)) return vec2(INFINITY, -INFINITY);
-    if (!leaf_hit(leaf, Ray(ray.origin, -ray.dir), -INFINITY, INFINITY, SHAPE_SOLID, t_out, uv, error)) return vec2(INFINITY, -INFINITY);
-    return vec2(t_in, -t_out);  // in >= out: a touching ray, no length
+    // could find the entry again or step past a close exit. One call in a loop: lavapipe inlines
+    // each call, and two would double every solid's code in the pipeline.
+    vec2 ends;
+    for (int side = 0; side < 2; ++side) {
+        float t;
+        if (!leaf_hit(leaf, Ray(ray.origin, side == 0 ? ray.dir : -ray.dir), -INFINITY, INFINITY, SHAPE_SOLID, t, uv, error))
+            return vec2(INFINITY, -INFINITY);
+        ends[side] = t;
+    }
+    return vec2(ends.x, -ends.y);  // in >= out: a touching ray, no length
 }
 
 // The program's value with every leaf's inside as just before t (after = false) or after it.
