@@ -207,19 +207,16 @@ bool keep_if_nearer(uint i, Primitive p, float t, vec2 uv, float error, inout Ne
     return true;
 }
 
-// Tests primitive i of a BVH leaf, which is p, and keeps it if it is nearer.
-bool consider_in_leaf(uint i, Primitive p, Ray ray, float t_min, inout Nearest best) {
+// Tests primitive i, which is p, in a BVH leaf or a grid's cell (bounded: its box is known to be
+// entered) or as a shadow hint. A shadow ray's (any_hit): whether p is hit before best.t, which
+// it then becomes (no ties to settle: the first hit ends the search). Any other ray's: whether p
+// is hit nearer than the best hit, or is an equally near, smaller-keyed twin, and then kept. One
+// call of shape_intersect for both: lavapipe inlines each call, with every shape's code.
+bool test_primitive(uint i, Primitive p, Ray ray, float t_min, bool bounded, bool any_hit, inout Nearest best) {
     float t, error;
     vec2 uv;
-    return shape_intersect(p.type, p, ray, t_min, reach(best), true, t, uv, error) && keep_if_nearer(i, p, t, uv, error, best);
-}
-
-// For shadow rays: whether primitive i, which is p, is hit before best.t, which it then
-// becomes. No ties to settle: the first hit ends the search.
-bool blocks(uint i, Primitive p, Ray ray, float t_min, bool bounded, inout Nearest best) {
-    float t, error;
-    vec2 uv;
-    if (!shape_intersect(p.type, p, ray, t_min, best.t, bounded, t, uv, error)) return false;
+    if (!shape_intersect(p.type, p, ray, t_min, any_hit ? best.t : reach(best), bounded, t, uv, error)) return false;
+    if (!any_hit) return keep_if_nearer(i, p, t, uv, error, best);
     best = Nearest(t, i, uv, error);
     return true;
 }
@@ -311,7 +308,7 @@ const bool SHADOW_HINTS = CHEAP_SHAPES && SCENE_HAS_BVH;
 bool lean_unbounded_hit(Ray ray, float t_min, uint hint, inout Nearest best) {
     if (SHADOW_HINTS && hint != NO_PRIMITIVE) {
         Primitive p = primitive_at(hint);
-        if (blocks(hint, p, ray, t_min, false, best)) return true;
+        if (test_primitive(hint, p, ray, t_min, false, true, best)) return true;
     }
     LANCER_SHAPES(LANCER_FAMILY_LOOP)
     return false;
@@ -342,7 +339,7 @@ bool grid_hit(DirectionGrid g, Ray ray, float t_min, bool any_hit, inout Nearest
         if (uintBitsToFloat(grid_entry_at(2u * e + 1u)) > (any_hit ? start : start + reach(best))) break;
         uint i = grid_entry_at(2u * e);
         Primitive p = primitive_at(i);
-        if (any_hit ? blocks(i, p, ray, t_min, true, best) : consider_in_leaf(i, p, ray, t_min, best) && any_hit) return true;
+        if (test_primitive(i, p, ray, t_min, true, any_hit, best) && any_hit) return true;
     }
     return best.prim != NO_PRIMITIVE;
 }
@@ -446,8 +443,8 @@ bool trace_scene(Ray ray, float t_min, float t_max, bool any_hit, uint hint, uin
         for (uint i = n.first; i < n.first + n.count; ++i) {
             Primitive p = primitive_at(i);
             if (CHEAP_SHAPES) {
-                if (any_hit ? blocks(i, p, ray, t_min, true, best) : consider_in_leaf(i, p, ray, t_min, best) && any_hit) return true;
-            } else if (consider_in_leaf(i, p, ray, t_min, best) && any_hit) {
+                if (test_primitive(i, p, ray, t_min, true, any_hit, best) && any_hit) return true;
+            } else if (test_primitive(i, p, ray, t_min, true, false, best) && any_hit) {
                 return true;
             }
         }
