@@ -51,14 +51,27 @@ struct Scatter {
     vec3 refracted_dir, refracted_weight;
 };
 
-// A Phong (or Blinn-Phong) surface hit by b at p (normal n toward the ray), with `beyond` the
-// media past it: adds its local light (and photon mapping's gather) to `color`, and says what
-// it sends on. The twin of Tracer::phong_hit.
-void phong_hit(Material m, Hit hit, vec3 p, vec3 n, Branch b, Media beyond, bool clear, bool sheet, uint seed,
-               inout vec3 color, inout float rays, out Scatter s) {
-    Appearance look = appearance_at(m, hit, p, n);
+// A hit's local light, whichever the model: ambient + what each light sample that the point sees
+// adds (shade.glsl's shade_local), times `scale`, what it is multiplied by on its way to the
+// pixel. One call for both models: lavapipe inlines each call, with its shadow rays' whole
+// intersection code. look: a Phong surface's appearance (its pigment and shading normal); for a
+// microfacet material the geometric normal n, and `indices` its interface's (n1, n2).
+vec3 local_light(Material m, Appearance look, vec2 indices, Hit hit, vec3 p, vec3 n, Branch b, uint seed_d, inout float rays) {
     vec3 scale = b.weight * (1.0 - m.reflection);
-    color += scale * shade_local(m, look.pigment, p, n, hit.error, look.normal, b.ray.dir, b.media, hash_u32(seed + b.depth), scale, rays);
+    vec3 pigment = look.pigment;
+    if (SCENE_HAS_MICROFACET && m.model != MODEL_PHONG) {
+        scale = b.weight;
+        pigment = vec3(indices, 0.0);
+    }
+    return scale * shade_local(m, pigment, p, n, hit.error, look.normal, b.ray.dir, b.media, seed_d, scale, rays);
+}
+
+// A Phong (or Blinn-Phong) surface hit by b at p (normal n toward the ray), of appearance `look`,
+// with `beyond` the media past it, its local light added: adds photon mapping's gather to
+// `color`, and says what it sends on. The twin of Tracer::phong_hit.
+void phong_hit(Material m, Appearance look, vec3 p, vec3 n, Branch b, Media beyond, bool clear, bool sheet, inout vec3 color,
+               out Scatter s) {
+    vec3 scale = b.weight * (1.0 - m.reflection);
     // Photon mapping: caustics and indirect light, the diffuse BRDF k_d C' / pi times the
     // irradiance the photons estimate.
     if (SCENE_HAS_PHOTONS && m.phong.y > 0.0)
@@ -84,14 +97,10 @@ void phong_hit(Material m, Hit hit, vec3 p, vec3 n, Branch b, Media beyond, bool
     s.reflected_dir = bounce_direction(b.ray.dir, look.normal, n);
 }
 
-// A metal or a glass of microfacets (microfacet_material.glsl): its direct light by the BRDF,
-// and the rays it sends on, drawn from its lobes. The twin of Tracer::microfacet_hit.
-void microfacet_hit(Material m, Hit hit, vec3 p, vec3 n, Branch b, Media beyond, bool sheet, uint seed, inout vec3 color,
-                    inout float rays, out Scatter s) {
-    float n1 = medium_ior(innermost(b.media));
-    float n2 = sheet ? m.transmission.w : medium_ior(innermost(beyond));
-    uint seed_d = hash_u32(seed + b.depth);
-    color += b.weight * shade_local(m, vec3(n1, n2, 0.0), p, n, hit.error, n, b.ray.dir, b.media, seed_d, b.weight, rays);
+// A metal or a glass of microfacets (microfacet_material.glsl) between media of indices (n1, n2),
+// its local light added: the rays it sends on, drawn from its lobes. The twin of
+// Tracer::microfacet_hit.
+void microfacet_hit(Material m, vec3 n, Branch b, vec2 indices, bool sheet, uint seed_d, out Scatter s) {
     vec3 u = surface_sample_numbers(seed_d);
     s.refracted_weight = vec3(0.0);
     s.refracted_dir = b.ray.dir;
@@ -103,7 +112,7 @@ void microfacet_hit(Material m, Hit hit, vec3 p, vec3 n, Branch b, Media beyond,
     }
     // A thin sheet has no inside to bend into: it reflects and transmits as a smooth one.
     Scattered mirrored, refracted;
-    sample_glass(m, sheet ? 0.0 : material_alpha(m), n, -b.ray.dir, n1, n2, u, mirrored, refracted);
+    sample_glass(m, sheet ? 0.0 : material_alpha(m), n, -b.ray.dir, indices.x, indices.y, u, mirrored, refracted);
     s.reflected_dir = mirrored.dir;
     s.reflected_weight = b.weight * mirrored.weight;
     s.refracted_weight = b.weight * refracted.weight;
@@ -155,8 +164,18 @@ vec3 trace(Ray ray, uint seed, inout float rays) {
                 goes_on = ++passes <= MAX_PASS_THROUGH;
             } else {
                 Scatter s;
-                if (SCENE_HAS_MICROFACET && m.model != MODEL_PHONG) microfacet_hit(m, hit, p, n, b, beyond, sheet, seed, color, rays, s);
-                else phong_hit(m, hit, p, n, b, beyond, clear, sheet, seed, color, rays, s);
+                // (The model's test written out at each branch, not kept in a variable: the host's
+                // dead-branch pass folds it only so, where the scene has no microfacet material.)
+                Appearance look = Appearance(vec3(0.0), n);
+                vec2 indices = vec2(0.0);
+                if (SCENE_HAS_MICROFACET && m.model != MODEL_PHONG)
+                    indices = vec2(medium_ior(innermost(b.media)), sheet ? m.transmission.w : medium_ior(innermost(beyond)));
+                else
+                    look = appearance_at(m, hit, p, n);
+                uint seed_d = hash_u32(seed + b.depth);
+                color += local_light(m, look, indices, hit, p, n, b, seed_d, rays);
+                if (SCENE_HAS_MICROFACET && m.model != MODEL_PHONG) microfacet_hit(m, n, b, indices, sheet, seed_d, s);
+                else phong_hit(m, look, p, n, b, beyond, clear, sheet, color, s);
                 // Past max_depth the children contribute black (POV-Ray's max_trace_level rule).
                 bool reflects = b.depth < frame.max_depth && max3(s.reflected_weight) >= MIN_WEIGHT;
                 bool refracts = b.depth < frame.max_depth && max3(s.refracted_weight) >= MIN_WEIGHT;
