@@ -149,15 +149,19 @@ check_twin() {  # twin scene converter-options...
   fi
   echo "$twin"
 }
+scene_file() {  # name: a shipped scene, or one kept in bench/
+  if [ -f "scenes/$1.toml" ]; then echo "scenes/$1.toml"; else echo "bench/$1.toml"; fi
+}
 pov_twin() {  # name variant
   local twin=bench/pov/$1.pov
   [ "$1" = torus ] && twin=bench/pov/torus-$2.pov
-  check_twin "$twin" "scenes/$1.toml" --torus-as "$2"
+  check_twin "$twin" "$(scene_file "$1")" --torus-as "$2"
 }
 
 bench_scene() {  # scene width height cpu_width cpu_height [pov_variant]
   local name=$1 w=$2 h=$3 cw=$4 ch=$5 variant=${6:-parametric}
-  local toml=scenes/$name.toml pov
+  local toml pov
+  toml=$(scene_file "$name")
   pov=$(pov_twin "$name" "$variant")
   build/lancer render "$toml" --width 64 --height 36 -q -o "$out/warm.png"  # warm-up: Mesa's shader cache
   povray +I"$pov" +O"$out/warm.png" +W64 +H36 -D +FN >/dev/null 2>&1 || true
@@ -275,6 +279,8 @@ if [ "$suite" = all ] || [ "$suite" = classic ]; then
   bench_scene many 1280 720 1280 720
   bench_scene teapot 1280 720 320 180
   bench_scene torus 1280 720 320 180 analytic
+  # The same torus as lancer's exact `torus` shape, against POV-Ray's `torus` (bench/torus_shape.toml).
+  bench_scene torus_shape 1280 720 1280 720
   # POV-Ray's parametric (Lipschitz subdivision) needs minutes for even a small torus image.
   bench_scene torus 160 90 160 90 parametric
 fi

@@ -111,7 +111,9 @@ vec2 clip_interval(vec4 net[16], vec2 line, bool along_u, float eps) {
 // piece within eps (in homogeneous units: eps / w in space) of the ray, so that again keeps the
 // intersector from finding the piece it leaves from a new origin. Plus the rounding of the
 // re-origined ray and of the hit point.
-bool bezier_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit, out float error) {
+// With any_root, the first root found in (t_min, t_max) ends the search: a shadow ray is blocked
+// by any, and need not find the nearest.
+bool bezier_search(Primitive prim, Ray ray, float t_min, float t_max, bool any_root, out float t_hit, out vec2 uv_hit, out float error) {
     uint leaf = prim.data;
     vec3 o = ray.origin - patch_leaf_at(leaf).origin.xyz;  // re-origin: small numbers near the patch
     vec3 d = ray.dir;
@@ -167,6 +169,7 @@ bool bezier_intersect(Primitive prim, Ray ray, float t_min, float t_max, out flo
                 best_error = (thi - tlo) + (eps + rounding_bound(48.0, extent)) / wlo;
                 uv_hit = vec2(0.5 * (box.x + box.y), 0.5 * (box.z + box.w));
                 found = true;
+                if (any_root) sp = 0;
             }
             done = true;
         }
@@ -224,6 +227,11 @@ bool bezier_intersect(Primitive prim, Ray ray, float t_min, float t_max, out flo
     t_hit = best;
     error = best_error + rounding_bound(16.0, max_abs(ray.origin) + max_abs(patch_leaf_at(leaf).origin.xyz) + best);
     return true;
+}
+
+// A leaf's nearest root, or for a shadow ray (element_tree.glsl's shadow_ray_any_hit) any root.
+bool bezier_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit, out float error) {
+    return bezier_search(prim, ray, t_min, t_max, shadow_ray_any_hit, t_hit, uv_hit, error);
 }
 
 // S, dS/du, dS/dv of the leaf at its own (u, v), relative to its origin (rational-correct).

@@ -38,12 +38,13 @@ const bool CSG_MAY_WALK = (CSG_LEAF_SHAPES & CSG_WALKABLE) != 0u;
 bool csg_walked(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & (SHAPE_CLOSED | SHAPE_ORIENTED)) != 0u; }
 bool csg_crossed(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & SHAPE_ORIENTED) != 0u; }
 
-// A piece (parametric cell, Bezier sub-patch) of a surface leaf: its hit in (t_min, t_max).
+// A piece (parametric cell, Bezier sub-patch) of a surface leaf: its nearest hit in (t_min, t_max),
+// for shadow rays too (CSG needs every crossing in order).
 bool csg_piece_hit(Primitive q, Ray ray, float t_min, float t_max, out float t, out vec2 uv, out float error) {
     error = 0.0;
     uv = vec2(0.0);
-    if (CSG_HAS_PARAMETRIC && q.type == SHAPE_PARAMETRIC) return parametric_intersect(q, ray, t_min, t_max, t, uv, error);
-    if (CSG_HAS_BEZIER && q.type == SHAPE_BEZIER) return bezier_intersect(q, ray, t_min, t_max, t, uv, error);
+    if (CSG_HAS_PARAMETRIC && q.type == SHAPE_PARAMETRIC) return parametric_search(q, ray, t_min, t_max, false, t, uv, error);
+    if (CSG_HAS_BEZIER && q.type == SHAPE_BEZIER) return bezier_search(q, ray, t_min, t_max, false, t, uv, error);
     return false;
 }
 

@@ -62,7 +62,8 @@ vec4 parametric_box(vec4 cell, int level, uint code) {
 
 mat2 parametric_abs(mat2 m) { return mat2(abs(m[0]), abs(m[1])); }
 
-bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit, inout float error) {
+// With any_root, the first root found in (t_min, t_max) ends the search (a shadow ray's).
+bool parametric_search(Primitive prim, Ray ray, float t_min, float t_max, bool any_root, out float t_hit, out vec2 uv_hit, inout float error) {
     // The cell's own proved box first (p0, p1): a BVH leaf holds several cells, and a slab test
     // costs far less than the search.
     if (box_entry(prim.p0.xyz, prim.p1.xyz, ray.origin, safe_inverse(ray.dir), t_max) == INFINITY) return false;
@@ -228,6 +229,7 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
                     found = true;
                 }
             }
+            if (found && any_root) break;
             // In a box that may hold two roots (a ray tangent to the surface there, within the
             // last level's size), the first root found may be the farther: Newton's method runs
             // again, deflated, from across the box, for the other; the nearer is kept.
@@ -260,6 +262,11 @@ bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out
     t_hit = t_shift + best;
     uv_hit = best_uv;
     return true;
+}
+
+// A cell's nearest root, or for a shadow ray (element_tree.glsl's shadow_ray_any_hit) any root.
+bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit, inout float error) {
+    return parametric_search(prim, ray, t_min, t_max, shadow_ray_any_hit, t_hit, uv_hit, error);
 }
 
 // The error bound of a parametric surface's hit (Hit.error): how far the hit point
@@ -313,6 +320,9 @@ vec2 parametric_texture_uv(Primitive prim, Hit hit, vec3 p) {
 #else
 // No parametric surface in the scene: the family's functions exist for the shape table's
 // dispatch, which SCENE_HAS_PARAMETRIC (false) leaves out.
+bool parametric_search(Primitive prim, Ray ray, float t_min, float t_max, bool any_root, out float t_hit, out vec2 uv_hit, inout float error) {
+    return false;
+}
 bool parametric_intersect(Primitive prim, Ray ray, float t_min, float t_max, out float t_hit, out vec2 uv_hit, inout float error) {
     return false;
 }
