@@ -3,8 +3,10 @@
 // file's coordinates. Twin of host/cpu/shapes/element_walk.hpp (which walks its own tree).
 
 // Whether any hit will do for the ray traced now (scene.glsl's trace_scene sets it for shadow
-// rays): a set's walk then stops at the first element it finds. A global, not a parameter of
-// every shape's <name>_intersect, for the one family that can use it.
+// rays): a set's walk then stops at the first element it finds, and a Bezier or parametric
+// search at its first root. A global, not a parameter of every shape's <name>_intersect, for the
+// few families that can use it (CSG, which needs the nearest crossings, calls their searches
+// with false).
 bool shadow_ray_any_hit = false;
 
 // Element hints: an any-hit walk first tests the element that blocked the last shadow ray to the
