@@ -72,7 +72,8 @@ int main(int argc, char** argv) {
     const gpu::Buffer& output = resources.output(sizeof(gpu::vec4));
     std::printf("pack, upload      %s\n", t.elapsed().c_str());
 
-    std::vector<std::uint32_t> spirv = gpu::embedded_trace_spirv();
+    // The embedded tracer lancer would choose for the scene's shapes.
+    std::vector<std::uint32_t> spirv = gpu::embedded_spirv(gpu::kTraceShader, packed.features);
     if (argc > 2) {
         std::ifstream in(argv[2], std::ios::binary);
         std::vector<char> bytes((std::istreambuf_iterator<char>(in)), {});

@@ -63,6 +63,16 @@ LANCER_RESOURCES(LANCER_DECLARE)
 #define LANCER_DECLARE_FEATURE(NAME, id, type, member, fallback) layout(constant_id = id) const type NAME = fallback;
 LANCER_FEATURES(LANCER_DECLARE_FEATURE)
 
+// The shape types this module can trace: all of them, or (LANCER_BUILT_SHAPES, a module built
+// beside the whole tracer) fewer, for scenes of those types alone. Every test of a shape set
+// below masks with it; glslang folds the mask, and SPIRV-Tools removes what a zero mask leaves
+// dead (host/gpu/shaders/spirv_prune.cpp).
+#ifndef LANCER_BUILT_SHAPES
+#define LANCER_BUILT_SHAPES 0xffffffffu
+#endif
+const uint BUILT_SHAPES = LANCER_BUILT_SHAPES;
+#define BUILT_BIT(type) (BUILT_SHAPES & (1u << (type)))
+
 // Each shape type's flags, from the sets above: SCENE_HAS_<NAME> (the scene has the shape),
 // <NAME>_BOXED and <NAME>_SPLIT (its family outside the BVH has a box, or one per half),
 // CSG_HAS_<NAME> (some CSG leaf is one: only those families' tests are compiled into the walk),
@@ -70,11 +80,11 @@ LANCER_FEATURES(LANCER_DECLARE_FEATURE)
 // primitives' intersection, which lavapipe runs masked for every primitive, are compiled in).
 // Specialisation-constant expressions: the host folds them with the constants.
 #define LANCER_DECLARE_SHAPE_FLAGS(NAME, name, Type, type, traits)       \
-    const bool SCENE_HAS_##NAME = (SCENE_SHAPES & (1u << SHAPE_##NAME)) != 0u; \
-    const bool TRACES_##NAME = ((SCENE_SHAPES & ~LEAF_ONLY_SHAPES) & (1u << SHAPE_##NAME)) != 0u; \
-    const bool NAME##_BOXED = (BOXED_FAMILIES & (1u << SHAPE_##NAME)) != 0u;   \
-    const bool NAME##_SPLIT = (SPLIT_FAMILIES & (1u << SHAPE_##NAME)) != 0u;   \
-    const bool CSG_HAS_##NAME = (CSG_LEAF_SHAPES & (1u << SHAPE_##NAME)) != 0u;
+    const bool SCENE_HAS_##NAME = (SCENE_SHAPES & BUILT_BIT(SHAPE_##NAME)) != 0u; \
+    const bool TRACES_##NAME = ((SCENE_SHAPES & ~LEAF_ONLY_SHAPES) & BUILT_BIT(SHAPE_##NAME)) != 0u; \
+    const bool NAME##_BOXED = (BOXED_FAMILIES & BUILT_BIT(SHAPE_##NAME)) != 0u;   \
+    const bool NAME##_SPLIT = (SPLIT_FAMILIES & BUILT_BIT(SHAPE_##NAME)) != 0u;   \
+    const bool CSG_HAS_##NAME = (CSG_LEAF_SHAPES & BUILT_BIT(SHAPE_##NAME)) != 0u;
 LANCER_SHAPES(LANCER_DECLARE_SHAPE_FLAGS)
 
 #endif

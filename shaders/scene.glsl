@@ -290,7 +290,7 @@ bool unbounded_hit(Ray ray, float t_min, bool any_hit, inout Nearest best) {
 // (docs/performance.md).
 #define LANCER_COSTLY_BIT(NAME, name, Type, type, traits) | ((((traits) & SHAPE_CHEAP) != 0u) ? 0u : (1u << SHAPE_##NAME))
 const uint COSTLY_SHAPES = 0u LANCER_SHAPES(LANCER_COSTLY_BIT);
-const bool CHEAP_SHAPES = (SCENE_SHAPES & COSTLY_SHAPES) == 0u;
+const bool CHEAP_SHAPES = (SCENE_SHAPES & (COSTLY_SHAPES & BUILT_SHAPES)) == 0u;
 
 // Shadow hints: a shadow ray first tests the primitive that blocked the last shadow ray to the
 // same light (dielectric.glsl's shadow_blockers), which saves the BVH traversal wherever it still

@@ -148,11 +148,17 @@ void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated, bool photons
     if (photons && photon_spirv_.empty()) photon_spirv_ = build(gpu::kPhotonShader);
 }
 
+std::vector<std::uint32_t> GpuRenderer::program(const char* entry, const std::vector<std::uint32_t>& spirv,
+                                                const gpu::ShaderFeatures& features) const {
+    // A scene of fewer shape types starts from the embedded build for them alone.
+    return generated_.empty() && base_is_embedded_ ? gpu::embedded_spirv(entry, features) : spirv;
+}
+
 gpu::PipelineBuild& GpuRenderer::start_pipeline(const gpu::ShaderFeatures& features) {
     auto& slot = pipelines_[features];
     if (!slot)
-        slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, spirv_, features,
-                                                    gpu::spirv_cleanup_for(features));
+        slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, program(gpu::kTraceShader, spirv_, features),
+                                                    features, gpu::spirv_cleanup_for(features));
     return *slot;
 }
 
@@ -354,7 +360,8 @@ gpu::ShaderFeatures GpuRenderer::prepare_band_output(const Scene& scene, bool ou
         // builds on another core meanwhile: started where the scene was packed, and here where a
         // packed scene was reused after the programs changed (a no-op otherwise).
         start_pipeline(features);
-        photons_->use_programs(photon_spirv_, gpu::embedded_spirv(gpu::kGridShader));
+        photons_->use_programs(program(gpu::kPhotonShader, photon_spirv_, features),
+                               gpu::embedded_spirv(gpu::kGridShader));
         photons_->run(scene, photon_pass, features, emitters_, resources_, progress, 0.0);
     }
     select_pipeline(features, progress);

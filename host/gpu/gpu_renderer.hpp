@@ -116,6 +116,10 @@ private:
     // Makes pipeline_ the one for `features`, building it first if needed (on a thread of its
     // own: `progress` can cancel the wait, RenderCancelled, and the build goes on for later).
     void select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress);
+    // `spirv`, the program ensure_program made for `entry`, or where that is the embedded one,
+    // the embedded build that serves `features` (gpu::embedded_spirv).
+    std::vector<std::uint32_t> program(const char* entry, const std::vector<std::uint32_t>& spirv,
+                                       const gpu::ShaderFeatures& features) const;
     // Starts building the pipeline for `features` on its own thread where none is built or
     // building, for select_pipeline to pick up: the photon pass runs meanwhile.
     gpu::PipelineBuild& start_pipeline(const gpu::ShaderFeatures& features);

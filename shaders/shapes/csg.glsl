@@ -34,7 +34,7 @@ float csg_walked_root_error = 0.0;
 #define LANCER_WALKABLE_BIT(NAME, name, Type, type, traits) | ((((traits) & (SHAPE_CLOSED | SHAPE_ORIENTED)) != 0u) ? 1u << (type) : 0u)
 const uint CSG_WALKABLE = 0u LANCER_SHAPES(LANCER_WALKABLE_BIT);
 #undef LANCER_WALKABLE_BIT
-const bool CSG_MAY_WALK = (CSG_LEAF_SHAPES & CSG_WALKABLE) != 0u;
+const bool CSG_MAY_WALK = (CSG_LEAF_SHAPES & (CSG_WALKABLE & BUILT_SHAPES)) != 0u;
 bool csg_walked(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & (SHAPE_CLOSED | SHAPE_ORIENTED)) != 0u; }
 bool csg_crossed(Primitive leaf) { return CSG_MAY_WALK && (shape_traits(leaf.type) & SHAPE_ORIENTED) != 0u; }
 

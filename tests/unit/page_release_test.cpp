@@ -64,7 +64,9 @@ TEST(Drain, FromTheBackVisitsEachElementThenDestroysItAndGivesItsPagesBack) {
         EXPECT_EQ(token.use_count(), 1);
         EXPECT_TRUE(from.empty());
         EXPECT_EQ(from.capacity(), 0u);
-        if (n > 4 * kStep) EXPECT_GT(checked_pages, 0u);
+        if (n > 4 * kStep) {
+            EXPECT_GT(checked_pages, 0u);
+        }
     }
 }
 

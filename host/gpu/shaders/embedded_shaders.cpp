@@ -3,15 +3,46 @@
 #include <iterator>
 #include <stdexcept>
 
-// generated: const uint32_t lancer_ENTRY_spv[] (see host/CMakeLists.txt)
+// generated: const uint32_t lancer_ENTRY_spv[], and lancer_ENTRY_SET_spv[] for the entries built
+// again for a shape set of shapes.h (see host/CMakeLists.txt)
 #include "photon_grid.spv.h"
 #include "photons.spv.h"
+#include "photons_cheap.spv.h"
+#include "photons_common.spv.h"
 #include "refine_select.spv.h"
 #include "trace.spv.h"
+#include "trace_cheap.spv.h"
+#include "trace_common.spv.h"
 
 namespace lancer::gpu {
 
+namespace {
+
+struct ModuleForShapes {
+    const char* entry;
+    std::uint32_t shape_types;
+    std::vector<std::uint32_t> (*words)();
+};
+
+#define LANCER_WORDS(array) [] { return std::vector<std::uint32_t>(std::begin(array), std::end(array)); }
+// Smallest first, for each entry.
+const ModuleForShapes kModulesForShapes[] = {
+    {kTraceShader, CHEAP_SHAPE_TYPES, LANCER_WORDS(lancer_trace_cheap_spv)},
+    {kTraceShader, COMMON_SHAPE_TYPES, LANCER_WORDS(lancer_trace_common_spv)},
+    {kPhotonShader, CHEAP_SHAPE_TYPES, LANCER_WORDS(lancer_photons_cheap_spv)},
+    {kPhotonShader, COMMON_SHAPE_TYPES, LANCER_WORDS(lancer_photons_common_spv)},
+};
+#undef LANCER_WORDS
+
+}  // namespace
+
 std::vector<std::uint32_t> embedded_trace_spirv() { return embedded_spirv(kTraceShader); }
+
+bool traces_only(const ShaderFeatures& features, std::uint32_t shape_types) {
+    const std::uint32_t used =
+        features.scene_shapes | features.boxed_families | features.split_families | features.csg_leaf_shapes;
+    return (used & ~shape_types) == 0;
+}
 
 std::vector<std::uint32_t> embedded_spirv(const std::string& entry) {
     if (entry == kTraceShader) return {std::begin(lancer_trace_spv), std::end(lancer_trace_spv)};
@@ -19,6 +50,12 @@ std::vector<std::uint32_t> embedded_spirv(const std::string& entry) {
     if (entry == kGridShader) return {std::begin(lancer_photon_grid_spv), std::end(lancer_photon_grid_spv)};
     if (entry == kSelectShader) return {std::begin(lancer_refine_select_spv), std::end(lancer_refine_select_spv)};
     throw std::logic_error("embedded_spirv: no shader " + entry);
+}
+
+std::vector<std::uint32_t> embedded_spirv(const std::string& entry, const ShaderFeatures& features) {
+    for (const ModuleForShapes& module : kModulesForShapes)
+        if (entry == module.entry && traces_only(features, module.shape_types)) return module.words();
+    return embedded_spirv(entry);
 }
 
 ShaderTree embedded_tree() {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gpu/layout.hpp"
 #include "gpu/shaders/shader_compiler.hpp"
 
 namespace lancer::gpu {
@@ -21,6 +22,13 @@ inline constexpr const char* kSelectShader = "refine_select.comp";
 std::vector<std::uint32_t> embedded_trace_spirv();
 // The SPIR-V of one of the entry points above.
 std::vector<std::uint32_t> embedded_spirv(const std::string& entry);
+// Whether a module built for `shape_types` alone (shapes.h's sets) serves a scene of `features`:
+// every shape set of the features within them.
+bool traces_only(const ShaderFeatures& features, std::uint32_t shape_types);
+// The smallest embedded build of `entry` (the tracer, the photon pass) that serves `features`:
+// the same program, once specialised, as the whole one, from 40-52% of the words for scenes of
+// cheap or common shapes alone.
+std::vector<std::uint32_t> embedded_spirv(const std::string& entry, const ShaderFeatures& features);
 
 // Every file of shaders/ by its name relative to that directory.
 const std::map<std::string, std::string>& embedded_shader_files();
