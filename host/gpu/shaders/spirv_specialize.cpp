@@ -27,36 +27,10 @@ const std::vector<std::string> kLocalVariablePasses = {
     "--copy-propagate-arrays", "--reduce-load-size", "--eliminate-dead-code-aggressive", "--merge-blocks",
     "--redundancy-elimination", "--eliminate-dead-branches", "--merge-blocks"};
 
-// Dead branches, code and functions removed and blocks merged, `rounds` times: merging the blocks
-// a round left behind exposes more dead branches.
-void register_dead_code_rounds(spvtools::Optimizer& optimizer, int rounds) {
-    for (int round = 0; round < rounds; ++round)
-        optimizer.RegisterPass(spvtools::CreateDeadBranchElimPass())
-            .RegisterPass(spvtools::CreateAggressiveDCEPass())
-            .RegisterPass(spvtools::CreateEliminateDeadFunctionsPass())
-            .RegisterPass(spvtools::CreateBlockMergePass());
-}
-
-// More rounds until one removes nothing: two leave dead code in some modules (the photon pass of
-// a scene without meshes kept the meshes' code).
-std::vector<std::uint32_t> remove_dead_code_to_the_end(std::vector<std::uint32_t> module) {
-    for (int extra = 0; extra < 8; ++extra) {
-        spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_2);
-        optimizer.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
-        register_dead_code_rounds(optimizer, 1);
-        spvtools::OptimizerOptions options;
-        options.set_run_validator(false);
-        std::vector<std::uint32_t> out;
-        if (!optimizer.Run(module.data(), module.size(), &out, options) || out.size() >= module.size()) break;
-        module = std::move(out);
-    }
-    return module;
-}
-
 }  // namespace
 
 std::string spirv_recipe(SpirvCleanup cleanup) {
-    std::string recipe = "specialise; (dead branches, dead code, dead functions, merge blocks) until nothing goes";
+    std::string recipe = "specialise; 2 x (dead branches, dead code, dead functions, merge blocks)";
     if (cleanup == SpirvCleanup::local_variables)
         for (const std::string& flag : kLocalVariablePasses) recipe += " " + flag;
     return recipe;
@@ -80,22 +54,20 @@ std::vector<std::uint32_t> specialize_spirv(const std::vector<std::uint32_t>& sp
     optimizer.RegisterPass(spvtools::CreateSetSpecConstantDefaultValuePass(values))
         .RegisterPass(spvtools::CreateFreezeSpecConstantValuePass())
         .RegisterPass(spvtools::CreateFoldSpecConstantOpAndCompositePass());
-    register_dead_code_rounds(optimizer, 2);
+    // Two rounds: merging the blocks a first round left behind exposes more dead branches.
+    for (int round = 0; round < 2; ++round)
+        optimizer.RegisterPass(spvtools::CreateDeadBranchElimPass())
+            .RegisterPass(spvtools::CreateAggressiveDCEPass())
+            .RegisterPass(spvtools::CreateEliminateDeadFunctionsPass())
+            .RegisterPass(spvtools::CreateBlockMergePass());
+    if (cleanup == SpirvCleanup::local_variables && !optimizer.RegisterPassesFromFlags(kLocalVariablePasses))
+        return spirv;
     // The module comes from glslang, and the driver (and the validation layer) check the result:
     // validating it here too would cost as much as the passes.
     spvtools::OptimizerOptions options;
     options.set_run_validator(false);
     std::vector<std::uint32_t> out;
     if (!optimizer.Run(spirv.data(), spirv.size(), &out, options)) return spirv;
-    out = remove_dead_code_to_the_end(std::move(out));
-    if (cleanup == SpirvCleanup::local_variables) {
-        spvtools::Optimizer locals(SPV_ENV_VULKAN_1_2);
-        locals.SetMessageConsumer([](spv_message_level_t, const char*, const spv_position_t&, const char*) {});
-        std::vector<std::uint32_t> cleaned;
-        if (!locals.RegisterPassesFromFlags(kLocalVariablePasses) || !locals.Run(out.data(), out.size(), &cleaned, options))
-            return specialize_spirv(spirv, features, SpirvCleanup::dead_code);
-        out = std::move(cleaned);
-    }
     // The longer recipe is checked: an optimizer bug must cost start-up time, not a driver crash.
     if (cleanup != SpirvCleanup::dead_code) {
         spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_2);
