@@ -15,6 +15,7 @@
 #include "gpu/packing/scene_packing.hpp"
 #include "gpu/shaders/embedded_shaders.hpp"
 #include "gpu/shaders/shader_compiler.hpp"
+#include "gpu/shaders/spirv_dead_code.hpp"
 #include "gpu/shaders/spirv_prune.hpp"
 #include "gpu/shaders/spirv_specialize.hpp"
 #include "scene/load_scene.hpp"
@@ -32,10 +33,7 @@ std::vector<std::uint32_t> canonical(const std::vector<std::uint32_t>& spirv) {
     std::vector<std::uint32_t> module = spirv;
     for (int round = 0; round < 8; ++round) {
         spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_2);
-        optimizer.RegisterPass(spvtools::CreateDeadBranchElimPass())
-            .RegisterPass(spvtools::CreateAggressiveDCEPass())
-            .RegisterPass(spvtools::CreateEliminateDeadFunctionsPass())
-            .RegisterPass(spvtools::CreateBlockMergePass());
+        gpu::add_dead_code_rounds(optimizer, 1);
         std::vector<std::uint32_t> out;
         EXPECT_TRUE(optimizer.Run(module.data(), module.size(), &out));
         if (out.size() >= module.size()) break;

@@ -7,6 +7,8 @@
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
+#include "gpu/shaders/spirv_dead_code.hpp"
+
 namespace lancer::gpu {
 
 namespace {
@@ -54,12 +56,7 @@ std::vector<std::uint32_t> specialize_spirv(const std::vector<std::uint32_t>& sp
     optimizer.RegisterPass(spvtools::CreateSetSpecConstantDefaultValuePass(values))
         .RegisterPass(spvtools::CreateFreezeSpecConstantValuePass())
         .RegisterPass(spvtools::CreateFoldSpecConstantOpAndCompositePass());
-    // Two rounds: merging the blocks a first round left behind exposes more dead branches.
-    for (int round = 0; round < 2; ++round)
-        optimizer.RegisterPass(spvtools::CreateDeadBranchElimPass())
-            .RegisterPass(spvtools::CreateAggressiveDCEPass())
-            .RegisterPass(spvtools::CreateEliminateDeadFunctionsPass())
-            .RegisterPass(spvtools::CreateBlockMergePass());
+    add_dead_code_rounds(optimizer, 2);
     if (cleanup == SpirvCleanup::local_variables && !optimizer.RegisterPassesFromFlags(kLocalVariablePasses))
         return spirv;
     // The module comes from glslang, and the driver (and the validation layer) check the result:
