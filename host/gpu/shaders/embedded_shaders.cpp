@@ -21,18 +21,17 @@ namespace {
 struct ModuleForShapes {
     const char* entry;
     std::uint32_t shape_types;
-    std::vector<std::uint32_t> (*words)();
+    const std::uint32_t* begin;
+    const std::uint32_t* end;
 };
 
-#define LANCER_WORDS(array) [] { return std::vector<std::uint32_t>(std::begin(array), std::end(array)); }
 // Smallest first, for each entry.
 const ModuleForShapes kModulesForShapes[] = {
-    {kTraceShader, CHEAP_SHAPE_TYPES, LANCER_WORDS(lancer_trace_cheap_spv)},
-    {kTraceShader, COMMON_SHAPE_TYPES, LANCER_WORDS(lancer_trace_common_spv)},
-    {kPhotonShader, CHEAP_SHAPE_TYPES, LANCER_WORDS(lancer_photons_cheap_spv)},
-    {kPhotonShader, COMMON_SHAPE_TYPES, LANCER_WORDS(lancer_photons_common_spv)},
+    {kTraceShader, CHEAP_SHAPE_TYPES, std::begin(lancer_trace_cheap_spv), std::end(lancer_trace_cheap_spv)},
+    {kTraceShader, COMMON_SHAPE_TYPES, std::begin(lancer_trace_common_spv), std::end(lancer_trace_common_spv)},
+    {kPhotonShader, CHEAP_SHAPE_TYPES, std::begin(lancer_photons_cheap_spv), std::end(lancer_photons_cheap_spv)},
+    {kPhotonShader, COMMON_SHAPE_TYPES, std::begin(lancer_photons_common_spv), std::end(lancer_photons_common_spv)},
 };
-#undef LANCER_WORDS
 
 }  // namespace
 
@@ -54,7 +53,7 @@ std::vector<std::uint32_t> embedded_spirv(const std::string& entry) {
 
 std::vector<std::uint32_t> embedded_spirv(const std::string& entry, const ShaderFeatures& features) {
     for (const ModuleForShapes& module : kModulesForShapes)
-        if (entry == module.entry && traces_only(features, module.shape_types)) return module.words();
+        if (entry == module.entry && traces_only(features, module.shape_types)) return {module.begin, module.end};
     return embedded_spirv(entry);
 }
 
