@@ -73,7 +73,8 @@ int main(int argc, char** argv) {
     std::printf("pack, upload      %s\n", t.elapsed().c_str());
 
     // The embedded tracer lancer would choose for the scene's shapes.
-    std::vector<std::uint32_t> spirv = gpu::embedded_spirv(gpu::kTraceShader, packed.features);
+    gpu::EmbeddedModule tracer = gpu::embedded_module(gpu::kTraceShader, packed.features);
+    std::vector<std::uint32_t> spirv = tracer.spirv;
     if (argc > 2) {
         std::ifstream in(argv[2], std::ios::binary);
         std::vector<char> bytes((std::istreambuf_iterator<char>(in)), {});
@@ -82,8 +83,8 @@ int main(int argc, char** argv) {
     }
     std::printf("SPIR-V            %8zu words\n", spirv.size());
     gpu::ShaderFeatures features = packed.features;
-    // As lancer chooses (parametric surfaces' code is not in this module).
-    const gpu::SpirvCleanup cleanup = gpu::spirv_cleanup_for(features);
+    // As lancer chooses; a SPIRV_FILE is taken as glslang wrote it (its locals not yet SSA values).
+    const gpu::SpirvCleanup cleanup = gpu::spirv_cleanup_for(features, tracer.locals_in_ssa && argc == 2);
     t = Phase();
     std::size_t specialized = gpu::specialize_spirv(spirv, features, cleanup).size();
     std::printf("specialise        %s  (%zu words; done again inside pipeline creation)\n", t.elapsed().c_str(), specialized);

@@ -148,17 +148,20 @@ void GpuRenderer::ensure_program(const gpu::ShaderFiles& generated, bool photons
     if (photons && photon_spirv_.empty()) photon_spirv_ = build(gpu::kPhotonShader);
 }
 
-std::vector<std::uint32_t> GpuRenderer::program(const char* entry, const std::vector<std::uint32_t>& spirv,
-                                                const gpu::ShaderFeatures& features) const {
+gpu::EmbeddedModule GpuRenderer::program(const char* entry, const std::vector<std::uint32_t>& spirv,
+                                         const gpu::ShaderFeatures& features) const {
     // A scene of fewer shape types starts from the embedded build for them alone.
-    return generated_.empty() && base_is_embedded_ ? gpu::embedded_spirv(entry, features) : spirv;
+    if (generated_.empty() && base_is_embedded_) return gpu::embedded_module(entry, features);
+    return {spirv, false};
 }
 
 gpu::PipelineBuild& GpuRenderer::start_pipeline(const gpu::ShaderFeatures& features) {
     auto& slot = pipelines_[features];
-    if (!slot)
-        slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, program(gpu::kTraceShader, spirv_, features),
-                                                    features, gpu::spirv_cleanup_for(features));
+    if (!slot) {
+        gpu::EmbeddedModule tracer = program(gpu::kTraceShader, spirv_, features);
+        const gpu::SpirvCleanup cleanup = gpu::spirv_cleanup_for(features, tracer.locals_in_ssa);
+        slot = std::make_unique<gpu::PipelineBuild>(context_, layout_, std::move(tracer.spirv), features, cleanup);
+    }
     return *slot;
 }
 
@@ -360,7 +363,7 @@ gpu::ShaderFeatures GpuRenderer::prepare_band_output(const Scene& scene, bool ou
         // builds on another core meanwhile: started where the scene was packed, and here where a
         // packed scene was reused after the programs changed (a no-op otherwise).
         start_pipeline(features);
-        photons_->use_programs(program(gpu::kPhotonShader, photon_spirv_, features),
+        photons_->use_programs(program(gpu::kPhotonShader, photon_spirv_, features).spirv,
                                gpu::embedded_spirv(gpu::kGridShader));
         photons_->run(scene, photon_pass, features, emitters_, resources_, progress, 0.0);
     }

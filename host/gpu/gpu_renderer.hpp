@@ -16,6 +16,7 @@
 #include "gpu/vulkan/submit.hpp"
 #include "gpu/passes/refine_selection.hpp"
 #include "gpu/packing/scene_packing.hpp"
+#include "gpu/shaders/embedded_shaders.hpp"
 #include "gpu/shaders/shader_compiler.hpp"
 #include "gpu/trace_resources.hpp"
 #include "render/adaptive_render.hpp"
@@ -117,9 +118,9 @@ private:
     // own: `progress` can cancel the wait, RenderCancelled, and the build goes on for later).
     void select_pipeline(const gpu::ShaderFeatures& features, const ProgressFn& progress);
     // `spirv`, the program ensure_program made for `entry`, or where that is the embedded one,
-    // the embedded build that serves `features` (gpu::embedded_spirv).
-    std::vector<std::uint32_t> program(const char* entry, const std::vector<std::uint32_t>& spirv,
-                                       const gpu::ShaderFeatures& features) const;
+    // the embedded build that serves `features` (gpu::embedded_module).
+    gpu::EmbeddedModule program(const char* entry, const std::vector<std::uint32_t>& spirv,
+                                const gpu::ShaderFeatures& features) const;
     // Starts building the pipeline for `features` on its own thread where none is built or
     // building, for select_pipeline to pick up: the photon pass runs meanwhile.
     gpu::PipelineBuild& start_pipeline(const gpu::ShaderFeatures& features);

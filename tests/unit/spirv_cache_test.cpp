@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -114,6 +115,25 @@ TEST(SpirvSpecialisation, FoldsEveryConstantForEachCleanup) {
         for (gpu::SpirvCleanup cleanup : {gpu::SpirvCleanup::dead_code, gpu::SpirvCleanup::local_variables})
             EXPECT_EQ(spec_constants_left(gpu::specialize_spirv(spirv, f, cleanup)), 0u)
                 << "shapes " << f.scene_shapes << ", cleanup " << int(cleanup);
+}
+
+// A module built with its locals as SSA values (the smaller tracers) needs only what the constants
+// decide, and has no code for the shapes that keep their locals.
+TEST(SpirvCleanupChoice, AModuleWithItsLocalsAsSsaValuesTakesTheConstantsCleanup) {
+    using gpu::SpirvCleanup;
+    gpu::ShaderFeatures spheres;
+    spheres.add_shape(SHAPE_SPHERE);
+    EXPECT_EQ(gpu::spirv_cleanup_for(spheres, true), SpirvCleanup::constants);
+    gpu::ShaderFeatures patches = spheres;
+    patches.add_shape(SHAPE_BEZIER);
+    EXPECT_THROW(gpu::spirv_cleanup_for(patches, true), std::logic_error);
+    const gpu::EmbeddedModule cheap = gpu::embedded_module(gpu::kTraceShader, spheres);
+    ASSERT_TRUE(cheap.locals_in_ssa);
+    const std::vector<std::uint32_t> constants = gpu::specialize_spirv(cheap.spirv, spheres, SpirvCleanup::constants);
+    const std::vector<std::uint32_t> dead_code = gpu::specialize_spirv(cheap.spirv, spheres, SpirvCleanup::dead_code);
+    EXPECT_EQ(spec_constants_left(constants), 0u);
+    // What the constants decide once frozen: 20% fewer words for `seed` (17,660 against 21,919).
+    EXPECT_LT(constants.size(), dead_code.size() * 9 / 10) << "the constant passes did not shrink the module";
 }
 
 // A hit is not specialised again: a well-formed entry for this key (right name, key and checksum)

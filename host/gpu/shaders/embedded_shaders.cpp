@@ -18,19 +18,32 @@ namespace lancer::gpu {
 
 namespace {
 
+constexpr bool some_shape_keeps_locals(std::uint32_t shape_types) {
+    for (std::uint32_t type = 0; type < SHAPE_COUNT; ++type)
+        if ((shape_types >> type & 1u) && shape_has(type, SHAPE_KEEPS_LOCALS)) return true;
+    return false;
+}
+// The smaller tracers are built with their locals as SSA values, which would slow those shapes.
+static_assert(!some_shape_keeps_locals(COMMON_SHAPE_TYPES), "a SHAPE_KEEPS_LOCALS shape in a smaller tracer's set");
+
 struct ModuleForShapes {
     const char* entry;
     std::uint32_t shape_types;
     const std::uint32_t* begin;
     const std::uint32_t* end;
+    bool locals_in_ssa;
 };
 
 // Smallest first, for each entry.
 const ModuleForShapes kModulesForShapes[] = {
-    {kTraceShader, CHEAP_SHAPE_TYPES, std::begin(lancer_trace_cheap_spv), std::end(lancer_trace_cheap_spv)},
-    {kTraceShader, COMMON_SHAPE_TYPES, std::begin(lancer_trace_common_spv), std::end(lancer_trace_common_spv)},
-    {kPhotonShader, CHEAP_SHAPE_TYPES, std::begin(lancer_photons_cheap_spv), std::end(lancer_photons_cheap_spv)},
-    {kPhotonShader, COMMON_SHAPE_TYPES, std::begin(lancer_photons_common_spv), std::end(lancer_photons_common_spv)},
+    {kTraceShader, CHEAP_SHAPE_TYPES, std::begin(lancer_trace_cheap_spv), std::end(lancer_trace_cheap_spv),
+     lancer_trace_cheap_spv_locals_in_ssa},
+    {kTraceShader, COMMON_SHAPE_TYPES, std::begin(lancer_trace_common_spv), std::end(lancer_trace_common_spv),
+     lancer_trace_common_spv_locals_in_ssa},
+    {kPhotonShader, CHEAP_SHAPE_TYPES, std::begin(lancer_photons_cheap_spv), std::end(lancer_photons_cheap_spv),
+     lancer_photons_cheap_spv_locals_in_ssa},
+    {kPhotonShader, COMMON_SHAPE_TYPES, std::begin(lancer_photons_common_spv), std::end(lancer_photons_common_spv),
+     lancer_photons_common_spv_locals_in_ssa},
 };
 
 }  // namespace
@@ -51,10 +64,11 @@ std::vector<std::uint32_t> embedded_spirv(const std::string& entry) {
     throw std::logic_error("embedded_spirv: no shader " + entry);
 }
 
-std::vector<std::uint32_t> embedded_spirv(const std::string& entry, const ShaderFeatures& features) {
+EmbeddedModule embedded_module(const std::string& entry, const ShaderFeatures& features) {
     for (const ModuleForShapes& module : kModulesForShapes)
-        if (entry == module.entry && traces_only(features, module.shape_types)) return {module.begin, module.end};
-    return embedded_spirv(entry);
+        if (entry == module.entry && traces_only(features, module.shape_types))
+            return {{module.begin, module.end}, module.locals_in_ssa};
+    return {embedded_spirv(entry), false};
 }
 
 ShaderTree embedded_tree() {

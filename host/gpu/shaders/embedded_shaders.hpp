@@ -25,10 +25,16 @@ std::vector<std::uint32_t> embedded_spirv(const std::string& entry);
 // Whether a module built for `shape_types` alone (shapes.h's sets) serves a scene of `features`:
 // every shape set of the features within them.
 bool traces_only(const ShaderFeatures& features, std::uint32_t shape_types);
+// An embedded build of an entry point, and whether its local variables became SSA values at
+// build time (its specialisation then takes SpirvCleanup::constants: spirv_cleanup_for).
+struct EmbeddedModule {
+    std::vector<std::uint32_t> spirv;
+    bool locals_in_ssa = false;
+};
 // The smallest embedded build of `entry` (the tracer, the photon pass) that serves `features`:
-// the same program, once specialised, as the whole one, from 40-52% of the words for scenes of
+// the same program, once specialised, as the whole one, from 35-52% of the words for scenes of
 // cheap or common shapes alone.
-std::vector<std::uint32_t> embedded_spirv(const std::string& entry, const ShaderFeatures& features);
+EmbeddedModule embedded_module(const std::string& entry, const ShaderFeatures& features);
 
 // Every file of shaders/ by its name relative to that directory.
 const std::map<std::string, std::string>& embedded_shader_files();

@@ -10,7 +10,7 @@
 #include <spirv-tools/optimizer.hpp>
 #include <glslang/SPIRV/spirv.hpp>
 
-#include "gpu/shaders/spirv_dead_code.hpp"
+#include "gpu/shaders/spirv_passes.hpp"
 
 namespace lancer::gpu {
 
@@ -68,7 +68,9 @@ std::size_t fold_decided_spec_ops(std::vector<std::uint32_t>& words) {
     return folded;
 }
 
-std::vector<std::uint32_t> run_passes(const std::vector<std::uint32_t>& words, bool remove_dead_code) {
+// The folding of constant expressions, then `rounds` of dead-code removal, then `flags`.
+std::vector<std::uint32_t> run_passes(const std::vector<std::uint32_t>& words, int rounds,
+                                      const std::vector<std::string>& flags = {}) {
     spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_2);
     std::string messages;
     optimizer.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t&, const char* message) {
@@ -76,7 +78,8 @@ std::vector<std::uint32_t> run_passes(const std::vector<std::uint32_t>& words, b
     });
     // Folds the expressions whose operands are all constants now, as the run-time specialisation does.
     optimizer.RegisterPass(spvtools::CreateFoldSpecConstantOpAndCompositePass());
-    if (remove_dead_code) add_dead_code_rounds(optimizer, 2);
+    add_dead_code_rounds(optimizer, rounds);
+    if (!optimizer.RegisterPassesFromFlags(flags)) throw std::logic_error("prune_spirv: unknown passes");
     std::vector<std::uint32_t> out;
     if (!optimizer.Run(words.data(), words.size(), &out)) throw std::runtime_error("prune_spirv: " + messages);
     return out;
@@ -84,13 +87,13 @@ std::vector<std::uint32_t> run_passes(const std::vector<std::uint32_t>& words, b
 
 }  // namespace
 
-std::vector<std::uint32_t> prune_spirv(const std::vector<std::uint32_t>& spirv) {
+std::vector<std::uint32_t> prune_spirv(const std::vector<std::uint32_t>& spirv, bool locals_to_ssa) {
     if (spirv.size() < kHeaderWords || spirv[0] != spv::MagicNumber)
         throw std::runtime_error("prune_spirv: not a SPIR-V module");
     std::vector<std::uint32_t> words = spirv;
     // Folding one expression can decide another that SPIRV-Tools then folds, and the other way round.
-    while (fold_decided_spec_ops(words) > 0) words = run_passes(words, false);
-    words = run_passes(words, true);
+    while (fold_decided_spec_ops(words) > 0) words = run_passes(words, 0);
+    words = run_passes(words, 2, locals_to_ssa ? kLocalVariablePasses : std::vector<std::string>{});
     spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_2);
     std::string messages;
     tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t&, const char* message) {

@@ -13,8 +13,10 @@ namespace lancer::gpu {
 
 // `spirv` with every specialisation-constant expression that is constant whatever the constants
 // are (x & 0, x && false, x || true, and what those make foldable) folded, then dead branches,
-// code and functions removed. Throws std::runtime_error if the optimizer fails or the result
-// does not validate (Vulkan 1.2).
-std::vector<std::uint32_t> prune_spirv(const std::vector<std::uint32_t>& spirv);
+// code and functions removed; with `locals_to_ssa`, then its local variables turned into SSA
+// values (spirv_passes.hpp's kLocalVariablePasses), which the run-time specialisation then need
+// not do (SpirvCleanup::constants). Throws std::runtime_error if the optimizer fails or the
+// result does not validate (Vulkan 1.2).
+std::vector<std::uint32_t> prune_spirv(const std::vector<std::uint32_t>& spirv, bool locals_to_ssa = false);
 
 }  // namespace lancer::gpu

@@ -16,14 +16,17 @@ namespace lancer::gpu {
 enum class SpirvCleanup : std::uint8_t {
     dead_code,        // dead branches, code and functions removed
     local_variables,  // also local variables turned into SSA values, loads and stores folded
+    constants,        // dead code, then what the constants decide: for a module whose local
+                      // variables became SSA values at build time (spirv_prune)
 };
 
 // The cleanup that pays on lavapipe for a tracer with these features. Turning local variables
 // into SSA values before the driver sees the module takes a third off lavapipe's pipeline
 // creation (a warm start of `seed` 0.12 -> 0.08 s, of the Barth sextic 0.48 -> 0.18 s), but
 // slows some shapes' code (SHAPE_KEEPS_LOCALS in shapes.h): scenes with them keep the dead-code
-// cleanup alone.
-SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features);
+// cleanup alone. A module built with its locals as SSA values (`locals_in_ssa`) has done that
+// part already; it never holds those shapes' code (std::logic_error if the features have them).
+SpirvCleanup spirv_cleanup_for(const ShaderFeatures& features, bool locals_in_ssa = false);
 
 // The passes `cleanup` runs, in words and spirv-opt flags: what a cached module depends on.
 std::string spirv_recipe(SpirvCleanup cleanup);
