@@ -36,8 +36,8 @@ inline const std::vector<std::string> kLocalVariablePasses = {
     "--redundancy-elimination", "--eliminate-dead-branches", "--merge-blocks"};
 
 // After the dead code of a module whose local variables became SSA values at build time: what the
-// frozen constants decide further. It gives within 0.1% of the words the local-variable recipe
-// gives after specialisation, in half the time (docs/performance.md).
+// frozen constants decide further: within 0.1% of the words the local-variable recipe gives, and
+// the specialisation in about half the time (docs/performance.md).
 inline const std::vector<std::string> kConstantPasses = {
     "--ccp", "--eliminate-dead-branches", "--redundancy-elimination", "--eliminate-dead-code-aggressive",
     "--merge-blocks"};
