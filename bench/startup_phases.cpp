@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.handle());
     VkDescriptorSet set = resources.descriptor_set();
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout.pipeline_layout(), 0, 1, &set, 0, nullptr);
-    gpu::BandParams band{0, 1, 0, 1};
+    gpu::BandParams band{0, 1, 0, 1, 0, 0, 0, 1};  // one row, one sample, tiles in order
     vkCmdPushConstants(commands, layout.pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(band), &band);
     vkCmdDispatch(commands, 1, 1, 1);
     VK_CHECK(vkEndCommandBuffer(commands));

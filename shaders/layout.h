@@ -385,9 +385,11 @@ LANCER_CONST REFINE_SPREAD = 2;     // its samples in the last step spread by mo
 // workgroup's tail has a pixel to trace. With spread = 1 it also writes the per-channel smallest and
 // largest of the pixel's sample colours to pixels[refine_count + i] and pixels[2 refine_count + i]
 // (adaptive anti-aliasing by the spread of a pixel's samples: render/adaptive_render.hpp).
+// Workgroup g of the dispatch's G takes the place (tile, or run of list entries) of workgroup
+// (g * group_stride) mod G in order: 1, or a stride coprime with G (gpu/tile_order.hpp).
 #define LANCER_ROWS_BandParams(VEC4, VEC4S, SCALARS, UVEC4S)                      \
     SCALARS(uint, y0, uint, rows, uint, sample_first, uint, sample_count) \
-    SCALARS(uint, refine_count, uint, spread, uint, refine_first, uint, reserved)
+    SCALARS(uint, refine_count, uint, spread, uint, refine_first, uint, group_stride)
 
 // Push constants of the selection of pixels to refine (shaders/refine_select.comp).
 #define LANCER_ROWS_SelectStep(VEC4, VEC4S, SCALARS, UVEC4S)                                                      \

@@ -283,17 +283,20 @@ uvec2 z_order_position(uint i) {
 void main() {
     uint out_index;
     uvec2 pixel;
+    // The place this workgroup takes, in the band's order (BandParams::group_stride).
+    uint groups = gl_NumWorkGroups.x * gl_NumWorkGroups.y;
+    uint group = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * band.group_stride % groups;
     if (band.refine_count > 0u) {
         // A compact list of pixels (see BandParams). A workgroup takes consecutive entries, which
         // lie along the same edge: SIMD lanes then trace neighbouring pixels, as in a full band,
         // where a workgroup's 8 x 8 tile of the list would take 8 pieces of edge far apart.
-        uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
         out_index = group * uint(WORKGROUP_X * WORKGROUP_Y) + gl_LocalInvocationIndex;
         if (out_index >= band.refine_count) return;
         uint p = refine_list[band.refine_first + out_index];
         pixel = uvec2(p % frame.width, p / frame.width);
     } else {
-        uvec2 cell = gl_WorkGroupID.xy * uvec2(WORKGROUP_X, WORKGROUP_Y) + z_order_position(gl_LocalInvocationIndex);
+        uvec2 tile = uvec2(group % gl_NumWorkGroups.x, group / gl_NumWorkGroups.x);
+        uvec2 cell = tile * uvec2(WORKGROUP_X, WORKGROUP_Y) + z_order_position(gl_LocalInvocationIndex);
         if (cell.x >= frame.width || cell.y >= band.rows) return;
         out_index = cell.y * frame.width + cell.x;
         pixel = uvec2(cell.x, band.y0 + cell.y);

@@ -15,6 +15,7 @@
 #include "gpu/vulkan/submit.hpp"
 #include "gpu/shaders/spirv_cache.hpp"
 #include "gpu/shaders/surface_codegen.hpp"
+#include "gpu/tile_order.hpp"
 #include "gpu/vulkan/vk_check.hpp"
 #include "render/adaptive_render.hpp"
 
@@ -231,16 +232,19 @@ void GpuRenderer::dispatch_band(const gpu::BandParams& band, std::uint32_t per_p
     VkDescriptorSet set = resources_.descriptor_set();
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout_->pipeline_layout(), 0, 1, &set, 0,
                             nullptr);
+    const std::uint32_t groups_x = (width + gpu::WORKGROUP_X - 1) / gpu::WORKGROUP_X;
+    const std::uint32_t groups_y = (band.rows + gpu::WORKGROUP_Y - 1) / gpu::WORKGROUP_Y;
+    const std::uint32_t stride = gpu::hands_each_thread_one_run(context_->info()) ? gpu::spread_group_stride(groups_x * groups_y) : 1;
     const std::uint32_t end = band.sample_first + band.sample_count;
     for (std::uint32_t first = band.sample_first; first < end; first += per_pass) {
         if (first > band.sample_first) gpu::compute_barrier(commands);  // the next pass continues the sums this one wrote
         gpu::BandParams pass = band;
         pass.sample_first = first;
         pass.sample_count = std::min(per_pass, end - first);
+        pass.group_stride = stride;
         vkCmdPushConstants(commands, layout_->pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pass),
                            &pass);
-        vkCmdDispatch(commands, (width + gpu::WORKGROUP_X - 1) / gpu::WORKGROUP_X,
-                      (band.rows + gpu::WORKGROUP_Y - 1) / gpu::WORKGROUP_Y, 1);
+        vkCmdDispatch(commands, groups_x, groups_y, 1);
     }
     // The host reads the mapped output after the fence.
     gpu::compute_barrier(commands, VK_ACCESS_HOST_READ_BIT, VK_PIPELINE_STAGE_HOST_BIT);

@@ -111,6 +111,7 @@ TEST(DriverQuirks, MesaVersionsAreReadFromTheDriverInfo) {
     EXPECT_EQ(gpu::mesa_version(lavapipe), 2500);
     EXPECT_FALSE(gpu::limits_loop_iterations(lavapipe));
     EXPECT_TRUE(gpu::keeps_device_memory_in_a_file(lavapipe));
+    EXPECT_TRUE(gpu::hands_each_thread_one_run(lavapipe));
     lavapipe.driver = "llvmpipe Mesa 22.3.6 (LLVM 15.0.6)";
     EXPECT_EQ(gpu::mesa_version(lavapipe), 2203);
     EXPECT_TRUE(gpu::limits_loop_iterations(lavapipe));
@@ -122,6 +123,7 @@ TEST(DriverQuirks, MesaVersionsAreReadFromTheDriverInfo) {
     EXPECT_FALSE(gpu::mesa_version(nvidia));
     EXPECT_FALSE(gpu::limits_loop_iterations(nvidia));
     EXPECT_FALSE(gpu::keeps_device_memory_in_a_file(nvidia));
+    EXPECT_FALSE(gpu::hands_each_thread_one_run(nvidia));
 }
 
 TEST(DriverQuirks, FileBackedMemoryIsBoundedByEveryAllocationEverMade) {

@@ -33,6 +33,8 @@ bool limits_loop_iterations(const DeviceInfo& device) {
     return !version || *version < 2500;
 }
 
+bool hands_each_thread_one_run(const DeviceInfo& device) { return is_lavapipe(device); }
+
 bool keeps_device_memory_in_a_file(const DeviceInfo& device) {
     if (!is_lavapipe(device)) return false;
     const std::optional<int> version = mesa_version(device);

@@ -19,6 +19,13 @@ std::optional<int> mesa_version(const DeviceInfo& device);
 // Where true, the tracer probes for it and renders cut-short bands again (trace.comp).
 bool limits_loop_iterations(const DeviceInfo& device);
 
+// lavapipe (Mesa 22.3 and 25.0: llvmpipe's lp_cs_tpool) splits a dispatch's workgroups into one
+// run of consecutive indices per thread, fixed before any runs, so the thread whose run holds
+// the costly part of a picture finishes last while the others wait (the teapot at 1280x720 on
+// 2 cores kept them 80% busy). Where true, the tracer spreads each run over the band
+// (tile_order.hpp).
+bool hands_each_thread_one_run(const DeviceInfo& device);
+
 // lavapipe from Mesa 25.0 keeps all device memory in one anonymous file that only grows
 // (llvmpipe_allocate_memory: ftruncate without a check, then a mapping of it), so a file size
 // limit (RLIMIT_FSIZE, `ulimit -f`) below its size kills the process with SIGBUS on first use.
