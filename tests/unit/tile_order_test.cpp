@@ -28,7 +28,9 @@ TEST(TileOrder, EveryTileIsTakenOnce) {
         for (std::uint32_t g = 0; g < groups; ++g) taken[std::uint64_t(g) * stride % groups] = true;
         ASSERT_EQ(std::count(taken.begin(), taken.end(), true), groups) << groups;
     }
-    EXPECT_EQ(gpu::spread_group_stride(1u << 20), 1u);  // past what the shader's product holds: in order
+    for (std::uint32_t groups = 65000; groups <= 65535; ++groups)  // the largest spread: the product still fits
+        ASSERT_LE(std::uint64_t(groups - 1) * gpu::spread_group_stride(groups), 0xffffffffull) << groups;
+    EXPECT_EQ(gpu::spread_group_stride(65536), 1u);  // past what the shader's product holds: in order
 }
 
 // Each thread's run covers the band evenly, whatever the number of threads: the rows of its
